@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Installs every package tread needs, from Debian's archive. Idempotent: safe to run again.
+# Usage: sudo scripts/install-deps.sh   (as root: plain bash scripts/install-deps.sh)
+set -euo pipefail
+
+packages=(
+  # build
+  cmake ninja-build g++ make pkg-config git
+  # libraries
+  libgtest-dev libgmock-dev libbenchmark-dev libeigen3-dev libceres-dev libgpiod-dev libcli11-dev
+  libsciplot-dev gnuplot-nox nlohmann-json3-dev
+  # CAN, real-time tools and the independent DBC parser
+  can-utils rt-tests gpiod python3-canmatrix canmatrix-utils python3-numpy
+  # cross compilers and emulators
+  g++-aarch64-linux-gnu g++-arm-linux-gnueabihf gcc-arm-none-eabi libstdc++-arm-none-eabi-newlib
+  libnewlib-arm-none-eabi binutils-arm-none-eabi qemu-user-static qemu-system-x86
+  # the vcan VM harness: initramfs tools (the kernel itself is fetched by scripts/fetch-vm-kernel.sh)
+  busybox-static cpio xz-utils zstd kmod
+  # style
+  clang-format clang-tidy
+)
+
+export DEBIAN_FRONTEND=noninteractive
+sudo_cmd=()
+if [[ $(id -u) -ne 0 ]]; then sudo_cmd=(sudo); fi
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if ((${#missing[@]} == 0)); then
+  echo "install-deps: all ${#packages[@]} packages already installed"
+else
+  echo "install-deps: installing ${#missing[@]} packages: ${missing[*]}"
+  "${sudo_cmd[@]}" apt-get update -q
+  "${sudo_cmd[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
+
+# The vcan VM harness needs Debian's kernel image (unpacked, not installed).
+"$(dirname "${BASH_SOURCE[0]}")/vm/fetch-kernel.sh"

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Every test, from a fresh clone: installs the Debian packages, then builds and tests every preset —
+# host (unit, golden, vcan through the VM harness), asan, aarch64 and armhf (under qemu-user),
+# the cortex-m4f firmware link — and checks formatting. Exits non-zero if anything fails.
+set -uo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+
+bash scripts/install-deps.sh || { echo "test-all: dependency installation failed" >&2; exit 1; }
+
+failed_steps=()
+total_passed=0
+total_failed=0
+log_dir=build/logs
+mkdir -p "$log_dir"
+
+run_workflow() {
+  local preset=$1 log="$log_dir/$1.log"
+  echo "=== workflow: $preset ==="
+  cmake --workflow --preset "$preset" 2>&1 | tee "$log" | grep -E --line-buffered \
+    '(tests passed|Test +#|FAILED|Error|error:|image size|text\s+data|tread_firmware\.elf)' | grep -v 'Passed'
+  local rc=${PIPESTATUS[0]}
+  local summary
+  summary=$(grep -E '[0-9]+% tests passed, [0-9]+ tests? failed out of [0-9]+' "$log" | tail -n 1)
+  if [[ -n $summary ]]; then
+    local failed total
+    failed=$(sed -E 's/.* ([0-9]+) tests? failed out of ([0-9]+).*/\1/' <<<"$summary")
+    total=$(sed -E 's/.* failed out of ([0-9]+).*/\1/' <<<"$summary")
+    total_failed=$((total_failed + failed))
+    total_passed=$((total_passed + total - failed))
+  fi
+  if [[ $rc != 0 ]]; then failed_steps+=("$preset"); fi
+}
+
+start=$(date +%s)
+for preset in host asan aarch64 armhf cortex-m4f; do
+  run_workflow "$preset"
+done
+
+echo "=== format check ==="
+if ! cmake --build --preset host --target format-check; then failed_steps+=("format-check"); fi
+
+echo "=== summary ($(($(date +%s) - start)) s) ==="
+if ((${#failed_steps[@]})); then
+  echo "test-all: FAILED steps: ${failed_steps[*]} (logs in $log_dir)"
+  echo "all presets: $total_passed passed, $total_failed failed"
+  exit 1
+fi
+echo "all presets: $total_passed passed, $total_failed failed"
