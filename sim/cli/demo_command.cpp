@@ -9,6 +9,8 @@
 
 namespace tread::cli {
 
+namespace {
+
 void add_demo_command(CLI::App& app) {
   auto* demo =
       app.add_subcommand("demo", "Run the HIL demo: node + rig (in-process bus by default)");
@@ -25,5 +27,9 @@ void add_demo_command(CLI::App& app) {
               << static_cast<int>(proto::crc8_sae_j1850(check)) << std::dec << " (expected 0x4b)\n";
   });
 }
+
+}  // namespace
+
+TREAD_REGISTER_COMMAND("demo", add_demo_command);
 
 }  // namespace tread::cli

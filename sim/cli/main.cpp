@@ -8,7 +8,7 @@ int main(int argc, char** argv) {
   CLI::App app{"tread — real-time Magic Formula tyre and wheel–rail contact core, host tools"};
   app.require_subcommand(1);
   app.set_version_flag("--version", tread::host::version_string());
-  tread::cli::add_demo_command(app);
+  tread::cli::add_registered_commands(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
