@@ -1,0 +1,471 @@
+#include "tir/tir_file.hpp"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <system_error>
+#include <utility>
+
+namespace tread::tir {
+
+namespace {
+
+char lower(char c) noexcept {
+  return (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c;
+}
+
+bool is_space(char c) noexcept {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\f';
+}
+bool is_comment_start(char c) noexcept {
+  return c == '$' || c == '!';
+}
+bool is_key_start(char c) noexcept {
+  return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_';
+}
+bool is_key_char(char c) noexcept {
+  return is_key_start(c) || (c >= '0' && c <= '9');
+}
+
+std::string_view trim(std::string_view s) noexcept {
+  while (!s.empty() && is_space(s.front())) s.remove_prefix(1);
+  while (!s.empty() && is_space(s.back())) s.remove_suffix(1);
+  return s;
+}
+
+[[noreturn]] void fail(const std::string& origin, int line, const std::string& what) {
+  throw TirError(origin, line, what);
+}
+
+// Parses the part after '=' of an entry line into entry.value/quote/comment.
+void parse_value(std::string_view rest, Entry& entry, const std::string& origin, int line) {
+  rest = trim(rest);
+  if (rest.empty() || is_comment_start(rest.front())) {
+    fail(origin, line, "missing value after '=' for key '" + entry.key + "'");
+  }
+  if (rest.front() == '\'' || rest.front() == '"') {
+    const char q = rest.front();
+    const std::size_t close = rest.find(q, 1);
+    if (close == std::string_view::npos) {
+      fail(origin, line,
+           std::string("unterminated quote (") + q + ") in value of '" + entry.key + "'");
+    }
+    entry.quote = q;
+    entry.value = std::string(rest.substr(1, close - 1));
+    const std::string_view after = trim(rest.substr(close + 1));
+    if (!after.empty() && !is_comment_start(after.front())) {
+      fail(origin, line,
+           "unexpected text after closing quote in value of '" + entry.key + "': '" +
+               std::string(after) + "'");
+    }
+    entry.comment = std::string(after);
+    return;
+  }
+  std::size_t end = 0;
+  while (end < rest.size() && !is_comment_start(rest[end])) ++end;
+  entry.value = std::string(trim(rest.substr(0, end)));
+  entry.comment = std::string(trim(rest.substr(end)));
+  if (entry.value.find_first_of("'\"") != std::string::npos) {
+    fail(origin, line, "stray quote in value of '" + entry.key + "'");
+  }
+}
+
+// Matches `KEY = ...`; returns the key length or 0.
+std::size_t match_key(std::string_view s) noexcept {
+  if (s.empty() || !is_key_start(s.front())) return 0;
+  std::size_t n = 1;
+  while (n < s.size() && is_key_char(s[n])) ++n;
+  std::size_t i = n;
+  while (i < s.size() && is_space(s[i])) ++i;
+  return (i < s.size() && s[i] == '=') ? n : 0;
+}
+
+template <typename Sections>
+auto find_in(Sections& sections, std::string_view section, std::string_view key) noexcept
+    -> decltype(sections.front().find(key)) {
+  for (auto& s : sections) {
+    if (!iequals(s.name, section)) continue;
+    if (auto* e = s.find(key)) return e;
+  }
+  return nullptr;
+}
+
+std::string entry_line(const Entry& e) {
+  std::string out = e.key;
+  out += " = ";
+  if (e.is_quoted()) {
+    out += e.quote;
+    out += e.value;
+    out += e.quote;
+  } else {
+    out += e.value;
+  }
+  if (!e.comment.empty()) {
+    out += "  ";
+    out += e.comment;
+  }
+  return out;
+}
+
+void write_line(std::string& out, const Line& l) {
+  if (l.kind == Line::Kind::kEntry) {
+    out += l.entry.source.empty() ? entry_line(l.entry) : l.entry.source;
+  } else {
+    out += l.text;
+  }
+  out += '\n';
+}
+
+}  // namespace
+
+TirError::TirError(std::string file, int line, const std::string& message)
+    : std::runtime_error(file + ":" + std::to_string(line) + ": " + message),
+      file_(std::move(file)),
+      line_(line) {}
+
+bool iequals(std::string_view a, std::string_view b) noexcept {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(),
+                                            [](char x, char y) { return lower(x) == lower(y); });
+}
+
+std::optional<double> parse_number(std::string_view token) noexcept {
+  token = trim(token);
+  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+  if (token.empty() || token.size() > 64) return std::nullopt;
+  // from_chars accepts "inf"/"nan" and hex-less decimal; we allow only digits, sign, '.', exponent.
+  std::array<char, 64> buf{};
+  std::size_t n = 0;
+  for (const char c : token) {
+    const bool ok = (c >= '0' && c <= '9') || c == '.' || c == '-' || c == '+' || c == 'e' ||
+                    c == 'E' || c == 'd' || c == 'D';
+    if (!ok) return std::nullopt;
+    buf[n++] = (c == 'd' || c == 'D') ? 'e' : c;
+  }
+  double v = 0.0;
+  const auto [ptr, ec] = std::from_chars(buf.data(), buf.data() + n, v);
+  if (ec != std::errc() || ptr != buf.data() + n || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+std::string format_number(double value) {
+  std::array<char, 64> buf{};
+  const auto [ptr, ec] = std::to_chars(buf.data(), buf.data() + buf.size(), value);
+  (void)ec;  // 64 characters always suffice for the shortest form of a double
+  return std::string(buf.data(), ptr);
+}
+
+bool Section::is_table() const noexcept {
+  return std::any_of(lines.begin(), lines.end(),
+                     [](const Line& l) { return l.kind == Line::Kind::kTableRow; });
+}
+
+std::vector<std::string> Section::table_rows() const {
+  std::vector<std::string> rows;
+  for (const auto& l : lines) {
+    if (l.kind == Line::Kind::kTableRow) rows.push_back(l.text);
+  }
+  return rows;
+}
+
+std::vector<const Entry*> Section::entries() const {
+  std::vector<const Entry*> out;
+  for (const auto& l : lines) {
+    if (l.kind == Line::Kind::kEntry) out.push_back(&l.entry);
+  }
+  return out;
+}
+
+const Entry* Section::find(std::string_view key) const noexcept {
+  for (const auto& l : lines) {
+    if (l.kind == Line::Kind::kEntry && iequals(l.entry.key, key)) return &l.entry;
+  }
+  return nullptr;
+}
+
+Entry* Section::find(std::string_view key) noexcept {
+  for (auto& l : lines) {
+    if (l.kind == Line::Kind::kEntry && iequals(l.entry.key, key)) return &l.entry;
+  }
+  return nullptr;
+}
+
+const Section* TirFile::section(std::string_view name) const noexcept {
+  for (const auto& s : sections_) {
+    if (iequals(s.name, name)) return &s;
+  }
+  return nullptr;
+}
+
+const Entry* TirFile::find(std::string_view section, std::string_view key) const noexcept {
+  return find_in(sections_, section, key);
+}
+
+const Entry* TirFile::find_any(std::string_view key) const noexcept {
+  for (const auto& s : sections_) {
+    if (const auto* e = s.find(key)) return e;
+  }
+  return nullptr;
+}
+
+namespace {
+std::optional<double> entry_number(const Entry* e, const std::string& origin) {
+  if (e == nullptr) return std::nullopt;
+  if (!e->is_quoted()) {
+    if (const auto v = parse_number(e->value)) return v;
+  }
+  fail(origin, e->line,
+       "value of '" + e->key + "' is not a number: " +
+           (e->is_quoted() ? std::string(1, e->quote) + e->value + e->quote : e->value));
+}
+std::optional<std::string> entry_text(const Entry* e) {
+  if (e == nullptr) return std::nullopt;
+  return e->value;
+}
+}  // namespace
+
+std::optional<double> TirFile::number(std::string_view section, std::string_view key) const {
+  return entry_number(find(section, key), origin_);
+}
+std::optional<double> TirFile::number_any(std::string_view key) const {
+  return entry_number(find_any(key), origin_);
+}
+std::optional<std::string> TirFile::text(std::string_view section, std::string_view key) const {
+  return entry_text(find(section, key));
+}
+std::optional<std::string> TirFile::text_any(std::string_view key) const {
+  return entry_text(find_any(key));
+}
+
+Entry& TirFile::upsert(std::string_view section, std::string_view key) {
+  if (key.empty() || !is_key_start(key.front()) ||
+      !std::all_of(key.begin(), key.end(), is_key_char)) {
+    throw TirError(origin_, 0, "invalid key name '" + std::string(key) + "'");
+  }
+  if (Entry* e = find_in(sections_, section, key)) {
+    e->source.clear();
+    return *e;
+  }
+  Section* target = nullptr;
+  for (auto& s : sections_) {
+    if (iequals(s.name, section)) target = &s;  // the last section of that name
+  }
+  if (target == nullptr) {
+    Section s;
+    s.name = std::string(section);
+    sections_.push_back(std::move(s));
+    target = &sections_.back();
+  }
+  if (target->is_table()) {
+    throw TirError(
+        origin_, target->line,
+        "cannot add key '" + std::string(key) + "' to table section [" + target->name + "]");
+  }
+  // After the last entry, so trailing comment blocks (which usually head the next section) stay
+  // put.
+  auto pos = target->lines.begin();
+  for (auto it = target->lines.begin(); it != target->lines.end(); ++it) {
+    if (it->kind == Line::Kind::kEntry) pos = it + 1;
+  }
+  Line l;
+  l.kind = Line::Kind::kEntry;
+  l.entry.key = std::string(key);
+  return target->lines.insert(pos, std::move(l))->entry;
+}
+
+void TirFile::set(std::string_view section, std::string_view key, double value) {
+  if (!std::isfinite(value)) {
+    throw TirError(origin_, 0, "refusing to set '" + std::string(key) + "' to a non-finite value");
+  }
+  Entry& e = upsert(section, key);
+  e.value = format_number(value);
+  e.quote = '\0';
+}
+
+void TirFile::set_text(std::string_view section, std::string_view key, std::string_view text) {
+  const bool has_single = text.find('\'') != std::string_view::npos;
+  const bool has_double = text.find('"') != std::string_view::npos;
+  if (has_single && has_double) {
+    throw TirError(origin_, 0, "text for '" + std::string(key) + "' contains both quote kinds");
+  }
+  if (text.find('\n') != std::string_view::npos || text.find('\r') != std::string_view::npos) {
+    throw TirError(origin_, 0, "text for '" + std::string(key) + "' contains a line break");
+  }
+  Entry& e = upsert(section, key);
+  e.value = std::string(text);
+  e.quote = has_single ? '"' : '\'';
+}
+
+bool TirFile::erase(std::string_view section, std::string_view key) {
+  for (auto& s : sections_) {
+    if (!iequals(s.name, section)) continue;
+    for (auto it = s.lines.begin(); it != s.lines.end(); ++it) {
+      if (it->kind == Line::Kind::kEntry && iequals(it->entry.key, key)) {
+        s.lines.erase(it);
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+TirFile parse_tir(std::string_view text, const std::string& origin) {
+  TirFile file(origin);
+  int line_no = 0;
+  std::size_t pos = 0;
+  Section* current = nullptr;
+  struct Seen {
+    std::string section;  // lower-cased
+    std::string key;      // lower-cased
+    int line;
+  };
+  std::vector<Seen> seen;
+  auto lowered = [](std::string_view s) {
+    std::string out(s);
+    for (auto& c : out) c = lower(c);
+    return out;
+  };
+
+  while (pos < text.size()) {
+    std::size_t eol = text.find('\n', pos);
+    if (eol == std::string_view::npos) eol = text.size();
+    std::string_view raw = text.substr(pos, eol - pos);
+    pos = eol + 1;
+    ++line_no;
+    if (!raw.empty() && raw.back() == '\r') raw.remove_suffix(1);
+    const std::string_view t = trim(raw);
+
+    Line l;
+    l.line = line_no;
+    l.text = std::string(raw);
+    if (t.empty()) {
+      l.kind = Line::Kind::kBlank;
+    } else if (is_comment_start(t.front())) {
+      l.kind = Line::Kind::kComment;
+    } else if (t.front() == '[') {
+      const std::size_t close = t.find(']');
+      if (close == std::string_view::npos) fail(origin, line_no, "section header without ']'");
+      const std::string_view name = trim(t.substr(1, close - 1));
+      const std::string_view after = trim(t.substr(close + 1));
+      if (name.empty()) fail(origin, line_no, "empty section name");
+      if (!std::all_of(name.begin(), name.end(),
+                       [](char c) { return is_key_char(c) || c == '-'; })) {
+        fail(origin, line_no, "invalid section name '" + std::string(name) + "'");
+      }
+      if (!after.empty() && !is_comment_start(after.front())) {
+        fail(origin, line_no, "unexpected text after section header: '" + std::string(after) + "'");
+      }
+      Section s;
+      s.name = std::string(name);
+      s.header = std::string(raw);
+      s.line = line_no;
+      file.sections().push_back(std::move(s));
+      current = &file.sections().back();
+      continue;
+    } else if (const std::size_t klen = match_key(t); klen != 0) {
+      l.kind = Line::Kind::kEntry;
+      l.entry.key = std::string(t.substr(0, klen));
+      l.entry.line = line_no;
+      l.entry.source = std::string(raw);
+      if (current == nullptr) {
+        fail(origin, line_no, "key '" + l.entry.key + "' outside any section");
+      }
+      parse_value(t.substr(t.find('=') + 1), l.entry, origin, line_no);
+      const std::string sec = lowered(current->name);
+      const std::string key = lowered(l.entry.key);
+      for (const auto& s : seen) {
+        if (s.section == sec && s.key == key) {
+          fail(origin, line_no,
+               "duplicate key '" + l.entry.key + "' in [" + current->name + "] (first at line " +
+                   std::to_string(s.line) + ")");
+        }
+      }
+      seen.push_back({sec, key, line_no});
+    } else {
+      l.kind = Line::Kind::kTableRow;
+      if (current == nullptr) {
+        fail(origin, line_no, "text outside any section: '" + std::string(t) + "'");
+      }
+    }
+
+    if (current == nullptr) {
+      file.preamble().push_back(std::move(l));
+      continue;
+    }
+    // A section is either key/value or table: reject mixing (usually a typo such as a missing '=').
+    if (l.kind == Line::Kind::kEntry || l.kind == Line::Kind::kTableRow) {
+      const auto other = l.kind == Line::Kind::kEntry ? Line::Kind::kTableRow : Line::Kind::kEntry;
+      for (const auto& prev : current->lines) {
+        if (prev.kind == other) {
+          fail(origin, line_no,
+               l.kind == Line::Kind::kEntry
+                   ? "'KEY = value' line in table section [" + current->name + "]"
+                   : "line is neither 'KEY = value' nor a comment in section [" + current->name +
+                         "] (first entry at line " + std::to_string(prev.line) + "): '" +
+                         std::string(t) + "'");
+        }
+      }
+    }
+    current->lines.push_back(std::move(l));
+  }
+  return file;
+}
+
+TirFile read_tir(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw TirError(path.string(), 0, "cannot open file");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  if (in.bad()) throw TirError(path.string(), 0, "read error");
+  return parse_tir(ss.str(), path.string());
+}
+
+std::string write_tir(const TirFile& file) {
+  std::string out;
+  for (const auto& l : file.preamble()) write_line(out, l);
+  for (const auto& s : file.sections()) {
+    out += s.header.empty() ? "[" + s.name + "]" : s.header;
+    out += '\n';
+    for (const auto& l : s.lines) write_line(out, l);
+  }
+  return out;
+}
+
+void write_tir(const TirFile& file, const std::filesystem::path& path) {
+  const std::string text = write_tir(file);
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) throw TirError(path.string(), 0, "cannot open file for writing");
+  out.write(text.data(), static_cast<std::streamsize>(text.size()));
+  if (!out) throw TirError(path.string(), 0, "write error");
+}
+
+std::string ResolvedValues::warning(const std::string& origin) const {
+  if (missing.empty()) return {};
+  std::string out = origin + ": " + std::to_string(missing.size()) + " key" +
+                    (missing.size() == 1 ? "" : "s") + " missing, defaults used: ";
+  for (std::size_t i = 0; i < missing.size(); ++i) {
+    if (i != 0) out += ", ";
+    out += missing[i];
+  }
+  return out;
+}
+
+ResolvedValues resolve_numbers(const TirFile& file, std::span<const KeyDefault> keys) {
+  ResolvedValues r;
+  r.values.reserve(keys.size());
+  for (const auto& k : keys) {
+    const auto v = k.section.empty() ? file.number_any(k.key) : file.number(k.section, k.key);
+    if (v) {
+      r.values.push_back(*v);
+    } else {
+      r.values.push_back(k.value);
+      r.missing.push_back(k.section.empty() ? std::string(k.key)
+                                            : std::string(k.section) + "." + std::string(k.key));
+    }
+  }
+  return r;
+}
+
+}  // namespace tread::tir
