@@ -1,0 +1,16 @@
+// Compiled with the core's flags (-fno-exceptions -fno-rtti): the generated header must be usable
+// in an ECU build. Also checks at compile time that lookups work in a constant expression.
+#include "tir_header_core_check.hpp"
+
+#include "generated/mf61_tyre.hpp"
+
+static_assert(tread::tir::find_entry(tyres::kMf61, "vertical", "fnomin") != nullptr);
+static_assert(tread::tir::find_entry(tyres::kMf61, "", "FNOMIN") != nullptr);
+static_assert(tread::tir::find_entry(tyres::kMf61, "MODEL", "FNOMIN") == nullptr);
+static_assert(tread::tir::find_entry(tyres::kMf61, "MODEL", "TYRESIDE")->text == "RIGHT");
+static_assert(!tread::tir::find_entry(tyres::kMf61, "MODEL", "TYRESIDE")->is_number);
+
+double core_check_fnomin() noexcept {
+  constexpr double fnomin = tread::tir::number_or(tyres::kMf61, "VERTICAL", "FNOMIN", -1.0);
+  return fnomin;
+}
