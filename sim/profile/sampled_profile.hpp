@@ -1,7 +1,8 @@
 #pragma once
-// A profile as sampled points, the common currency of profile construction, files and contact search.
-// Wheel profiles use the wheel convention (y from the taping line, + toward the field side; z = radius
-// increase, + toward the flange tip); rail profiles their own upright frame or the track frame (z up).
+// A profile as sampled points, the common currency of profile construction, files and contact
+// search. Wheel profiles use the wheel convention (y from the taping line, + toward the field side;
+// z = radius increase, + toward the flange tip); rail profiles their own upright frame or the track
+// frame (z up).
 
 #include <string>
 #include <vector>

@@ -1,0 +1,176 @@
+#include "profile/profile_csv.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstddef>
+#include <fstream>
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
+#include <string_view>
+#include <vector>
+
+namespace tread::profile {
+
+namespace {
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r')) {
+    s.remove_prefix(1);
+  }
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) {
+    s.remove_suffix(1);
+  }
+  return s;
+}
+
+std::vector<std::string_view> split_commas(std::string_view line) {
+  std::vector<std::string_view> fields;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = line.find(',', start);
+    if (comma == std::string_view::npos) {
+      fields.push_back(trim(line.substr(start)));
+      return fields;
+    }
+    fields.push_back(trim(line.substr(start, comma - start)));
+    start = comma + 1;
+  }
+}
+
+[[noreturn]] void fail(const std::string& source, std::size_t line, const std::string& message) {
+  throw std::runtime_error(source + ":" + std::to_string(line) + ": " + message);
+}
+
+double parse_number(std::string_view text, const std::string& source, std::size_t line,
+                    const char* column) {
+  double value = 0.0;
+  const char* first = text.data();
+  const char* last = text.data() + text.size();
+  if (!text.empty() && *first == '+') {
+    ++first;
+  }
+  const auto [ptr, ec] = std::from_chars(first, last, value);
+  if (ec != std::errc{} || ptr != last || text.empty()) {
+    fail(source, line,
+         std::string("column ") + column + ": '" + std::string(text) + "' is not a number");
+  }
+  if (!std::isfinite(value)) {
+    fail(source, line, std::string("column ") + column + ": value is not finite");
+  }
+  return value;
+}
+
+}  // namespace
+
+SampledProfile read_profile_csv(std::istream& in, const std::string& source_name) {
+  SampledProfile profile;
+  profile.name = source_name;
+  std::vector<std::size_t> lines;
+  std::string line;
+  std::size_t line_no = 0;
+  std::size_t y_col = 0;
+  std::size_t z_col = 0;
+  std::size_t n_cols = 0;
+  bool have_header = false;
+  while (std::getline(in, line)) {
+    ++line_no;
+    const std::string_view text = trim(line);
+    if (text.empty() || text.front() == '#') {
+      continue;
+    }
+    const auto fields = split_commas(text);
+    if (!have_header) {
+      const auto y_it = std::find(fields.begin(), fields.end(), "y_mm");
+      const auto z_it = std::find(fields.begin(), fields.end(), "z_mm");
+      if (y_it == fields.end() || z_it == fields.end()) {
+        fail(source_name, line_no,
+             "expected a header naming the columns y_mm and z_mm, got '" + std::string(text) + "'");
+      }
+      y_col = static_cast<std::size_t>(y_it - fields.begin());
+      z_col = static_cast<std::size_t>(z_it - fields.begin());
+      n_cols = fields.size();
+      have_header = true;
+      continue;
+    }
+    if (fields.size() != n_cols) {
+      fail(source_name, line_no,
+           "expected " + std::to_string(n_cols) + " columns, got " + std::to_string(fields.size()));
+    }
+    profile.y_mm.push_back(parse_number(fields[y_col], source_name, line_no, "y_mm"));
+    profile.z_mm.push_back(parse_number(fields[z_col], source_name, line_no, "z_mm"));
+    lines.push_back(line_no);
+  }
+  if (!have_header) {
+    fail(source_name, line_no, "no header line (y_mm,z_mm) found");
+  }
+  if (profile.y_mm.size() < 2) {
+    fail(source_name, line_no, "fewer than 2 points");
+  }
+  const bool decreasing = profile.y_mm[1] < profile.y_mm[0];
+  for (std::size_t i = 1; i < profile.y_mm.size(); ++i) {
+    const double dy = profile.y_mm[i] - profile.y_mm[i - 1];
+    if (decreasing ? !(dy < 0.0) : !(dy > 0.0)) {
+      fail(source_name, lines[i],
+           std::string("y_mm is not strictly ") + (decreasing ? "decreasing" : "increasing") +
+               " (previous point at line " + std::to_string(lines[i - 1]) + ")");
+    }
+  }
+  if (decreasing) {
+    std::reverse(profile.y_mm.begin(), profile.y_mm.end());
+    std::reverse(profile.z_mm.begin(), profile.z_mm.end());
+  }
+  return profile;
+}
+
+SampledProfile read_profile_csv(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) {
+    throw std::runtime_error(path.string() + ":0: cannot open the file");
+  }
+  SampledProfile profile = read_profile_csv(in, path.string());
+  profile.name = path.stem().string();
+  return profile;
+}
+
+void write_profile_csv(std::ostream& out, const SampledProfile& profile,
+                       std::span<const double> tan, int decimals) {
+  check_sampled_profile(profile);
+  if (!tan.empty() && tan.size() != profile.y_mm.size()) {
+    throw std::invalid_argument("write_profile_csv: tan has the wrong size for " + profile.name);
+  }
+  std::ostringstream buffer;
+  buffer << std::fixed << std::setprecision(decimals);
+  buffer << (tan.empty() ? "y_mm,z_mm\n" : "y_mm,z_mm,tan\n");
+  for (std::size_t i = 0; i < profile.y_mm.size(); ++i) {
+    buffer << profile.y_mm[i] << ',' << profile.z_mm[i];
+    if (!tan.empty()) {
+      buffer << ',' << tan[i];
+    }
+    buffer << '\n';
+  }
+  out << buffer.str();
+}
+
+void check_sampled_profile(const SampledProfile& profile) {
+  const std::string who = "profile '" + profile.name + "': ";
+  if (profile.y_mm.size() != profile.z_mm.size()) {
+    throw std::invalid_argument(who + "y_mm and z_mm differ in size");
+  }
+  if (profile.y_mm.size() < 2) {
+    throw std::invalid_argument(who + "fewer than 2 points");
+  }
+  for (std::size_t i = 0; i < profile.y_mm.size(); ++i) {
+    if (!std::isfinite(profile.y_mm[i]) || !std::isfinite(profile.z_mm[i])) {
+      throw std::invalid_argument(who + "point " + std::to_string(i) + " is not finite");
+    }
+    if (i > 0 && !(profile.y_mm[i] > profile.y_mm[i - 1])) {
+      throw std::invalid_argument(who + "y is not strictly increasing at point " +
+                                  std::to_string(i));
+    }
+  }
+}
+
+}  // namespace tread::profile

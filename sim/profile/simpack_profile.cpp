@@ -1,0 +1,290 @@
+#include "profile/simpack_profile.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstddef>
+#include <fstream>
+#include <map>
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
+#include <string_view>
+#include <vector>
+
+#include "profile/profile_csv.hpp"
+
+namespace tread::profile {
+
+namespace {
+
+[[noreturn]] void fail(const std::string& source, std::size_t line, const std::string& message) {
+  throw std::runtime_error(source + ":" + std::to_string(line) + ": " + message);
+}
+
+std::string_view trim(std::string_view s) {
+  const auto is_space = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; };
+  while (!s.empty() && is_space(s.front())) {
+    s.remove_prefix(1);
+  }
+  while (!s.empty() && is_space(s.back())) {
+    s.remove_suffix(1);
+  }
+  return s;
+}
+
+/// The text before an unquoted '!' (SIMPACK's comment character).
+std::string_view strip_comment(std::string_view s) {
+  bool quoted = false;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (s[i] == '\'') {
+      quoted = !quoted;
+    } else if (s[i] == '!' && !quoted) {
+      return s.substr(0, i);
+    }
+  }
+  return s;
+}
+
+bool parse_double(std::string_view text, double& value) {
+  text = trim(text);
+  const char* first = text.data();
+  const char* last = text.data() + text.size();
+  if (first != last && *first == '+') {
+    ++first;
+  }
+  const auto [ptr, ec] = std::from_chars(first, last, value);
+  return ec == std::errc{} && ptr == last && first != last && std::isfinite(value);
+}
+
+struct Setting {
+  std::string value;
+  std::size_t line = 0;
+};
+
+}  // namespace
+
+SimpackProfile read_simpack_profile(std::istream& in, const std::string& source_name) {
+  std::map<std::string, Setting> settings;  // "header.type", "spline.shift.y", ...
+  struct RawPoint {
+    double y;
+    double z;
+    std::size_t line;
+  };
+  std::vector<RawPoint> points;
+  std::string block;  // "", "header", "spline", "point"
+  bool saw_header = false;
+  bool saw_points = false;
+  std::string line;
+  std::size_t line_no = 0;
+  while (std::getline(in, line)) {
+    ++line_no;
+    const std::string_view text = trim(strip_comment(line));
+    if (text.empty()) {
+      continue;
+    }
+    if (text == "header.begin" || text == "spline.begin") {
+      block = std::string(text.substr(0, text.find('.')));
+      saw_header = saw_header || block == "header";
+      continue;
+    }
+    if (text == "point.begin") {
+      if (block != "spline") {
+        fail(source_name, line_no, "point.begin outside a spline block");
+      }
+      block = "point";
+      saw_points = true;
+      continue;
+    }
+    if (text == "point.end") {
+      block = "spline";
+      continue;
+    }
+    if (text == "header.end" || text == "spline.end") {
+      block.clear();
+      continue;
+    }
+    if (block == "point") {
+      std::istringstream fields{std::string(text)};
+      std::string a;
+      std::string b;
+      std::string w;
+      fields >> a >> b >> w;
+      double y = 0.0;
+      double z = 0.0;
+      if (!parse_double(a, y) || !parse_double(b, z)) {
+        fail(source_name, line_no,
+             "expected a point 'y z [weight]', got '" + std::string(text) + "'");
+      }
+      points.push_back({y, z, line_no});
+      continue;
+    }
+    const std::size_t eq = text.find('=');
+    if (eq == std::string_view::npos || block.empty()) {
+      fail(source_name, line_no, "unexpected line '" + std::string(text) + "'");
+    }
+    std::string value(trim(text.substr(eq + 1)));
+    if (value.size() >= 2 && value.front() == '\'' && value.back() == '\'') {
+      value = value.substr(1, value.size() - 2);
+    }
+    settings[block + "." + std::string(trim(text.substr(0, eq)))] = {value, line_no};
+  }
+  if (!saw_header) {
+    fail(source_name, line_no, "no header.begin … header.end block");
+  }
+  if (!saw_points || points.size() < 2) {
+    fail(source_name, line_no, "no point block with at least 2 points");
+  }
+
+  const auto number = [&](const std::string& key, double fallback) {
+    const auto it = settings.find(key);
+    if (it == settings.end()) {
+      return fallback;
+    }
+    double v = 0.0;
+    if (!parse_double(it->second.value, v)) {
+      fail(source_name, it->second.line, key + ": '" + it->second.value + "' is not a number");
+    }
+    return v;
+  };
+
+  SimpackProfile result;
+  const double type = number("header.type", -1.0);
+  if (type < -0.5) {
+    fail(source_name, line_no, "header.type is missing (0 = rail, 1 = wheel)");
+  }
+  if (std::fabs(type - 1.0) < 0.5) {
+    result.type = SimpackProfileType::kWheel;
+  } else if (std::fabs(type) < 0.5) {
+    result.type = SimpackProfileType::kRail;
+  } else {
+    fail(source_name, settings["header.type"].line, "header.type must be 0 (rail) or 1 (wheel)");
+  }
+  if (const auto it = settings.find("spline.comment"); it != settings.end()) {
+    result.comment = it->second.value;
+  }
+  const double len_f = number("spline.units.len.f", 1000.0);
+  const double ang_f = number("spline.units.ang.f", 1.0);
+  if (!(len_f > 0.0) || !(ang_f > 0.0)) {
+    fail(source_name, settings["spline.units.len.f"].line, "unit factors must be positive");
+  }
+  const double to_mm = 1000.0 / len_f;
+  const double shift_y = number("spline.shift.y", 0.0) * to_mm;
+  const double shift_z = number("spline.shift.z", 0.0) * to_mm;
+  const double rotate_rad = number("spline.rotate", 0.0) / ang_f;
+  const double y_min = number("spline.bound.y.min", 1.0) * to_mm;
+  const double y_max = number("spline.bound.y.max", 0.0) * to_mm;
+  const double z_min = number("spline.bound.z.min", 1.0) * to_mm;
+  const double z_max = number("spline.bound.z.max", 0.0) * to_mm;
+  const bool mirror_y = number("spline.mirror.y", 0.0) > 0.5;
+  const bool mirror_z = number("spline.mirror.z", 0.0) > 0.5;
+  const double c = std::cos(rotate_rad);
+  const double s = std::sin(rotate_rad);
+
+  std::vector<RawPoint> kept;
+  for (const RawPoint& p : points) {
+    double y = p.y * to_mm + shift_y;
+    double z = p.z * to_mm + shift_z;
+    const double yr = c * y - s * z;
+    const double zr = s * y + c * z;
+    y = yr;
+    z = zr;
+    if (y_min < y_max && (y < y_min || y > y_max)) {
+      continue;
+    }
+    if (z_min < z_max && (z < z_min || z > z_max)) {
+      continue;
+    }
+    if (mirror_y) {
+      y = -y;
+    }
+    if (mirror_z) {
+      z = -z;
+    }
+    if (result.type == SimpackProfileType::kRail) {
+      z = -z;  // SIMPACK z down -> height up
+    }
+    kept.push_back({y, z, p.line});
+  }
+  if (kept.size() < 2) {
+    fail(source_name, line_no, "fewer than 2 points left after the bounds");
+  }
+  const bool decreasing = kept[1].y < kept[0].y;
+  for (std::size_t i = 1; i < kept.size(); ++i) {
+    const double dy = kept[i].y - kept[i - 1].y;
+    if (decreasing ? !(dy < 0.0) : !(dy > 0.0)) {
+      fail(source_name, kept[i].line,
+           "y is not strictly monotonic after processing (previous point at line " +
+               std::to_string(kept[i - 1].line) + ")");
+    }
+  }
+  if (decreasing) {
+    std::reverse(kept.begin(), kept.end());
+  }
+  result.profile.name = source_name;
+  for (const RawPoint& p : kept) {
+    result.profile.y_mm.push_back(p.y);
+    result.profile.z_mm.push_back(p.z);
+  }
+  return result;
+}
+
+SimpackProfile read_simpack_profile(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) {
+    throw std::runtime_error(path.string() + ":0: cannot open the file");
+  }
+  SimpackProfile result = read_simpack_profile(in, path.string());
+  result.profile.name = path.stem().string();
+  return result;
+}
+
+void write_simpack_profile(std::ostream& out, const SampledProfile& profile,
+                           SimpackProfileType type, const std::string& comment) {
+  check_sampled_profile(profile);
+  const bool wheel = type == SimpackProfileType::kWheel;
+  std::ostringstream o;
+  o << "! *************************************************\n"
+    << "! ***        SIMPACK Rail-Wheel Profile         ***\n"
+    << "! *************************************************\n"
+    << "! written by tread: " << profile.name << "\n\n"
+    << "  header.begin\n"
+    << "    version       =  1                       ! Version flag\n"
+    << "    type          =  " << (wheel ? 1 : 0)
+    << "                       ! 0=rail profile, 1=wheel profile\n"
+    << "  header.end\n\n"
+    << "  spline.begin\n"
+    << "    approx.smooth  = +0.000000000000000e+00   ! Approximation smoothing value\n"
+    << "    comment        = '";
+  for (const char ch : comment) {
+    o << (ch == '\'' || ch == '\n' ? ' ' : ch);
+  }
+  o << "'   ! Comment\n"
+    << "    type           =  0                       ! Original data file type\n"
+    << "    point.dist.min = +0.000000000000000e+00\n"
+    << "    shift.y        = +0.000000000000000e+00\n"
+    << "    shift.z        = +0.000000000000000e+00\n"
+    << "    rotate         = +0.000000000000000e+00\n"
+    << "    bound.y.min    = +1.000000000000000e+00\n"
+    << "    bound.y.max    = +0.000000000000000e+00\n"
+    << "    bound.z.min    = +1.000000000000000e+00\n"
+    << "    bound.z.max    = +0.000000000000000e+00\n"
+    << "    mirror.y       =  0                       ! 0=no mirroring\n"
+    << "    mirror.z       =  0                       ! 0=no mirroring\n"
+    << "    inversion      =  0                       ! 0=no inversion\n"
+    << "    units.len.f    = +1.000000000000000e+03   ! lengths in mm\n"
+    << "    units.ang.f    = +1.000000000000000e+00   ! angles in rad\n"
+    << "    point.begin\n"
+    << "    ! y value (mm)  z value (mm, SIMPACK: + down)\n";
+  o << std::scientific;
+  o.precision(12);
+  for (std::size_t i = 0; i < profile.y_mm.size(); ++i) {
+    const double z = wheel ? profile.z_mm[i] : -profile.z_mm[i];
+    o << "    " << profile.y_mm[i] << "  " << z << '\n';
+  }
+  o << "    point.end\n"
+    << "  spline.end\n";
+  out << o.str();
+}
+
+}  // namespace tread::profile

@@ -1,0 +1,84 @@
+#include "profile/profile_csv.hpp"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "golden_path.hpp"
+
+namespace tread::profile {
+namespace {
+
+std::string error_of(const std::string& text) {
+  std::istringstream in(text);
+  try {
+    (void)read_profile_csv(in, "p.csv");
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ProfileCsv, ReadsIncreasingAndDecreasingWithCommentsAndExtraColumns) {
+  std::istringstream a("# comment\ny_mm,z_mm\n-1,0.5\n0,0\n\n2.5,-0.25\n");
+  const SampledProfile p = read_profile_csv(a, "a");
+  EXPECT_EQ(p.y_mm, (std::vector<double>{-1.0, 0.0, 2.5}));
+  EXPECT_EQ(p.z_mm, (std::vector<double>{0.5, 0.0, -0.25}));
+
+  std::istringstream b("tan,z_mm,y_mm\n9,-0.25,2.5\n9,0,0\n9,0.5,-1\n");
+  const SampledProfile q = read_profile_csv(b, "b");
+  EXPECT_EQ(q.y_mm, p.y_mm);
+  EXPECT_EQ(q.z_mm, p.z_mm);
+}
+
+TEST(ProfileCsv, ErrorsNameFileAndLine) {
+  EXPECT_EQ(error_of("y,z\n1,2\n"),
+            "p.csv:1: expected a header naming the columns y_mm and z_mm, got 'y,z'");
+  EXPECT_EQ(error_of("y_mm,z_mm\n1,2\n2,x\n"), "p.csv:3: column z_mm: 'x' is not a number");
+  EXPECT_EQ(error_of("y_mm,z_mm\n1,2\n2\n"), "p.csv:3: expected 2 columns, got 1");
+  EXPECT_EQ(error_of("y_mm,z_mm\n1,2\n2,1\n# c\n2,3\n"),
+            "p.csv:5: y_mm is not strictly increasing (previous point at line 3)");
+  EXPECT_EQ(error_of("y_mm,z_mm\n1,2\n"), "p.csv:2: fewer than 2 points");
+  EXPECT_EQ(error_of("y_mm,z_mm\n1,2\n2,nan\n"), "p.csv:3: column z_mm: value is not finite");
+  EXPECT_THROW((void)read_profile_csv(std::filesystem::path("/nonexistent/x.csv")),
+               std::runtime_error);
+}
+
+TEST(ProfileCsv, RoundTripIsExactAtSeventeenDigits) {
+  SampledProfile p{"rt", {-70.0, -1.0 / 3.0, 0.1, 65.0}, {9.519259302, 1.0 / 7.0, -0.0033, -2.98}};
+  std::ostringstream out;
+  write_profile_csv(out, p, {}, 17);
+  std::istringstream in(out.str());
+  const SampledProfile q = read_profile_csv(in, "rt");
+  ASSERT_EQ(q.y_mm.size(), p.y_mm.size());
+  for (std::size_t i = 0; i < p.y_mm.size(); ++i) {
+    EXPECT_DOUBLE_EQ(q.y_mm[i], p.y_mm[i]);
+    EXPECT_DOUBLE_EQ(q.z_mm[i], p.z_mm[i]);
+  }
+  std::ostringstream with_tan;
+  const std::vector<double> tan{1.0, 2.0, 3.0, 4.0};
+  write_profile_csv(with_tan, p, tan, 3);
+  EXPECT_EQ(with_tan.str().substr(0, 41), "y_mm,z_mm,tan\n-70.000,9.519,1.000\n-0.333,");
+}
+
+TEST(ProfileCsvGolden, ReadsEn15302RailAAndWheelA) {
+  const auto rail_path = testing::refdata("rail/en15302/RailA.csv");
+  ASSERT_TRUE(std::filesystem::exists(rail_path)) << rail_path;
+  const SampledProfile rail = read_profile_csv(rail_path);
+  EXPECT_EQ(rail.name, "RailA");
+  EXPECT_EQ(rail.y_mm.size(), 7191u);
+  EXPECT_DOUBLE_EQ(rail.y_mm.front(), -32.634);
+  EXPECT_DOUBLE_EQ(rail.z_mm.front(), -15.521274);
+  check_sampled_profile(rail);
+  const auto wheel_path = testing::refdata("rail/en15302/WheelA.csv");
+  ASSERT_TRUE(std::filesystem::exists(wheel_path)) << wheel_path;
+  const SampledProfile wheel = read_profile_csv(wheel_path);
+  EXPECT_DOUBLE_EQ(wheel.y_mm.front(), -70.0);
+  EXPECT_DOUBLE_EQ(wheel.z_mm.front(), 9.519260);
+}
+
+}  // namespace
+}  // namespace tread::profile
