@@ -1,0 +1,44 @@
+// `tread proto dbc --layout classic|fd [--output F]`: writes the protocol's DBC file.
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <string>
+
+#include "cli/commands.hpp"
+#include "proto/dbc_writer.hpp"
+
+namespace tread::cli {
+namespace {
+
+void add_proto_command(CLI::App& app) {
+  auto* proto = app.add_subcommand("proto", "The CAN protocol: DBC files");
+  proto->require_subcommand(1);
+  auto* dbc =
+      proto->add_subcommand("dbc", "Write the DBC of a layout (generated from the codec's tables)");
+  static proto::Layout layout = proto::Layout::classic;
+  static std::string output;
+  const std::map<std::string, proto::Layout> layouts{{"classic", proto::Layout::classic},
+                                                     {"fd", proto::Layout::fd}};
+  dbc->add_option("--layout", layout, "classic or fd")
+      ->transform(CLI::CheckedTransformer(layouts, CLI::ignore_case))
+      ->required();
+  dbc->add_option("--output", output, "output file (default: standard output)");
+  dbc->callback([] {
+    const std::string text = host::write_dbc(layout);
+    if (output.empty()) {
+      std::cout << text;
+      return;
+    }
+    std::ofstream file(output, std::ios::binary);
+    file << text;
+    if (!file) {
+      throw std::runtime_error("cannot write " + output);
+    }
+  });
+}
+
+}  // namespace
+
+TREAD_REGISTER_COMMAND("proto", add_proto_command);
+
+}  // namespace tread::cli

@@ -1,0 +1,155 @@
+#pragma once
+// One CAN signal: Intel (little-endian, DBC "@1") bit layout, scaling and limits, as a DBC defines
+// it.
+
+#include <cstdint>
+#include <span>
+
+#include "core/status.hpp"
+#include "proto/can_frame.hpp"
+
+namespace tread::proto {
+
+/// What a signal carries, so one table-driven codec serves every layout.
+enum class Role : std::uint8_t {
+  crc,
+  counter,
+  // rig -> node
+  kappa,
+  alpha,
+  gamma,
+  fz,
+  vx,
+  omega,
+  omega_valid,
+  ws_lateral,
+  ws_yaw,
+  ws_yaw_valid,
+  rig_cycle,
+  cmd_enable,
+  cmd_reset,
+  cmd_tyre_set,
+  cmd_profile_set,
+  // node -> rig
+  fx,
+  fy,
+  mz,
+  mx,
+  my,
+  rl,
+  wheel_status,
+  r_left,
+  r_right,
+  delta_r,
+  gamma_left,
+  gamma_right,
+  ws_status,
+  node_state,
+  node_cycle,
+  node_overruns,
+  node_rejected,
+  node_stale_mask,
+  node_clamp_mask,
+};
+
+/// Roles whose values are integers (flags, counters, masks) rather than scaled physical values.
+[[nodiscard]] constexpr bool is_integer_role(Role role) noexcept {
+  switch (role) {
+    case Role::crc:
+    case Role::counter:
+    case Role::omega_valid:
+    case Role::ws_yaw_valid:
+    case Role::rig_cycle:
+    case Role::cmd_enable:
+    case Role::cmd_reset:
+    case Role::cmd_tyre_set:
+    case Role::cmd_profile_set:
+    case Role::wheel_status:
+    case Role::ws_status:
+    case Role::node_state:
+    case Role::node_cycle:
+    case Role::node_overruns:
+    case Role::node_rejected:
+    case Role::node_stale_mask:
+    case Role::node_clamp_mask:
+      return true;
+    default:
+      return false;
+  }
+}
+
+struct SignalSpec {
+  Role role;
+  const char* name;         ///< DBC signal name (without the instance suffix)
+  std::int8_t instance;     ///< wheel / wheelset index appended as "_<n>", or -1 for none
+  std::uint16_t start_bit;  ///< Intel start bit (LSB position)
+  std::uint8_t length;      ///< bits, 1..32
+  bool is_signed;           ///< two's complement raw value
+  double factor;  ///< physical = raw * factor + offset (exact decimal, as written in the DBC)
+  double offset;
+  const char* unit;
+  float factor_f;  ///< factor and offset as float for the real-time path
+  float offset_f;
+
+  constexpr SignalSpec() : SignalSpec(Role::crc, "", -1, 0, 8, false, 1.0, 0.0, "") {}
+  constexpr SignalSpec(Role role_, const char* name_, std::int8_t instance_, std::uint16_t start,
+                       std::uint8_t len, bool signed_, double factor_, double offset_,
+                       const char* unit_)
+      : role(role_),
+        name(name_),
+        instance(instance_),
+        start_bit(start),
+        length(len),
+        is_signed(signed_),
+        factor(factor_),
+        offset(offset_),
+        unit(unit_),
+        factor_f(static_cast<float>(factor_)),
+        offset_f(static_cast<float>(offset_)) {}
+
+  [[nodiscard]] constexpr std::int64_t raw_min() const noexcept {
+    return is_signed ? -(std::int64_t{1} << (length - 1U)) : 0;
+  }
+  [[nodiscard]] constexpr std::int64_t raw_max() const noexcept {
+    return is_signed ? (std::int64_t{1} << (length - 1U)) - 1 : (std::int64_t{1} << length) - 1;
+  }
+  [[nodiscard]] constexpr double physical_min() const noexcept {
+    return static_cast<double>(raw_min()) * factor + offset;
+  }
+  [[nodiscard]] constexpr double physical_max() const noexcept {
+    return static_cast<double>(raw_max()) * factor + offset;
+  }
+};
+
+/// Writes `raw` (its low `length` bits) at `start_bit`, Intel order. The caller checked the bounds.
+void put_raw(std::span<std::uint8_t> data, std::uint16_t start_bit, std::uint8_t length,
+             std::uint64_t raw) noexcept;
+
+/// Reads `length` bits at `start_bit`, Intel order, zero-extended.
+[[nodiscard]] std::uint64_t get_raw(std::span<const std::uint8_t> data, std::uint16_t start_bit,
+                                    std::uint8_t length) noexcept;
+
+/// Encodes a physical value: rounds to the nearest raw step and saturates to the raw range.
+/// A non-finite value encodes as 0 (physical `offset`).
+/// @retval Status::ok            encoded exactly within half a step
+/// @retval Status::out_of_range  saturated, or the value was not finite
+Status encode_signal(const SignalSpec& spec, float value, std::span<std::uint8_t> data) noexcept;
+
+/// Decodes a physical value.
+[[nodiscard]] float decode_signal(const SignalSpec& spec,
+                                  std::span<const std::uint8_t> data) noexcept;
+
+}  // namespace tread::proto
+
+namespace tread::proto {
+
+/// Integer signals (counters, masks, flags): the raw value saturated to the signal's range.
+/// @retval Status::out_of_range  saturated
+Status encode_raw_signal(const SignalSpec& spec, std::int64_t raw,
+                         std::span<std::uint8_t> data) noexcept;
+
+/// The raw value, sign-extended for signed signals.
+[[nodiscard]] std::int64_t decode_raw_signal(const SignalSpec& spec,
+                                             std::span<const std::uint8_t> data) noexcept;
+
+}  // namespace tread::proto
