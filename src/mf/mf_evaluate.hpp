@@ -1,0 +1,763 @@
+#pragma once
+// The Magic Formula MF 6.1 / MF 6.2 / MF-Tyre 5.2 steady state, following MFeval 4.3.1
+// (Marco Furlan) equation by equation so the results match it, including MFeval's documented
+// departures from the book to match TNO:
+//   - A_mu = 1 in the digressive friction factor (so LMUX' = LMUX*), LMUV = 0;
+//   - Dt from (A60) (QDZ3·γ, not |γ*|), Bt from (A58), Mx from Besselink's draft (49) with
+//   QSX12…14,
+//     My from (A48) (MF 5.2: the equation manual's form), αr,eq/αt,eq from (A54)/(A55), s from
+//     (A56);
+//   - t multiplied by LFZO; Fy' and SVyk of Mz from Fy0/Fy at γ = 0 with the original γ* in Gyk;
+//   - the low-speed model below VXLOW (linear κ, α and φt reduction, cosine reduction of SVx, SHx,
+//     SVy, SHy, SVyk, t, Mzr; the empirical My reduction), φt·cos α with limits on;
+//   - Fz is clamped only above FZMAX; FZMIN is used only in Mz0 (Fz low limit), Mx (Fz·(Fz/FZMIN)²)
+//     and My (Fz·Fz/FZMIN);
+//   - MF 5.2 (FITTYP 6): Kyg0, SHy with PHY3, Mz = −t·(Fy − SVyk) + Mzr + s·Fx (SVyk of the
+//     combined Fy itself, as MFeval 4.3.1's output shows, not the γ = 0 one), My without the
+//     camber/pressure terms, contact length from Q_A1/Q_A2 (with MFeval's fallback), relaxation
+//     lengths from PTX/PTY.
+// Where MFeval divides by zero or takes acos of more than 1 (turn slip at φt = 0, Fz = 0 with the
+// limits off, Q_FZ2 = 0) it returns NaN/Inf; here those spots take the limiting finite value, so a
+// finite input always gives a finite output. Where MFeval is finite the arithmetic is the same.
+// Deliberate differences:
+//   - rho/Rl for FITTYP ≠ 61 (MF 5.2, MF 6.2): MFeval minimises (Fz62(Rl) − Fz)² with fminsearch
+//     (TolX 1e-6, start 0.3 m); here the root of Fz62(Rl) = Fz is found by bisection to the last
+//     bit. The two agree to about 1e-8 m.
+//   - rho/Rl for FITTYP 61 solve the same quadratic in the cancellation-free form.
+//   - TYRESIDE mirroring (MountedSide), which MFeval ignores.
+//   - A finite-arithmetic envelope, applied in every mode: Fz ≤ 10·max(FZMAX, FNOMIN), |κ| ≤ 100,
+//     |Vx| ≤ 1000 m/s, |φt| ≤ 100 1/m, 0 < p ≤ 100·NOMPRES. Inputs outside it are clamped and
+//     MfOutput::status is out_of_range. It lies far outside any tyre's measured range.
+//
+// Scalar: float, double or ceres::Jet (all maths through unqualified calls, so ADL finds Jet's).
+// No heap, no exceptions, no virtual calls, no I/O.
+
+#include "mf/mf_options.hpp"
+#include "mf/mf_parameters.hpp"
+#include "mf/mf_types.hpp"
+
+#include <cmath>
+
+namespace tread::mf {
+
+namespace detail {
+
+using std::abs;
+using std::acos;
+using std::atan;
+using std::cos;
+using std::exp;
+using std::pow;
+using std::sin;
+using std::sqrt;
+using std::tan;
+
+template <typename T>
+constexpr bool is_zero(const T& x) {
+  return !(x < T(0)) && !(x > T(0));
+}
+/// MATLAB sign(): −1, 0, +1.
+template <typename T>
+T sgn(const T& x) {
+  if (x > T(0)) return T(1);
+  if (x < T(0)) return T(-1);
+  return T(0);
+}
+/// sign() with sign(0) = 1, as MFeval writes `s = sign(x); s(s == 0) = 1`.
+template <typename T>
+T sgn_nz(const T& x) {
+  return x < T(0) ? T(-1) : T(1);
+}
+template <typename T>
+T max_of(const T& a, const T& b) {
+  return a < b ? b : a;
+}
+template <typename T>
+T min_of(const T& a, const T& b) {
+  return b < a ? b : a;
+}
+/// num/den, or `fallback` where den is exactly 0 (MFeval: Inf or NaN there).
+template <typename T>
+T div_or(const T& num, const T& den, const T& fallback) {
+  return is_zero(den) ? fallback : num / den;
+}
+
+template <typename T>
+T pi() {
+  return T(3.14159265358979323846);
+}
+
+/// Inputs after MFeval's parseInputs (one row, userDynamics = 0).
+template <typename T>
+struct Prepared {
+  T fz, kappa, alpha, gamma, phit, vx, p;  // limited
+  T ufz, ukappa, ukappa_low, ualpha, ugamma;
+  T fz_low_limit;
+  bool is_low_speed = false;
+  T reduction_smooth = T(1);
+  T dpi;
+  T omega, re, romega;
+  T phi = T(0), epsilong = T(0);
+  Status status = Status::ok;
+};
+
+/// Shared intermediate quantities (calculateBasic).
+template <typename T>
+struct Basic {
+  T alpha_star, gamma_star, lmux_star, lmuy_star, lmux_prime, lmuy_prime;
+  T fz0_prime, alpha_prime, dfz, dpi;
+};
+
+template <typename T>
+struct Fy0Result {
+  T fy0, muy, kya, kyg0, shy, svy, by, cy, zeta2;
+};
+
+/// calculateRe: Re by MFeval's fixed-point iteration on omega = (κ·Vx + Vx)/Re (unlimited κ, Fz,
+/// Vx).
+template <typename T>
+void rolling_radius(const MfParameters<T>& p, Prepared<T>& in) {
+  const T r0 = p.unloaded_radius_m;
+  const T fz0 = p.fnomin_n;
+  const T cz = p.vertical_stiffness_npm * (T(1) + p.pfz1 * in.dpi);
+  const T deflection =
+      (fz0 / cz) * (p.dreff * atan(p.breff * (in.ufz / fz0)) + p.freff * (in.ufz / fz0));
+  T re = r0 * T(0.965);
+  T re_old = r0;
+  T omega = T(0);
+  T romega = r0 * p.q_re0;
+  // MFeval: while |Re_old − Re| > 1e-9 (in float: 1e-6, the 1e-9 step is below float's
+  // resolution). The cap only guards against a diverging file.
+  const T tolerance = T(sizeof(T) == sizeof(float) ? 1e-6 : 1e-9);
+  for (int i = 0; i < 100 && abs(re_old - re) > tolerance; ++i) {
+    re_old = re;
+    omega = div_or(in.ukappa * in.vx + in.vx, re, T(0));
+    const T speed = (omega * r0) / p.longvl_mps;
+    romega = r0 * (p.q_re0 + p.q_v1 * speed * speed);
+    re = romega - deflection;
+  }
+  in.re = re;
+  in.omega = omega;
+  in.romega = romega;
+}
+
+template <typename T>
+T clamp_envelope(const T& x, const T& lo, const T& hi, Status& status) {
+  if (x < lo) {
+    status = Status::out_of_range;
+    return lo;
+  }
+  if (x > hi) {
+    status = Status::out_of_range;
+    return hi;
+  }
+  return x;
+}
+
+/// parseInputs.
+template <typename T>
+Prepared<T> prepare(const MfParameters<T>& p, const MfInput<T>& input, const MfOptions& options) {
+  Prepared<T> in;
+  Status status = Status::ok;
+  // The finite-arithmetic envelope (not in MFeval; see the header comment).
+  const T fz_env = T(10) * max_of(p.fzmax_n, p.fnomin_n);
+  T fz = input.fz_n < T(0) ? T(0) : clamp_envelope(input.fz_n, T(0), fz_env, status);
+  T kappa = clamp_envelope(input.kappa, T(-100), T(100), status);
+  T alpha = input.alpha_rad;
+  T gamma = input.gamma_rad;
+  T phit = clamp_envelope(input.phit_1pm, T(-100), T(100), status);
+  const T vx = clamp_envelope(input.vx_mps, T(-1000), T(1000), status);
+  T pressure = input.p_pa > T(0) ? input.p_pa : p.inflpres_pa;
+  pressure = clamp_envelope(pressure, T(1e-6) * p.nompres_pa, T(100) * p.nompres_pa, status);
+
+  in.ufz = fz;
+  in.ukappa = kappa;
+  in.ukappa_low = kappa;
+  in.ualpha = alpha;
+  in.ugamma = gamma;
+  in.vx = vx;
+  in.fz_low_limit = fz;
+
+  if (options.use_limits) {
+    phit = phit * cos(alpha);  // "empirically discovered"
+    const T vxlow = p.vxlow_mps;
+    in.is_low_speed = abs(vx) <= vxlow;
+    T reduction_linear = T(1);
+    if (in.is_low_speed) {
+      const T wvlow = T(0.5) * (T(1) + cos(pi<T>() * div_or(vx, vxlow, T(0))));
+      in.reduction_smooth = T(1) - wvlow;
+      reduction_linear = abs(div_or(vx, vxlow, T(0)));
+      in.ukappa_low = in.ukappa_low * reduction_linear;
+      phit = phit * reduction_linear;
+    }
+    const T vsy = tan(alpha) * vx;
+    if (vx < T(0)) phit = -phit;
+    const T speed_sum = abs(vx) + abs(vsy);
+    if (in.is_low_speed) kappa = kappa * reduction_linear;
+    if (speed_sum < vxlow) alpha = alpha * (speed_sum / vxlow);
+
+    if (alpha < p.alpmin_rad) alpha = p.alpmin_rad;
+    if (alpha > p.alpmax_rad) alpha = p.alpmax_rad;
+    if (gamma < p.cammin_rad) gamma = p.cammin_rad;
+    if (gamma > p.cammax_rad) gamma = p.cammax_rad;
+    if (fz > p.fzmax_n) fz = p.fzmax_n;
+    in.fz_low_limit = fz < p.fzmin_n ? p.fzmin_n : fz;
+    if (pressure < p.presmin_pa) pressure = p.presmin_pa;
+    if (pressure > p.presmax_pa) pressure = p.presmax_pa;
+    if (kappa < p.kpumin) kappa = p.kpumin;
+    if (kappa > p.kpumax) kappa = p.kpumax;
+  }
+  if (is_zero(vx)) in.ualpha = T(0);  // "zero speed (empirically discovered)"
+
+  in.fz = fz;
+  in.kappa = kappa;
+  in.alpha = alpha;
+  in.gamma = gamma;
+  in.phit = phit;
+  in.p = pressure;
+  in.dpi = (pressure - p.nompres_pa) / p.nompres_pa;
+
+  if (options.use_turn_slip || options.extras) rolling_radius(p, in);
+
+  if (options.use_turn_slip) {
+    const T fz0_prime = p.lfzo * p.fnomin_n;
+    const T dfz = (fz - fz0_prime) / fz0_prime;
+    const T vsy = -tan(alpha) * abs(vx);
+    T vc_prime = sqrt(vx * vx + vsy * vsy);
+    in.epsilong = p.pecp1 * (T(1) + p.pecp2 * dfz);
+    if (abs(vx) < p.vxlow_mps) vc_prime = p.vxlow_mps * sgn_nz(vx);
+    const T psi_dot = -phit * vc_prime;
+    in.phi = div_or(psi_dot - (T(1) - in.epsilong) * in.omega * sin(gamma), vc_prime, T(0));
+  }
+  in.status = status;
+  return in;
+}
+
+/// calculateBasic.
+template <typename T>
+Basic<T> basic(const MfParameters<T>& p, const Prepared<T>& in, const MfOptions& options) {
+  Basic<T> b;
+  const T vcx = in.vx;
+  const T vsy = tan(in.alpha) * abs(vcx);
+  const T vc = sqrt(vcx * vcx + vsy * vsy);
+  b.fz0_prime = p.lfzo * p.fnomin_n;
+  b.dfz = (in.fz - b.fz0_prime) / b.fz0_prime;
+  b.dpi = (in.p - p.nompres_pa) / p.nompres_pa;
+  if (options.use_alpha_star) {
+    b.alpha_star = tan(in.alpha) * sgn(vcx);
+    b.gamma_star = sin(in.gamma);
+  } else {
+    b.alpha_star = in.alpha;
+    b.gamma_star = in.gamma;
+  }
+  const T vc_prime = vc + T(1e-6) * sgn_nz(vc);
+  // |Vcx/Vc'| < 1 mathematically; the clamp only absorbs rounding.
+  b.alpha_prime = acos(max_of(T(-1), min_of(T(1), vcx / vc_prime)));
+  // LMUV = 0 → LMU*_star = LMU*; A_mu = 1 → LMU*_prime = LMU*_star.
+  b.lmux_star = p.lmux;
+  b.lmuy_star = p.lmuy;
+  b.lmux_prime = b.lmux_star;
+  b.lmuy_prime = b.lmuy_star;
+  return b;
+}
+
+/// calculateFx0. Returns Fx0; writes mux and Kxk.
+template <typename T>
+T fx0(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>& b, const MfOptions& options,
+      T& mux, T& kxk) {
+  const T dfz = b.dfz;
+  const T dpi = b.dpi;
+  const T fz = in.fz;
+  T zeta1 = T(1);
+  if (options.use_turn_slip) {
+    const T bxp = p.pdxp1 * (T(1) + p.pdxp2 * dfz) * cos(atan(p.pdxp3 * in.kappa));
+    zeta1 = cos(atan(bxp * p.unloaded_radius_m * in.phi));
+  }
+  const T cx = p.pcx1 * p.lcx;
+  mux = (p.pdx1 + p.pdx2 * dfz) * (T(1) + p.ppx3 * dpi + p.ppx4 * dpi * dpi) *
+        (T(1) - p.pdx3 * in.gamma * in.gamma) * b.lmux_star;
+  if (is_zero(fz)) mux = T(0);
+  const T dx = mux * fz * zeta1;
+  kxk = fz * (p.pkx1 + p.pkx2 * dfz) * exp(p.pkx3 * dfz) *
+        (T(1) + p.ppx1 * dpi + p.ppx2 * dpi * dpi) * p.lkx;
+  const T bx = div_or(kxk, cx * dx + T(1e-6) * sgn_nz(dx), T(0));
+  T shx = (p.phx1 + p.phx2 * dfz) * p.lhx;
+  T svx = fz * (p.pvx1 + p.pvx2 * dfz) * p.lvx * b.lmux_prime * zeta1;
+  if (in.is_low_speed) {
+    svx = svx * in.reduction_smooth;
+    shx = shx * in.reduction_smooth;
+  }
+  const T kappax = in.kappa + shx;
+  T ex = (p.pex1 + p.pex2 * dfz + p.pex3 * dfz * dfz) * (T(1) - p.pex4 * sgn(kappax)) * p.lex;
+  if (options.use_limits && ex > T(1)) ex = T(1);
+  const T bk = bx * kappax;
+  T f = dx * sin(cx * atan(bk - ex * (bk - atan(bk)))) + svx;
+  if (in.vx < T(0)) f = -f;
+  return f;
+}
+
+/// calculateFy0 with the given γ (and γ*) and turn slip switch (Mz evaluates it again at γ = 0).
+template <typename T>
+Fy0Result<T> fy0(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>& b,
+                 const MfOptions& options, const T& gamma_star, bool turn_slip) {
+  Fy0Result<T> r;
+  const T dfz = b.dfz;
+  const T dpi = b.dpi;
+  const T fz = in.fz;
+  const T fz0_prime = b.fz0_prime;
+  const T r0 = p.unloaded_radius_m;
+  const T vcx = in.vx;
+  const T eps = T(1e-6);
+  const bool mf52 = p.fit_type == FitType::mf52;
+
+  T zeta2 = T(1);
+  T zeta3 = T(1);
+  if (turn_slip) {
+    zeta3 = cos(atan(p.pkyp1 * r0 * r0 * in.phi * in.phi));
+    const T byp = p.pdyp1 * (T(1) + p.pdyp2 * dfz) * cos(atan(p.pdyp3 * tan(in.alpha)));
+    const T r0phi = r0 * abs(in.phi);
+    zeta2 = cos(atan(byp * (r0phi + p.pdyp4 * sqrt(r0phi))));
+  }
+  r.zeta2 = zeta2;
+
+  const T gs2 = gamma_star * gamma_star;
+  r.kya = p.pky1 * fz0_prime * (T(1) + p.ppy1 * dpi) * (T(1) - p.pky3 * abs(gamma_star)) *
+          sin(p.pky4 * atan((fz / fz0_prime) / ((p.pky2 + p.pky5 * gs2) * (T(1) + p.ppy2 * dpi)))) *
+          zeta3 * p.lky;
+  const T svyg = fz * (p.pvy3 + p.pvy4 * dfz) * gamma_star * p.lkyc * b.lmuy_prime * zeta2;
+  if (mf52) {
+    const T kya0 = p.pky1 * fz0_prime * sin(p.pky4 * atan(fz / (p.pky2 * fz0_prime))) * p.lkyc;
+    r.kyg0 = (p.phy3 * kya0 + fz * (p.pvy3 + p.pvy4 * dfz)) * p.lkyc;
+  } else {
+    r.kyg0 = fz * (p.pky6 + p.pky7 * dfz) * (T(1) + p.ppy5 * dpi) * p.lkyc;
+  }
+
+  T zeta0 = T(1);
+  T zeta4 = T(1);
+  if (turn_slip) {
+    const T kya0 = p.pky1 * fz0_prime * (T(1) + p.ppy1 * dpi) *
+                   sin(p.pky4 * atan((fz / fz0_prime) / (p.pky2 * (T(1) + p.ppy2 * dpi)))) * zeta3 *
+                   p.lky;
+    const T kya_prime = r.kya + eps * sgn_nz(r.kya);
+    const T kyao_prime = kya0 + eps * sgn_nz(kya0);
+    const T chyp = p.phyp1;
+    const T dhyp = (p.phyp2 + p.phyp3 * dfz) * sgn(vcx);
+    T ehyp = p.phyp4;
+    if (options.use_limits && ehyp > T(1)) ehyp = T(1);
+    const T kyrp0 = div_or(r.kyg0, T(1) - in.epsilong, T(0));
+    const T bhyp = div_or(kyrp0, chyp * dhyp * kyao_prime, T(0));
+    const T x = bhyp * r0 * in.phi;
+    const T shyp = dhyp * sin(chyp * atan(x - ehyp * (x - atan(x)))) * sgn(vcx);
+    zeta0 = T(0);
+    zeta4 = T(1) + shyp - svyg / kya_prime;
+  }
+
+  if (mf52) {
+    r.shy = (p.phy1 + p.phy2 * dfz) * p.lhy + p.phy3 * gamma_star * p.lkyc;
+  } else {
+    r.shy = (p.phy1 + p.phy2 * dfz) * p.lhy +
+            ((r.kyg0 * gamma_star - svyg) / (r.kya + eps * sgn_nz(r.kya))) * zeta0 + zeta4 - T(1);
+  }
+  r.svy = fz * (p.pvy1 + p.pvy2 * dfz) * p.lvy * b.lmuy_prime * zeta2 + svyg;
+  if (in.is_low_speed) {
+    r.svy = r.svy * in.reduction_smooth;
+    r.shy = r.shy * in.reduction_smooth;
+  }
+  const T alphay = b.alpha_star + r.shy;
+  r.cy = p.pcy1 * p.lcy;
+  r.muy = (p.pdy1 + p.pdy2 * dfz) * (T(1) + p.ppy3 * dpi + p.ppy4 * dpi * dpi) *
+          (T(1) - p.pdy3 * gs2) * b.lmuy_star;
+  const T dy = r.muy * fz * zeta2;
+  T ey = (p.pey1 + p.pey2 * dfz) *
+         (T(1) + p.pey5 * gs2 - (p.pey3 + p.pey4 * gamma_star) * sgn_nz(alphay)) * p.ley;
+  if (options.use_limits && ey > T(1)) ey = T(1);
+  r.by = div_or(r.kya, r.cy * dy + eps * sgn_nz(dy), T(0));
+  const T ba = r.by * alphay;
+  r.fy0 = dy * sin(r.cy * atan(ba - ey * (ba - atan(ba)))) + r.svy;
+  if (options.use_alpha_star && vcx < T(0)) r.fy0 = -r.fy0;
+  if (is_zero(fz)) r.muy = T(0);
+  return r;
+}
+
+/// calculateFy (combined): returns Gyk; writes SVyk (after the low-speed reduction).
+template <typename T>
+T gyk_svyk(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>& b,
+           const MfOptions& options, const T& muy, const T& zeta2, T& svyk) {
+  const T dfz = b.dfz;
+  const T dvyk = muy * in.fz * (p.rvy1 + p.rvy2 * dfz + p.rvy3 * b.gamma_star) *
+                 cos(atan(p.rvy4 * b.alpha_star)) * zeta2;
+  svyk = dvyk * sin(p.rvy5 * atan(p.rvy6 * in.kappa)) * p.lvyka;
+  const T shyk = p.rhy1 + p.rhy2 * dfz;
+  T eyk = p.rey1 + p.rey2 * dfz;
+  if (options.use_limits && eyk > T(1)) eyk = T(1);
+  const T cyk = p.rcy1;
+  const T byk = (p.rby1 + p.rby4 * b.gamma_star * b.gamma_star) *
+                cos(atan(p.rby2 * (b.alpha_star - p.rby3))) * p.lyka;
+  const T kappas = in.kappa + shyk;
+  const T s0 = byk * shyk;
+  const T gyk0 = cos(cyk * atan(s0 - eyk * (s0 - atan(s0))));
+  const T s1 = byk * kappas;
+  const T gyk = div_or(cos(cyk * atan(s1 - eyk * (s1 - atan(s1)))), gyk0, T(1));
+  if (in.is_low_speed) svyk = svyk * in.reduction_smooth;
+  return gyk;
+}
+
+/// calculateFx (combined): Gxa.
+template <typename T>
+T gxa(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>& b,
+      const MfOptions& options) {
+  const T cxa = p.rcx1;
+  T exa = p.rex1 + p.rex2 * b.dfz;
+  if (options.use_limits && exa > T(1)) exa = T(1);
+  const T shxa = p.rhx1;
+  const T bxa =
+      (p.rbx1 + p.rbx3 * b.gamma_star * b.gamma_star) * cos(atan(p.rbx2 * in.kappa)) * p.lxal;
+  const T alphas = b.alpha_star + shxa;
+  const T s0 = bxa * shxa;
+  const T gxa0 = cos(cxa * atan(s0 - exa * (s0 - atan(s0))));
+  const T s1 = bxa * alphas;
+  return div_or(cos(cxa * atan(s1 - exa * (s1 - atan(s1)))), gxa0, T(1));
+}
+
+/// calculateMx.
+template <typename T>
+T mx(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>& b, const T& fy) {
+  T fz = in.fz;
+  if (fz < p.fzmin_n) fz = fz * (fz / p.fzmin_n) * (fz / p.fzmin_n);
+  const T fz0 = p.fnomin_n;
+  const T g = in.gamma;
+  return p.unloaded_radius_m * fz * p.lmx *
+             (p.qsx1 * p.lvmx - p.qsx2 * g * (T(1) + p.ppmx1 * b.dpi) - p.qsx12 * g * abs(g) +
+              p.qsx3 * fy / fz0 +
+              p.qsx4 * cos(p.qsx5 * atan((p.qsx6 * fz / fz0) * (p.qsx6 * fz / fz0))) *
+                  sin(p.qsx7 * g + p.qsx8 * atan(p.qsx9 * fy / fz0)) +
+              p.qsx10 * atan(p.qsx11 * fz / fz0) * g) +
+         p.unloaded_radius_m * fy * p.lmx * (p.qsx13 + p.qsx14 * abs(g));
+}
+
+/// calculateMy.
+template <typename T>
+T my(const MfParameters<T>& p, const Prepared<T>& in, const T& fx) {
+  T fz = in.ufz;
+  if (fz < p.fzmin_n) fz = fz * (fz / p.fzmin_n);
+  const T vcx = in.vx;
+  if (is_zero(vcx)) return T(0);
+  const T kappa = in.ukappa;
+  const T fz0 = p.fnomin_n;
+  const T r0 = p.unloaded_radius_m;
+  const T v = vcx / p.longvl_mps;
+  const T v2 = v * v;
+  T m;
+  if (p.fit_type == FitType::mf52) {
+    m = -r0 * fz * p.lmy * (p.qsy1 + p.qsy2 * (fx / fz0) + p.qsy3 * abs(v) + p.qsy4 * v2 * v2);
+  } else {
+    const T fz_ratio = fz / fz0;
+    const T load = fz_ratio > T(0) ? pow(fz_ratio, p.qsy7) : T(0);
+    m = -r0 * fz0 * p.lmy *
+        (p.qsy1 + p.qsy2 * (fx / fz0) + p.qsy3 * abs(v) + p.qsy4 * v2 * v2 +
+         (p.qsy5 + p.qsy6 * fz_ratio) * in.gamma * in.gamma) *
+        (load * pow(in.p / p.nompres_pa, p.qsy8));
+  }
+  if (vcx < T(0)) m = -m;
+  // Low-speed model ("empirically discovered").
+  const T high_limit = p.vxlow_mps / abs(vcx) - T(1);
+  const T low_limit = T(-1) - p.vxlow_mps - high_limit;
+  if (!(kappa < low_limit) && !(kappa > high_limit)) {
+    // interpolate((−1, 0), (high_limit, π/2)) at κ
+    const T reduction = (pi<T>() / T(2)) * (kappa + T(1)) / (high_limit + T(1));
+    m = m * sin(reduction);
+  }
+  if (kappa < low_limit) m = -m;
+  return m;
+}
+
+/// MF 6.2 vertical force for a loaded radius (calculateFz62). Writes the deflection.
+template <typename T>
+T fz62(const MfParameters<T>& p, const T& gamma, const T& omega, const T& romega, const T& dpi,
+       const T& rl, const T& fx, const T& fy, T& rho_z) {
+  const T r0 = p.unloaded_radius_m;
+  const T fz0 = p.fnomin_n;
+  const T a = p.vertical_stiffness_npm * r0 / fz0;
+  const T q_fz1 = sqrt(max_of(T(0), a * a - T(4) * p.q_fz2));
+  const T ratio = rl / romega;
+  const T sfyg = (p.q_fys1 + p.q_fys2 * ratio + p.q_fys3 * ratio * ratio) * gamma;
+  const T rho_zfr = max_of(romega - rl, T(0));
+  const T rtw = (T(1.075) - T(0.5) * p.aspect_ratio) * p.width_m;
+  const T num = (p.q_cam1 * rl + p.q_cam2 * rl * rl) * gamma;
+  const T den = (p.q_cam1 * romega + p.q_cam2 * romega * romega) * gamma;
+  // MFeval: NaN (0/0 at γ = 0 or Q_CAM1 = Q_CAM2 = 0) → 0.
+  T rho_zg = T(0);
+  if (!is_zero(den)) rho_zg = (num * num) * (rtw / T(8)) * abs(tan(gamma)) / (den * den);
+  rho_zg = rho_zg - p.q_cam3 * rho_zfr * abs(gamma);
+  rho_z = max_of(rho_zfr + rho_zg, T(0));
+  const T rho_r0 = rho_z / r0;
+  const T fcx = p.q_fcx * fx / fz0;
+  const T rho_pow = rho_r0 > T(0) ? pow(rho_r0, p.q_fcy2) : (is_zero(p.q_fcy2) ? T(1) : T(0));
+  const T fcy = rho_pow * (p.q_fcy * (fy - sfyg) / fz0);
+  const T fcorr = (T(1) + p.q_v2 * (r0 / p.longvl_mps) * abs(omega) - fcx * fcx - fcy * fcy) *
+                  (T(1) + p.pfz1 * dpi);
+  return fcorr * (q_fz1 * rho_r0 + p.q_fz2 * rho_r0 * rho_r0) * fz0;
+}
+
+}  // namespace detail
+
+/// One steady-state evaluation. Never allocates, never throws; finite inputs give finite outputs.
+template <typename T>
+MfOutput<T> evaluate(const MfParameters<T>& params, const MfInput<T>& input,
+                     const MfOptions& options) {
+  using namespace detail;  // NOLINT(google-build-using-namespace): the maths helpers and ADL
+  const MfParameters<T>& p = params;
+
+  // TYRESIDE mirroring: y → −y.
+  bool mirror = false;
+  if (options.side == MountedSide::left) mirror = p.tyre_side == TyreSide::right;
+  if (options.side == MountedSide::right) mirror = p.tyre_side == TyreSide::left;
+  MfInput<T> in_raw = input;
+  if (mirror) {
+    in_raw.alpha_rad = -in_raw.alpha_rad;
+    in_raw.gamma_rad = -in_raw.gamma_rad;
+    in_raw.phit_1pm = -in_raw.phit_1pm;
+  }
+
+  const Prepared<T> in = prepare(p, in_raw, options);
+  const Basic<T> b = basic(p, in, options);
+
+  MfOutput<T> out;
+  out.status = in.status;
+
+  T mux = T(0);
+  T kxk = T(0);
+  const T fx_pure = fx0(p, in, b, options, mux, kxk);
+  const Fy0Result<T> y0 = fy0(p, in, b, options, b.gamma_star, options.use_turn_slip);
+
+  // Combined slip.
+  const T fx = gxa(p, in, b, options) * fx_pure;
+  T svyk = T(0);
+  const T gyk = gyk_svyk(p, in, b, options, y0.muy, y0.zeta2, svyk);
+  const T fy = gyk * y0.fy0 + svyk;
+
+  // Aligning moment: calculateMz0's trail and residual-moment coefficients.
+  const T r0 = p.unloaded_radius_m;
+  const T eps = T(1e-6);
+  T fz_mz = in.fz;
+  if (options.use_limits) fz_mz = in.fz > T(0) ? in.fz_low_limit : T(0);
+  const T dfz = b.dfz;
+  const T dpi = b.dpi;
+  const T gs = b.gamma_star;
+  const T g = in.gamma;
+  const T sht = p.qhz1 + p.qhz2 * dfz + (p.qhz3 + p.qhz4 * dfz) * gs;
+  const T kya_prime = y0.kya + eps * sgn_nz(y0.kya);
+  const T shf = y0.shy + y0.svy / kya_prime;
+  const T alphar = b.alpha_star + shf;
+  const T alphat = b.alpha_star + sht;
+  T zeta5 = T(1);
+  if (options.use_turn_slip) zeta5 = cos(atan(p.qdtp1 * r0 * in.phi));
+  const T dt = (p.qdz1 + p.qdz2 * dfz) * (T(1) - p.ppz1 * dpi) *
+               (T(1) + p.qdz3 * g + p.qdz4 * g * g) * fz_mz * (r0 / b.fz0_prime) * p.ltr * zeta5;
+  const T bt = (p.qbz1 + p.qbz2 * dfz + p.qbz3 * dfz * dfz) *
+               (T(1) + p.qbz4 * g + p.qbz5 * abs(g)) * p.lky / b.lmuy_star;
+  const T ct = p.qcz1;
+  T et = (p.qez1 + p.qez2 * dfz + p.qez3 * dfz * dfz) *
+         (T(1) + (p.qez4 + p.qez5 * gs) * (T(2) / pi<T>()) * atan(bt * ct * alphat));
+  if (options.use_limits && et > T(1)) et = T(1);
+
+  T zeta0 = T(1), zeta2 = T(1), zeta6 = T(1), zeta7 = T(1), zeta8 = T(1);
+  if (options.use_turn_slip) {
+    zeta0 = T(0);
+    zeta2 = y0.zeta2;
+    zeta6 = cos(atan(p.qbrp1 * r0 * in.phi));
+    T mzp_inf = p.qcrp1 * abs(y0.muy) * r0 * fz_mz * sqrt(fz_mz / b.fz0_prime) * p.lmp;
+    if (mzp_inf < T(0)) mzp_inf = T(1e-6);
+    const T cdrp = p.qdrp1;
+    const T ddrp = div_or(mzp_inf, sin(T(0.5) * pi<T>() * cdrp), T(0));
+    const T kzgr0 =
+        fz_mz * r0 * (p.qdz8 * p.qdz9 * dfz + (p.qdz10 + p.qdz11 * dfz * abs(g))) * p.lkzc;
+    const T bdrp = div_or(kzgr0, cdrp * ddrp * (T(1) - in.epsilong), T(0));
+    const T drp = ddrp * sin(cdrp * atan(bdrp * r0 * in.phit));
+    const T mzp90 = mzp_inf * (T(2) / pi<T>()) * atan(p.qcrp2 * r0 * abs(in.phit)) * gyk;
+    // MFeval: acos(Mzp90/|Drp|), NaN for a ratio above 1 (e.g. 0/0 at φt = 0). Here the ratio
+    // is clamped to [−1, 1], and Drp = 0 gives the turn-slip-free Cr = 1.
+    if (is_zero(drp)) {
+      zeta7 = T(1);
+    } else {
+      const T ratio = max_of(T(-1), min_of(T(1), mzp90 / abs(drp)));
+      zeta7 = (T(2) / pi<T>()) * acos(ratio);
+    }
+    zeta8 = T(1) + drp;
+  }
+  const T dr =
+      fz_mz * r0 *
+          ((p.qdz6 + p.qdz7 * dfz) * p.lres * zeta2 +
+           ((p.qdz8 + p.qdz9 * dfz) * (T(1) + p.ppz2 * dpi) + (p.qdz10 + p.qdz11 * dfz) * abs(gs)) *
+               gs * p.lkzc * zeta0) *
+          b.lmuy_star * sgn(in.vx) * cos(b.alpha_star) +
+      zeta8 - T(1);
+  const T br = (p.qbz9 * p.lky / b.lmuy_star + p.qbz10 * y0.by * y0.cy) * zeta6;
+  const T cr = zeta7;
+
+  // calculateMz (combined).
+  const T kk = div_or(kxk, kya_prime, T(0)) * in.kappa;
+  const T tan_r = tan(alphar);
+  const T tan_t = tan(alphat);
+  const T alphar_eq = atan(sqrt(tan_r * tan_r + kk * kk)) * sgn(alphar);
+  const T alphat_eq = atan(sqrt(tan_t * tan_t + kk * kk)) * sgn(alphat);
+  const T s = r0 * (p.ssz1 + p.ssz2 * (fy / p.fnomin_n) + (p.ssz3 + p.ssz4 * dfz) * g) * p.ls;
+  T mzr = dr * cos(cr * atan(br * alphar_eq));
+  // Fy0 and Fy at γ = 0 (turn slip as in the main evaluation; Gyk with the original γ*).
+  const Fy0Result<T> y00 = fy0(p, in, b, options, T(0), options.use_turn_slip);
+  T svyk0 = T(0);
+  const T gyk0 = gyk_svyk(p, in, b, options, y00.muy, T(1), svyk0);
+  const T fy_prime = gyk0 * y00.fy0;
+  const T bta = bt * alphat_eq;
+  T t = dt * cos(ct * atan(bta - et * (bta - atan(bta)))) * cos(b.alpha_prime);
+  t = t * p.lfzo;
+  if (in.is_low_speed) {
+    t = t * in.reduction_smooth;
+    mzr = mzr * in.reduction_smooth;
+  }
+  T mz;
+  if (p.fit_type == FitType::mf52) {
+    mz = -t * (fy - svyk) + mzr + s * fx;
+  } else {
+    mz = -t * fy_prime + mzr + s * fx;
+  }
+
+  out.fx_n = fx;
+  out.fy_n = fy;
+  out.fz_n = in.ufz;
+  out.mx_nm = mx(p, in, b, fy);
+  out.my_nm = my(p, in, fx);
+  out.mz_nm = mz;
+  out.kappa = in.ukappa_low;
+  out.alpha_rad = in.ualpha;
+  out.gamma_rad = in.ugamma;
+  out.phit_1pm = in.phit;
+  out.vx_mps = in.vx;
+  out.p_pa = in.p;
+  out.t_m = t;
+  out.mux = mux;
+  out.muy = options.use_limits ? abs(y0.muy) : y0.muy;
+  out.mzr_nm = mzr;
+  out.kya_nprad = y0.kya;
+  out.kxk_n = kxk;
+
+  if (!(in.ufz > T(0))) {  // Fz ≤ 0: no contact, no forces (MFeval gives 0 there as well)
+    out.fx_n = T(0);
+    out.fy_n = T(0);
+    out.mx_nm = T(0);
+    out.my_nm = T(0);
+    out.mz_nm = T(0);
+    out.t_m = T(0);
+    out.mzr_nm = T(0);
+  }
+
+  if (options.extras) {
+    // doExtras: Re, rho, Rl, Cz.
+    out.re_m = in.re;
+    out.omega_radps = in.omega;
+    const T fz0 = p.fnomin_n;
+    if (p.fit_type == FitType::mf61) {
+      const T fz = in.fz_low_limit;
+      const T a_cz = p.vertical_stiffness_npm * r0 / fz0;
+      const T q_fz1 = sqrt(max_of(T(0), a_cz * a_cz - T(4) * p.q_fz2));
+      const T speed_effect = p.q_v2 * (r0 / p.longvl_mps) * abs(in.omega);
+      const T fx_effect = (p.q_fcx * out.fx_n / fz0) * (p.q_fcx * out.fx_n / fz0);
+      const T fy_effect = (p.q_fcy * out.fy_n / fz0) * (p.q_fcy * out.fy_n / fz0);
+      const T external =
+          (T(1) + speed_effect - fx_effect - fy_effect) * (T(1) + p.pfz1 * dpi) * fz0;
+      // Q_FZ2·x² + Q_FZ1·x − Fz/external = 0, positive root, written without cancellation.
+      const T c = div_or(fz, external, T(0));
+      const T disc = sqrt(max_of(T(0), q_fz1 * q_fz1 + T(4) * p.q_fz2 * c));
+      const T x = div_or(T(2) * c, q_fz1 + disc, T(0));
+      const T rho_zfr = max_of(x * r0, T(0));
+      out.rl_m = max_of(in.romega - rho_zfr, T(0));
+      T rho_z = rho_zfr;
+      if (is_zero(fz) || !(rho_z > T(0))) rho_z = T(1e-6);
+      out.rho_m = rho_z;
+      out.cz_npm = fz / rho_z;
+    } else {
+      // Rl with Fz62(Rl) = Fz (decreasing in Rl): bisection on [0, Romega + rtw].
+      const T fz_target = in.fz;
+      T lo = T(0);
+      T hi = in.romega + p.width_m;
+      T rho_dummy = T(0);
+      for (int i = 0; i < 80; ++i) {
+        const T mid = T(0.5) * (lo + hi);
+        const T f = fz62(p, in.gamma, in.omega, in.romega, dpi, mid, out.fx_n, out.fy_n, rho_dummy);
+        if (f > fz_target) {
+          lo = mid;
+        } else {
+          hi = mid;
+        }
+      }
+      out.rl_m = T(0.5) * (lo + hi);
+      T rho_z = T(0);
+      static_cast<void>(
+          fz62(p, in.gamma, in.omega, in.romega, dpi, out.rl_m, out.fx_n, out.fy_n, rho_z));
+      if (is_zero(in.fz) || !(rho_z > T(0))) rho_z = T(1e-6);
+      out.rho_m = rho_z;
+      out.cz_npm = in.fz / rho_z;
+    }
+
+    // calculateContactPatch.
+    {
+      const T ncz = p.vertical_stiffness_npm * (T(1) + p.pfz1 * dpi);
+      T fz = in.ufz;
+      const T rl_approx = r0 - fz / ncz;
+      if (rl_approx - (p.rim_radius_m + p.bottom_offst_m) < T(0)) {
+        fz = (r0 - p.rim_radius_m - p.bottom_offst_m) * ncz;
+      }
+      fz = max_of(fz, T(0));
+      if (p.fit_type == FitType::mf52) {
+        T q_a1 = p.q_a1;
+        T q_a2 = p.q_a2;
+        if (is_zero(q_a1) && is_zero(q_a2)) {
+          using std::log10;
+          const T y = log10(r0 * (p.vertical_stiffness_npm / fz0));
+          q_a1 = T(-0.0388) * y * y * y + T(0.2509) * y * y + T(-0.6283) * y + T(0.6279);
+          q_a2 = T(1.693) * q_a1 * q_a1;
+        }
+        out.contact_length_m = T(2) * r0 * (q_a2 * (fz / fz0) + q_a1 * sqrt(fz / fz0));
+        out.contact_width_m = p.width_m;
+      } else {
+        const T f = fz / (ncz * r0);
+        out.contact_length_m = T(2) * r0 * (p.q_ra2 * f + p.q_ra1 * sqrt(f));
+        const T cube_root = f > T(0) ? pow(f, T(1) / T(3)) : T(0);
+        out.contact_width_m = T(2) * p.width_m * (p.q_rb2 * f + p.q_rb1 * cube_root);
+      }
+    }
+
+    // calculateRelax.
+    {
+      const T dfz_r = (in.fz - b.fz0_prime) / b.fz0_prime;
+      out.cx_npm = p.longitudinal_stiffness_npm *
+                   (T(1) + p.pcfx1 * dfz_r + p.pcfx2 * dfz_r * dfz_r) * (T(1) + p.pcfx3 * dpi);
+      out.cy_npm = p.lateral_stiffness_npm * (T(1) + p.pcfy1 * dfz_r + p.pcfy2 * dfz_r * dfz_r) *
+                   (T(1) + p.pcfy3 * dpi);
+      if (p.fit_type == FitType::mf52) {
+        out.sigmax_m =
+            (p.ptx1 + p.ptx2 * dfz_r) * exp(-p.ptx3 * dfz_r) * p.lsgkp * r0 * in.fz / fz0;
+        const T sigmayg = T(1) - p.pky3 * abs(in.gamma);
+        const T ptyfzn = p.pty2 * b.fz0_prime;
+        out.sigmay_m = p.pty1 * sin(T(2) * atan(div_or(in.fz, ptyfzn, T(0)))) * sigmayg * r0 *
+                       p.lfzo * p.lsgal;
+      } else {
+        out.sigmax_m = abs(div_or(kxk, out.cx_npm, T(0)));
+        out.sigmay_m = abs(div_or(y0.kya, out.cy_npm, T(0)));
+      }
+    }
+  }
+
+  if (mirror) {
+    out.fy_n = -out.fy_n;
+    out.mx_nm = -out.mx_nm;
+    out.mz_nm = -out.mz_nm;
+    out.mzr_nm = -out.mzr_nm;
+    out.alpha_rad = -out.alpha_rad;
+    out.gamma_rad = -out.gamma_rad;
+    out.phit_1pm = -out.phit_1pm;
+  }
+  return out;
+}
+
+}  // namespace tread::mf
