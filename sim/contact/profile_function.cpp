@@ -1,0 +1,136 @@
+#include "contact/profile_function.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace tread::contact {
+
+ProfileFunction::ProfileFunction(const profile::SampledProfile& profile)
+    : name_(profile.name), y_mm_(profile.y_mm), z_mm_(profile.z_mm) {
+  const std::string who = "profile '" + name_ + "': ";
+  if (y_mm_.size() != z_mm_.size()) {
+    throw std::invalid_argument(who + "y_mm and z_mm differ in size");
+  }
+  if (y_mm_.size() < 2) {
+    throw std::invalid_argument(who + "needs at least 2 points");
+  }
+  for (std::size_t i = 0; i < y_mm_.size(); ++i) {
+    if (!std::isfinite(y_mm_[i]) || !std::isfinite(z_mm_[i])) {
+      throw std::invalid_argument(who + "point " + std::to_string(i) + " is not finite");
+    }
+    if (i > 0 && !(y_mm_[i] > y_mm_[i - 1])) {
+      throw std::invalid_argument(who + "y is not strictly increasing at point " +
+                                  std::to_string(i) + " (y = " + std::to_string(y_mm_[i]) + ")");
+    }
+  }
+}
+
+std::size_t ProfileFunction::segment(double y_mm) const {
+  const auto it = std::upper_bound(y_mm_.begin(), y_mm_.end(), y_mm);
+  if (it == y_mm_.begin()) {
+    return 0;
+  }
+  const auto i = static_cast<std::size_t>(it - y_mm_.begin()) - 1;
+  return std::min(i, y_mm_.size() - 2);
+}
+
+double ProfileFunction::z_at(double y_mm) const {
+  const double y = std::clamp(y_mm, y_mm_.front(), y_mm_.back());
+  const std::size_t i = segment(y);
+  const double t = (y - y_mm_[i]) / (y_mm_[i + 1] - y_mm_[i]);
+  return z_mm_[i] + t * (z_mm_[i + 1] - z_mm_[i]);
+}
+
+double ProfileFunction::slope_at(double y_mm, double half_window_mm) const {
+  const double y = std::clamp(y_mm, y_mm_.front(), y_mm_.back());
+  const std::size_t seg = segment(y);
+  std::size_t lo = seg;
+  std::size_t hi = seg + 1;
+  while (lo > 0 && y_mm_[lo - 1] >= y - half_window_mm) {
+    --lo;
+  }
+  while (hi + 1 < y_mm_.size() && y_mm_[hi + 1] <= y + half_window_mm) {
+    ++hi;
+  }
+  // Least-squares line through samples lo..hi, centred on y for conditioning.
+  double sx = 0.0;
+  double sz = 0.0;
+  const auto n = static_cast<double>(hi - lo + 1);
+  for (std::size_t i = lo; i <= hi; ++i) {
+    sx += y_mm_[i] - y;
+    sz += z_mm_[i];
+  }
+  const double mx = sx / n;
+  const double mz = sz / n;
+  double sxx = 0.0;
+  double sxz = 0.0;
+  for (std::size_t i = lo; i <= hi; ++i) {
+    const double dx = y_mm_[i] - y - mx;
+    sxx += dx * dx;
+    sxz += dx * (z_mm_[i] - mz);
+  }
+  return sxz / sxx;
+}
+
+profile::SampledProfile smooth_profile(const profile::SampledProfile& profile,
+                                       double half_window_mm) {
+  const ProfileFunction checked(profile);  // validates
+  if (!(half_window_mm > 0.0)) {
+    return profile;
+  }
+  const auto& y = profile.y_mm;
+  const auto& z = profile.z_mm;
+  const std::size_t n = y.size();
+  profile::SampledProfile out{profile.name, y, std::vector<double>(n)};
+  std::size_t lo = 0;
+  std::size_t hi = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    while (y[lo] < y[i] - half_window_mm) {
+      ++lo;
+    }
+    while (hi + 1 < n && y[hi + 1] <= y[i] + half_window_mm) {
+      ++hi;
+    }
+    std::size_t a = lo;
+    std::size_t b = hi;
+    while (b - a + 1 < 5 && (a > 0 || b + 1 < n)) {  // at least 5 samples
+      if (a > 0) {
+        --a;
+      }
+      if (b - a + 1 < 5 && b + 1 < n) {
+        ++b;
+      }
+    }
+    if (b - a + 1 < 3) {
+      out.z_mm[i] = z[i];
+      continue;
+    }
+    // Quadratic z = c0 + c1 d + c2 d^2 in d = y - y_i; out = c0 (Cramer's rule on the normal eqs).
+    double m0 = 0, m1 = 0, m2 = 0, m3 = 0, m4 = 0, r0 = 0, r1 = 0, r2 = 0;
+    for (std::size_t k = a; k <= b; ++k) {
+      const double d = y[k] - y[i];
+      const double d2 = d * d;
+      m0 += 1.0;
+      m1 += d;
+      m2 += d2;
+      m3 += d2 * d;
+      m4 += d2 * d2;
+      r0 += z[k];
+      r1 += z[k] * d;
+      r2 += z[k] * d2;
+    }
+    const double det =
+        m0 * (m2 * m4 - m3 * m3) - m1 * (m1 * m4 - m3 * m2) + m2 * (m1 * m3 - m2 * m2);
+    if (!(std::abs(det) > 0.0)) {
+      out.z_mm[i] = z[i];
+      continue;
+    }
+    out.z_mm[i] =
+        (r0 * (m2 * m4 - m3 * m3) - m1 * (r1 * m4 - m3 * r2) + m2 * (r1 * m3 - m2 * r2)) / det;
+  }
+  return out;
+}
+
+}  // namespace tread::contact
