@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <linux/can.h>
+#include <linux/can/error.h>
 #include <linux/can/raw.h>
 #include <net/if.h>
 #include <sys/socket.h>
@@ -70,7 +71,11 @@ Status SocketCanBus::open(std::string_view interface_name, bool enable_fd) {
     }
   }
   const int on = 1;
-  if (::setsockopt(fd_, SOL_SOCKET, SO_TIMESTAMPNS, &on, sizeof(on)) != 0) {
+  const can_err_mask_t err_mask = CAN_ERR_BUSOFF | CAN_ERR_CRTL | CAN_ERR_RESTARTED |
+                                  CAN_ERR_TX_TIMEOUT | CAN_ERR_PROT | CAN_ERR_ACK;
+  if (::setsockopt(fd_, SOL_SOCKET, SO_TIMESTAMPNS, &on, sizeof(on)) != 0 ||
+      ::setsockopt(fd_, SOL_SOCKET, SO_RXQ_OVFL, &on, sizeof(on)) != 0 ||
+      ::setsockopt(fd_, SOL_CAN_RAW, CAN_RAW_ERR_FILTER, &err_mask, sizeof(err_mask)) != 0) {
     last_errno_ = errno;
     close();
     return Status::io_error;
@@ -88,6 +93,37 @@ Status SocketCanBus::open(std::string_view interface_name, bool enable_fd) {
   return Status::ok;
 }
 
+Status SocketCanBus::set_receive_buffer(int bytes) {
+  if (fd_ < 0 || ::setsockopt(fd_, SOL_SOCKET, SO_RCVBUF, &bytes, sizeof(bytes)) != 0) {
+    last_errno_ = errno;
+    return Status::io_error;
+  }
+  return Status::ok;
+}
+
+Status SocketCanBus::set_filters(std::span<const CanIdFilter> filters) {
+  if (fd_ < 0) {
+    return Status::io_error;
+  }
+  constexpr std::size_t kMaxFilters = 64;
+  if (filters.size() > kMaxFilters) {
+    return Status::invalid_argument;
+  }
+  can_filter raw[kMaxFilters]{};
+  for (std::size_t i = 0; i < filters.size(); ++i) {
+    const std::uint32_t flag = filters[i].extended ? CAN_EFF_FLAG : 0U;
+    raw[i].can_id = filters[i].id | flag;
+    // Match the frame format too, so an 11-bit filter does not pass 29-bit frames.
+    raw[i].can_mask = filters[i].mask | CAN_EFF_FLAG | CAN_RTR_FLAG;
+  }
+  const auto size = static_cast<socklen_t>(filters.size() * sizeof(can_filter));
+  if (::setsockopt(fd_, SOL_CAN_RAW, CAN_RAW_FILTER, filters.empty() ? nullptr : raw, size) != 0) {
+    last_errno_ = errno;
+    return Status::io_error;
+  }
+  return Status::ok;
+}
+
 Status SocketCanBus::send(const proto::CanFrame& frame) {
   if (fd_ < 0) {
     return Status::io_error;
@@ -96,6 +132,9 @@ Status SocketCanBus::send(const proto::CanFrame& frame) {
   raw.can_id = frame.id & (frame.extended ? CAN_EFF_MASK : CAN_SFF_MASK);
   if (frame.extended) {
     raw.can_id |= CAN_EFF_FLAG;
+  }
+  if (frame.error) {  // error-frame injection (vcan echoes it to every reader, like canerrsim)
+    raw.can_id = CAN_ERR_FLAG | (frame.id & CAN_ERR_MASK);
   }
   std::size_t size = CAN_MTU;
   if (frame.fd) {
@@ -148,12 +187,26 @@ Status SocketCanBus::receive(proto::CanFrame& frame) {
   frame.fd = static_cast<std::size_t>(got) == CANFD_MTU;
   frame.extended = (raw.can_id & CAN_EFF_FLAG) != 0U;
   frame.error = (raw.can_id & CAN_ERR_FLAG) != 0U;
-  frame.id = raw.can_id & (frame.extended ? CAN_EFF_MASK : CAN_SFF_MASK);
+  frame.id = raw.can_id & (frame.extended || frame.error ? CAN_EFF_MASK : CAN_SFF_MASK);
+  if (frame.error) {
+    frame.extended = false;
+    frame.id = raw.can_id & CAN_ERR_MASK;
+    ++error_frames_;
+    if ((frame.id & CAN_ERR_BUSOFF) != 0U) {
+      bus_off_ = true;
+    }
+    if ((frame.id & CAN_ERR_RESTARTED) != 0U) {
+      bus_off_ = false;
+    }
+  }
   frame.bit_rate_switch = frame.fd && (raw.flags & CANFD_BRS) != 0U;
   frame.len = std::min<std::uint8_t>(raw.len, frame.fd ? proto::kFdMaxLen : proto::kClassicMaxLen);
   std::copy_n(raw.data, frame.len, frame.data.begin());
 
   for (cmsghdr* c = CMSG_FIRSTHDR(&message); c != nullptr; c = CMSG_NXTHDR(&message, c)) {
+    if (c->cmsg_level == SOL_SOCKET && c->cmsg_type == SO_RXQ_OVFL) {
+      std::memcpy(&rx_overflows_, CMSG_DATA(c), sizeof(rx_overflows_));
+    }
     if (c->cmsg_level == SOL_SOCKET && c->cmsg_type == SO_TIMESTAMPNS) {
       timespec ts{};
       std::memcpy(&ts, CMSG_DATA(c), sizeof(ts));

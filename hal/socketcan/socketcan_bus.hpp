@@ -2,6 +2,7 @@
 // SocketCAN raw socket: classic and FD frames, non-blocking, kernel receive timestamps.
 
 #include <cstdint>
+#include <span>
 #include <string_view>
 
 #include "core/status.hpp"
@@ -9,6 +10,15 @@
 
 namespace tread::hal {
 
+/// A kernel receive filter: a frame passes when (received_id & mask) == (id & mask).
+struct CanIdFilter {
+  std::uint32_t id;
+  std::uint32_t mask;
+  bool extended{false};
+};
+
+/// SocketCAN raw socket. Satisfies hal::CanBus. Error frames (bus-off, controller problems,
+/// restarted, TX timeout) are delivered as frames with `error = true` and the error class in `id`.
 class SocketCanBus {
  public:
   SocketCanBus() = default;
@@ -26,6 +36,10 @@ class SocketCanBus {
   /// @retval Status::io_error      any other refusal; `last_errno()` tells which
   Status open(std::string_view interface_name, bool enable_fd);
 
+  /// Installs kernel ID filters (CAN_RAW_FILTER); an empty span receives nothing but error frames.
+  /// @retval Status::io_error  setsockopt refused
+  Status set_filters(std::span<const CanIdFilter> filters);
+
   /// Sends one frame without blocking.
   /// @retval Status::would_block   the socket buffer is full (ENOBUFS/EAGAIN); counted, frame
   /// dropped
@@ -35,10 +49,17 @@ class SocketCanBus {
   /// @retval Status::would_block   nothing queued
   Status receive(proto::CanFrame& frame);
 
+  /// Sets SO_RCVBUF (bytes); small values make receive-overflow counting observable in tests.
+  Status set_receive_buffer(int bytes);
+
   [[nodiscard]] bool is_open() const noexcept { return fd_ >= 0; }
   [[nodiscard]] int native_handle() const noexcept { return fd_; }
   [[nodiscard]] int last_errno() const noexcept { return last_errno_; }
   [[nodiscard]] std::uint64_t tx_dropped() const noexcept { return tx_dropped_; }
+  /// Frames the kernel dropped because this socket's receive queue was full (SO_RXQ_OVFL).
+  [[nodiscard]] std::uint32_t rx_overflows() const noexcept { return rx_overflows_; }
+  [[nodiscard]] std::uint64_t error_frames() const noexcept { return error_frames_; }
+  [[nodiscard]] bool bus_off() const noexcept { return bus_off_; }
 
  private:
   void close() noexcept;
@@ -47,6 +68,9 @@ class SocketCanBus {
   bool fd_enabled_{false};
   int last_errno_{0};
   std::uint64_t tx_dropped_{0};
+  std::uint32_t rx_overflows_{0};
+  std::uint64_t error_frames_{0};
+  bool bus_off_{false};
 };
 
 }  // namespace tread::hal

@@ -88,6 +88,79 @@ TEST(SocketCanBusVcan, RejectsInvalidLengthsWithoutSending) {
   EXPECT_EQ(bus.send(bad), Status::invalid_argument);
 }
 
+TEST(SocketCanBusVcan, KernelFiltersPassOnlyTheRequestedIds) {
+  SocketCanBus tx;
+  SocketCanBus rx;
+  ASSERT_EQ(tx.open(kInterface, true), Status::ok);
+  ASSERT_EQ(rx.open(kInterface, true), Status::ok);
+  const CanIdFilter filters[] = {{0x100, 0x7F0}};  // 0x100..0x10F
+  ASSERT_EQ(rx.set_filters(filters), Status::ok);
+  for (const std::uint32_t id : {0x200U, 0x105U, 0x0FFU, 0x10FU}) {
+    proto::CanFrame f{};
+    f.id = id;
+    f.len = 1;
+    ASSERT_EQ(tx.send(f), Status::ok);
+  }
+  EXPECT_EQ(receive_within(rx, std::chrono::milliseconds(1000)).id, 0x105U);
+  EXPECT_EQ(receive_within(rx, std::chrono::milliseconds(1000)).id, 0x10FU);
+  proto::CanFrame none{};
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  EXPECT_EQ(rx.receive(none), Status::would_block);
+}
+
+TEST(SocketCanBusVcan, ErrorFramesAreReportedAndTrackBusOff) {
+  SocketCanBus injector;
+  SocketCanBus rx;
+  ASSERT_EQ(injector.open(kInterface, false), Status::ok);
+  ASSERT_EQ(rx.open(kInterface, false), Status::ok);
+  const CanIdFilter none[] = {{0x7FF, 0x7FF}};  // data frames of no interest
+  ASSERT_EQ(rx.set_filters(none), Status::ok);
+  proto::CanFrame err{};
+  err.error = true;
+  err.id = 0x040;  // CAN_ERR_BUSOFF
+  err.len = 8;
+  ASSERT_EQ(injector.send(err), Status::ok);
+  const proto::CanFrame got = receive_within(rx, std::chrono::milliseconds(1000));
+  EXPECT_TRUE(got.error);
+  EXPECT_EQ(got.id & 0x040U, 0x040U);
+  EXPECT_TRUE(rx.bus_off());
+  err.id = 0x100;  // CAN_ERR_RESTARTED
+  ASSERT_EQ(injector.send(err), Status::ok);
+  static_cast<void>(receive_within(rx, std::chrono::milliseconds(1000)));
+  EXPECT_FALSE(rx.bus_off());
+  EXPECT_EQ(rx.error_frames(), 2U);
+}
+
+TEST(SocketCanBusVcan, ReceiveQueueOverflowIsCounted) {
+  SocketCanBus tx;
+  SocketCanBus rx;
+  ASSERT_EQ(tx.open(kInterface, false), Status::ok);
+  ASSERT_EQ(rx.open(kInterface, false), Status::ok);
+  ASSERT_EQ(rx.set_receive_buffer(1024), Status::ok);  // the kernel doubles it; a few frames fit
+  proto::CanFrame f{};
+  f.id = 0x321;
+  f.len = 8;
+  int sent = 0;
+  for (int i = 0; i < 2000; ++i) {
+    if (tx.send(f) == Status::ok) {
+      ++sent;
+    }
+  }
+  ASSERT_GT(sent, 100);
+  proto::CanFrame got{};
+  int received = 0;
+  while (rx.receive(got) == Status::ok) {
+    ++received;
+  }
+  EXPECT_LT(received, sent);
+  // The kernel stamps the drop count on frames queued after the drops: one more frame carries it.
+  ASSERT_EQ(tx.send(f), Status::ok);
+  ASSERT_EQ(receive_within(rx, std::chrono::milliseconds(1000)).id, 0x321U);
+  EXPECT_EQ(static_cast<std::uint64_t>(received) + rx.rx_overflows(),
+            static_cast<std::uint64_t>(sent))
+      << "sent " << sent << " received " << received;
+}
+
 TEST(SocketCanBusVcan, UnknownInterfaceIsAClearError) {
   SocketCanBus bus;
   EXPECT_EQ(bus.open("nosuchcan7", false), Status::invalid_argument);

@@ -1,0 +1,39 @@
+#pragma once
+// What the real-time loop needs from its edges, as C++20 concepts (checked at compile time, no
+// virtual dispatch on the hot path). Backends: socketcan/, gpiod/, posix/, stub/.
+
+#include <concepts>
+#include <cstdint>
+
+#include "core/status.hpp"
+#include "proto/can_frame.hpp"
+
+namespace tread::hal {
+
+/// A CAN endpoint: non-blocking send and receive.
+template <typename B>
+concept CanBus = requires(B bus, const proto::CanFrame& out, proto::CanFrame& in) {
+  { bus.send(out) } -> std::same_as<Status>;    // Status::would_block when the queue is full
+  { bus.receive(in) } -> std::same_as<Status>;  // Status::would_block when nothing is queued
+};
+
+/// Monotonic time in nanoseconds and absolute sleeps.
+template <typename C>
+concept Clock = requires(C clock, std::int64_t deadline_ns) {
+  { clock.now_ns() } -> std::same_as<std::int64_t>;
+  { clock.sleep_until_ns(deadline_ns) } -> std::same_as<Status>;
+};
+
+/// A digital output (cycle or fault pin).
+template <typename P>
+concept OutputPin = requires(P pin, bool level) {
+  { pin.set(level) } -> std::same_as<Status>;
+};
+
+/// A pin that does nothing: the loop runs without a cycle pin.
+struct NoPin {
+  Status set(bool /*level*/) noexcept { return Status::ok; }
+};
+static_assert(OutputPin<NoPin>);
+
+}  // namespace tread::hal

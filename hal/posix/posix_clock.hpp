@@ -1,0 +1,18 @@
+#pragma once
+// CLOCK_MONOTONIC time and absolute sleeps (clock_nanosleep with TIMER_ABSTIME: no drift).
+
+#include <cstdint>
+
+#include "core/status.hpp"
+
+namespace tread::hal {
+
+class PosixClock {
+ public:
+  [[nodiscard]] std::int64_t now_ns() const noexcept;
+  /// Sleeps until the absolute CLOCK_MONOTONIC deadline; retries on EINTR.
+  /// @retval Status::io_error  clock_nanosleep failed otherwise
+  Status sleep_until_ns(std::int64_t deadline_ns) noexcept;
+};
+
+}  // namespace tread::hal
