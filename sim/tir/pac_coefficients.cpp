@@ -1,0 +1,118 @@
+#include "tir/pac_coefficients.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace tread::tir {
+
+namespace {
+
+constexpr const char* kLat = "LATERAL_COEFFICIENTS";
+constexpr const char* kLon = "LONGITUDINAL_COEFFICIENTS";
+constexpr const char* kAli = "ALIGNING_COEFFICIENTS";
+
+template <std::size_t N>
+void read_set(const TirFile& f, const char* section, char letter, std::array<double, N>& out,
+              std::vector<std::string>& missing) {
+  for (std::size_t i = 0; i < N; ++i) {
+    const std::string key = std::string(1, letter) + std::to_string(i);
+    if (const auto v = f.number(section, key)) {
+      out[i] = *v;
+    } else {
+      out[i] = 0.0;
+      missing.push_back(std::string(section) + "." + key);
+    }
+  }
+}
+
+template <std::size_t N>
+void write_set(TirFile& f, const char* section, char letter, const std::array<double, N>& in) {
+  for (std::size_t i = 0; i < N; ++i) {
+    f.set(section, std::string(1, letter) + std::to_string(i), in[i]);
+  }
+}
+
+double optional_any(const TirFile& f, const char* key, std::vector<std::string>& missing) {
+  if (const auto v = f.number_any(key)) return *v;
+  missing.emplace_back(key);
+  return 0.0;
+}
+
+}  // namespace
+
+PacCoefficients pac_from_tir(const TirFile& file) {
+  PacCoefficients out;
+  read_set(file, kLat, 'A', out.params.a, out.missing);
+  read_set(file, kLon, 'B', out.params.b, out.missing);
+  read_set(file, kAli, 'C', out.params.c, out.missing);
+  out.params.unloaded_radius_m = optional_any(file, "UNLOADED_RADIUS", out.missing);
+  out.params.rolling_resistance = optional_any(file, "ROLLING_RESISTANCE", out.missing);
+  out.params.lateral_stiffness_npm = optional_any(file, "LATERAL_STIFFNESS", out.missing);
+  return out;
+}
+
+void pac_to_tir(const pac::PacParams<double>& p, TirFile& file) {
+  write_set(file, kLat, 'A', p.a);
+  write_set(file, kLon, 'B', p.b);
+  write_set(file, kAli, 'C', p.c);
+  file.set("DIMENSION", "UNLOADED_RADIUS", p.unloaded_radius_m);
+  file.set("PAC_EXTRA", "ROLLING_RESISTANCE", p.rolling_resistance);
+  file.set("PAC_EXTRA", "LATERAL_STIFFNESS", p.lateral_stiffness_npm);
+}
+
+PacCoefficients pac_from_chrono_json(const std::filesystem::path& path) {
+  const std::string origin = path.string();
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw TirError(origin, 0, "cannot open file");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  const std::string text = ss.str();
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(text, nullptr, true, /*ignore_comments=*/true);
+  } catch (const nlohmann::json::parse_error& e) {
+    // Turn the byte offset into a line number.
+    const std::size_t upto = std::min<std::size_t>(e.byte, text.size());
+    const auto line =
+        1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(upto), '\n');
+    throw TirError(origin, static_cast<int>(line), std::string("JSON: ") + e.what());
+  }
+  PacCoefficients out;
+  auto read_obj = [&](const char* object, char letter, auto& arr) {
+    if (!j.contains(object) || !j[object].is_object()) {
+      throw TirError(origin, 0, std::string("missing object \"") + object + "\"");
+    }
+    const auto& o = j[object];
+    for (std::size_t i = 0; i < arr.size(); ++i) {
+      const std::string key = std::string(1, letter) + std::to_string(i);
+      if (o.contains(key)) {
+        if (!o[key].is_number()) {
+          throw TirError(origin, 0, std::string(object) + "." + key + " is not a number");
+        }
+        arr[i] = o[key].template get<double>();
+      } else {
+        arr[i] = 0.0;
+        out.missing.push_back(std::string(object) + "." + key);
+      }
+    }
+  };
+  read_obj("Lateral Coefficients", 'a', out.params.a);
+  read_obj("Longitudinal Coefficients", 'b', out.params.b);
+  read_obj("Aligning Coefficients", 'c', out.params.c);
+  auto design = [&](const char* key) {
+    if (j.contains("Design Parameters") && j["Design Parameters"].contains(key) &&
+        j["Design Parameters"][key].is_number()) {
+      return j["Design Parameters"][key].get<double>();
+    }
+    out.missing.push_back(std::string("Design Parameters.") + key);
+    return 0.0;
+  };
+  out.params.unloaded_radius_m = design("Unloaded Radius");
+  out.params.rolling_resistance = design("Rolling Resistance");
+  out.params.lateral_stiffness_npm = design("Lateral Stiffness");
+  return out;
+}
+
+}  // namespace tread::tir

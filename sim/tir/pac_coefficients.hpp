@@ -1,0 +1,34 @@
+#pragma once
+// Loaders for PAC89/PAC94 coefficient sets (host side; throws TirError with file:line).
+//
+// .tir (Adams PAC89/PAC94 property files): [LATERAL_COEFFICIENTS] A0…A17,
+// [LONGITUDINAL_COEFFICIENTS] B0…B13, [ALIGNING_COEFFICIENTS] C0…C20 (keys case-insensitive);
+// optional anywhere: UNLOADED_RADIUS, ROLLING_RESISTANCE, LATERAL_STIFFNESS. Missing coefficients
+// are 0 (a PAC89 file has no A14…A17, B11…B13, C18…C20, which makes PAC94 reduce to PAC89) and are
+// listed in `missing`.
+//
+// Chrono JSON (Pac89Tire template, e.g. chrono_HMMWV_Pac89Tire.json; `//` comments allowed):
+// "Lateral Coefficients" {"a0"…}, "Longitudinal Coefficients" {"b0"…}, "Aligning Coefficients"
+// {"c0"…}, "Design Parameters" {"Unloaded Radius", "Rolling Resistance", "Lateral Stiffness"}.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "pac/pac_params.hpp"
+#include "tir/tir_file.hpp"
+
+namespace tread::tir {
+
+struct PacCoefficients {
+  pac::PacParams<double> params;
+  std::vector<std::string> missing;  ///< keys that took their default (0)
+};
+
+PacCoefficients pac_from_tir(const TirFile& file);
+PacCoefficients pac_from_chrono_json(const std::filesystem::path& path);
+
+/// Writes the coefficients into `file` (sections as read by pac_from_tir); round-trips exactly.
+void pac_to_tir(const pac::PacParams<double>& params, TirFile& file);
+
+}  // namespace tread::tir
