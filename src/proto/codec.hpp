@@ -71,12 +71,10 @@ struct WheelsetOutput {
 };
 
 /// NodeStatus.State bits.
-enum NodeStateBits : std::uint8_t {
-  kNodeEnabled = 1U << 0U,
-  kNodeSyncMode = 1U << 1U,
-  kNodeOverrun = 1U << 2U,  ///< at least one overrun since start
-  kNodeFd = 1U << 3U,
-};
+inline constexpr std::uint8_t kNodeEnabled = 1U << 0U;
+inline constexpr std::uint8_t kNodeSyncMode = 1U << 1U;
+inline constexpr std::uint8_t kNodeOverrun = 1U << 2U;  ///< at least one overrun since start
+inline constexpr std::uint8_t kNodeFd = 1U << 3U;
 
 struct NodeStatusData {
   std::uint8_t state{0};

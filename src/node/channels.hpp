@@ -1,0 +1,56 @@
+#pragma once
+// What the node computes per channel, as concepts: a road-wheel tyre (Magic Formula + optional
+// relaxation) and a rail wheelset (contact lookup table). The node is generic over both, so it is
+// tested with simple channels and runs with the real ones, without virtual dispatch.
+
+#include <concepts>
+
+#include "proto/codec.hpp"
+
+namespace tread::node {
+
+struct TyreResult {
+  float fx_n{0.0F};
+  float fy_n{0.0F};
+  float mz_nm{0.0F};
+  float mx_nm{0.0F};
+  float my_nm{0.0F};
+  float rl_m{0.0F};
+  bool clamped{false};  ///< an input was outside the model's limits and was clamped to them
+};
+
+struct ContactResult {
+  float r_left_mm{0.0F};
+  float r_right_mm{0.0F};
+  float delta_r_mm{0.0F};
+  float gamma_left_rad{0.0F};
+  float gamma_right_rad{0.0F};
+  bool clamped{false};  ///< the displacement lay outside the table and was clamped to its range
+};
+
+/// A road-wheel channel. `dt_s` is the time since the previous evaluation (0 on the first one).
+template <typename T>
+concept TyreChannel = requires(T tyre, const proto::WheelInput& input, float dt_s) {
+  { tyre.evaluate(input, dt_s) } -> std::same_as<TyreResult>;
+  { tyre.reset() } -> std::same_as<void>;
+};
+
+/// A rail-wheelset channel.
+template <typename C>
+concept ContactChannel = requires(C contact, const proto::WheelsetInput& input) {
+  { contact.evaluate(input) } -> std::same_as<ContactResult>;
+};
+
+/// A channel type for builds without wheelsets (or without road wheels).
+struct NoContact {
+  ContactResult evaluate(const proto::WheelsetInput& /*input*/) const noexcept { return {}; }
+};
+struct NoTyre {
+  TyreResult evaluate(const proto::WheelInput& /*input*/, float /*dt_s*/) const noexcept {
+    return {};
+  }
+  void reset() noexcept {}
+};
+static_assert(TyreChannel<NoTyre> && ContactChannel<NoContact>);
+
+}  // namespace tread::node

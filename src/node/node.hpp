@@ -1,0 +1,314 @@
+#pragma once
+// The node's computation as a pure state machine: frames in (receive), outputs out (compute), time
+// passed in as a value. No clock, no bus, no heap: the runner (hal/loop) drives it; tests drive it
+// directly.
+//
+// Per cycle: receive() every frame drained from the bus (validate length, E2E CRC and counter; keep
+// the latest sample per channel) → compute(now): per channel, stale check, clamp, model, status
+// bits → encode every output frame with its own E2E counter.
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <span>
+
+#include "node/channels.hpp"
+#include "node/node_config.hpp"
+#include "node/node_counters.hpp"
+#include "proto/codec.hpp"
+#include "proto/e2e_profile1.hpp"
+
+namespace tread::node {
+
+/// Upper bound of output frames per cycle (classic: 4×2 wheel + 2×2 wheelset + status).
+inline constexpr std::size_t kMaxTxFrames = 16;
+
+template <TyreChannel Tyre, ContactChannel Contact>
+class Node {
+ public:
+  /// `tyres` must hold config.wheels channels and `contacts` config.wheelsets; both outlive the
+  /// node.
+  Node(const NodeConfig& config, std::span<Tyre> tyres, std::span<Contact> contacts) noexcept
+      : config_(config), tyres_(tyres), contacts_(contacts) {
+    config_.wheels = std::min<std::uint8_t>(
+        {config_.wheels, proto::kMaxWheels, static_cast<std::uint8_t>(tyres.size())});
+    config_.wheelsets = std::min<std::uint8_t>(
+        {config_.wheelsets, proto::kMaxWheelsets, static_cast<std::uint8_t>(contacts.size())});
+    enabled_ = config_.start_enabled;
+    const auto all = proto::messages(config_.layout);
+    for (std::size_t m = 0; m < all.size(); ++m) {
+      feeds_[m] = channel_mask(all[m]);
+      receivers_[m].max_delta = config_.e2e_max_delta;
+      if (all[m].direction == proto::Direction::node_to_rig && tx_count_ < kMaxTxFrames) {
+        const bool is_status = all[m].id == kNodeStatusId;
+        const std::uint8_t configured = configured_mask();
+        if (is_status || (feeds_[m] & configured) != 0U) {
+          tx_list_[tx_count_++] = static_cast<std::uint8_t>(m);
+        }
+      }
+    }
+    last_valid_ns_.fill(kNever);
+  }
+
+  /// Validates one received frame and keeps its values.
+  /// @return true when the frame is the rig's cycle frame (sync mode computes then).
+  bool receive(const proto::CanFrame& frame, std::int64_t now_ns) noexcept {
+    ++counters_.rx_frames;
+    if (frame.error) {
+      ++counters_.rx_error_frames;
+      return false;
+    }
+    const proto::MessageSpec* m = proto::find_message(config_.layout, frame.id);
+    if (m == nullptr || frame.extended || m->direction != proto::Direction::rig_to_node) {
+      ++counters_.rx_ignored;
+      return false;
+    }
+    if (frame.len != m->len || frame.fd != m->fd) {
+      ++counters_.rx_bad_length;
+      return false;
+    }
+    const std::size_t index = proto::message_index(config_.layout, *m);
+    proto::E2eReceiver& rx = receivers_[index];
+    const std::uint32_t lost_before = rx.lost_frames;
+    const proto::E2eResult check = proto::e2e_check(frame, m->data_id(), rx);
+    if (check == proto::E2eResult::bad_crc) {
+      ++counters_.rx_bad_crc;
+      return false;
+    }
+    if (!proto::e2e_accepted(check)) {
+      if (check == proto::E2eResult::bad_length) {
+        ++counters_.rx_bad_length;
+      } else {
+        ++counters_.rx_bad_counter;
+      }
+      return false;
+    }
+    counters_.lost_frames += rx.lost_frames - lost_before;
+    ++counters_.rx_accepted;
+    static_cast<void>(proto::decode(*m, frame, latest_));
+    last_valid_ns_[index] = now_ns;
+    if (m->id == kCommandId) {
+      apply_command();
+      return false;
+    }
+    return m->id == kRigCycleId || m->id == kRigInputsFdId;
+  }
+
+  /// Computes every channel at `now_ns` and encodes the output frames into `tx`.
+  /// @return the number of frames written (at most kMaxTxFrames)
+  std::size_t compute(std::int64_t now_ns, std::span<proto::CanFrame> tx) noexcept {
+    ++counters_.cycles;
+    const float dt_s =
+        last_compute_ns_ == kNever
+            ? 0.0F
+            : static_cast<float>(static_cast<double>(now_ns - last_compute_ns_) * 1e-9);
+    last_compute_ns_ = now_ns;
+
+    std::uint8_t stale_mask = 0;
+    std::uint8_t clamp_mask = 0;
+    for (std::size_t i = 0; i < config_.wheels; ++i) {
+      proto::WheelOutput& out = outputs_.wheels[i];
+      const auto bit = static_cast<std::uint8_t>(1U << i);
+      if (!enabled_) {
+        out = proto::WheelOutput{};
+        out.status = proto::kStatusDisabled;
+        continue;
+      }
+      if (!fresh(bit, now_ns)) {
+        out = proto::WheelOutput{};
+        out.status = proto::kStatusStale;
+        stale_mask = static_cast<std::uint8_t>(stale_mask | bit);
+        tyres_[i].reset();  // restart transients cleanly when inputs return
+        continue;
+      }
+      const TyreResult r = tyres_[i].evaluate(latest_.wheels[i], dt_s);
+      out = proto::WheelOutput{r.fx_n, r.fy_n, r.mz_nm, r.mx_nm, r.my_nm, r.rl_m, 0};
+      if (!all_finite(out)) {
+        ++counters_.non_finite_outputs;
+        out = proto::WheelOutput{};
+      }
+      if (r.clamped) {
+        out.status = proto::kStatusClamped;
+        clamp_mask = static_cast<std::uint8_t>(clamp_mask | bit);
+      }
+    }
+    for (std::size_t j = 0; j < config_.wheelsets; ++j) {
+      proto::WheelsetOutput& out = outputs_.wheelsets[j];
+      const auto bit = static_cast<std::uint8_t>(1U << (4U + j));
+      if (!enabled_) {
+        out = proto::WheelsetOutput{};
+        out.status = proto::kStatusDisabled;
+        continue;
+      }
+      if (!fresh(bit, now_ns)) {
+        out = proto::WheelsetOutput{};
+        out.status = proto::kStatusStale;
+        stale_mask = static_cast<std::uint8_t>(stale_mask | bit);
+        continue;
+      }
+      const ContactResult r = contacts_[j].evaluate(latest_.wheelsets[j]);
+      out = proto::WheelsetOutput{r.r_left_mm,      r.r_right_mm,      r.delta_r_mm,
+                                  r.gamma_left_rad, r.gamma_right_rad, 0};
+      if (!all_finite(out)) {
+        ++counters_.non_finite_outputs;
+        out = proto::WheelsetOutput{};
+      }
+      if (r.clamped) {
+        out.status = proto::kStatusClamped;
+        clamp_mask = static_cast<std::uint8_t>(clamp_mask | bit);
+      }
+    }
+    counters_.stale_events += static_cast<std::uint64_t>(std::popcount(stale_mask));
+    counters_.clamp_events += static_cast<std::uint64_t>(std::popcount(clamp_mask));
+
+    proto::NodeStatusData& st = outputs_.status;
+    st.state =
+        static_cast<std::uint8_t>((enabled_ ? proto::kNodeEnabled : 0U) |
+                                  (config_.schedule == Schedule::sync ? proto::kNodeSyncMode : 0U) |
+                                  (counters_.overruns > 0U ? proto::kNodeOverrun : 0U) |
+                                  (config_.layout == proto::Layout::fd ? proto::kNodeFd : 0U));
+    st.cycle = static_cast<std::uint16_t>(counters_.cycles & 0xFFFFU);
+    st.overruns = saturate8(counters_.overruns);
+    st.rejected = saturate8(counters_.rx_rejected());
+    st.stale_mask = stale_mask;
+    st.clamp_mask = clamp_mask;
+
+    const auto all = proto::messages(config_.layout);
+    std::size_t written = 0;
+    for (std::size_t k = 0; k < tx_count_ && written < tx.size(); ++k) {
+      const std::size_t m = tx_list_[k];
+      if (proto::encode(all[m], outputs_, tx_counters_[m], tx[written]) != Status::ok) {
+        ++counters_.saturated_outputs;
+        mark_saturated(all[m], tx[written]);
+      }
+      tx_counters_[m] =
+          static_cast<std::uint8_t>((tx_counters_[m] + 1U) % proto::kE2eCounterModulo);
+      ++written;
+    }
+    counters_.tx_frames += written;
+    return written;
+  }
+
+  /// The runner reports a missed deadline.
+  void note_overrun(std::uint64_t missed = 1) noexcept { counters_.overruns += missed; }
+
+  [[nodiscard]] const NodeCounters& counters() const noexcept { return counters_; }
+  [[nodiscard]] const proto::NodeData& outputs() const noexcept { return outputs_; }
+  [[nodiscard]] const proto::RigData& latest_inputs() const noexcept { return latest_; }
+  [[nodiscard]] const NodeConfig& config() const noexcept { return config_; }
+  [[nodiscard]] bool enabled() const noexcept { return enabled_; }
+
+ private:
+  static constexpr std::int64_t kNever = std::numeric_limits<std::int64_t>::min();
+  static constexpr std::uint32_t kCommandId = 0x080;
+  static constexpr std::uint32_t kRigCycleId = 0x090;
+  static constexpr std::uint32_t kRigInputsFdId = 0x0A0;
+  static constexpr std::uint32_t kNodeStatusId = 0x0F0;
+
+  static bool is_wheel_role(proto::Role r) noexcept {
+    using proto::Role;
+    return r == Role::kappa || r == Role::alpha || r == Role::gamma || r == Role::fz ||
+           r == Role::vx || r == Role::omega || r == Role::omega_valid || r == Role::fx ||
+           r == Role::fy || r == Role::mz || r == Role::mx || r == Role::my || r == Role::rl ||
+           r == Role::wheel_status;
+  }
+  static bool is_wheelset_role(proto::Role r) noexcept {
+    using proto::Role;
+    return r == Role::ws_lateral || r == Role::ws_yaw || r == Role::ws_yaw_valid ||
+           r == Role::r_left || r == Role::r_right || r == Role::delta_r || r == Role::gamma_left ||
+           r == Role::gamma_right || r == Role::ws_status;
+  }
+  /// Bit i: the message carries wheel i's data; bit 4+j: wheelset j's.
+  static std::uint8_t channel_mask(const proto::MessageSpec& m) noexcept {
+    std::uint8_t mask = 0;
+    for (const proto::SignalSpec& s : m.signals) {
+      const std::int8_t i = m.instance_of(s);
+      if (i < 0) {
+        continue;
+      }
+      if (is_wheel_role(s.role)) {
+        mask = static_cast<std::uint8_t>(mask | (1U << static_cast<unsigned>(i)));
+      } else if (is_wheelset_role(s.role)) {
+        mask = static_cast<std::uint8_t>(mask | (1U << (4U + static_cast<unsigned>(i))));
+      }
+    }
+    return mask;
+  }
+  [[nodiscard]] std::uint8_t configured_mask() const noexcept {
+    return static_cast<std::uint8_t>(((1U << config_.wheels) - 1U) |
+                                     (((1U << config_.wheelsets) - 1U) << 4U));
+  }
+  /// Every input message feeding the channel `bit` arrived valid within the timeout.
+  [[nodiscard]] bool fresh(std::uint8_t bit, std::int64_t now_ns) const noexcept {
+    const auto all = proto::messages(config_.layout);
+    bool any = false;
+    for (std::size_t m = 0; m < all.size(); ++m) {
+      if (all[m].direction != proto::Direction::rig_to_node || (feeds_[m] & bit) == 0U) {
+        continue;
+      }
+      any = true;
+      if (last_valid_ns_[m] == kNever || now_ns - last_valid_ns_[m] > config_.input_timeout_ns) {
+        return false;
+      }
+    }
+    return any;
+  }
+  void apply_command() noexcept {
+    enabled_ = latest_.command.enable;
+    if (latest_.command.reset) {
+      for (std::size_t i = 0; i < config_.wheels; ++i) {
+        tyres_[i].reset();
+      }
+      const std::uint64_t overruns = counters_.overruns;
+      counters_ = NodeCounters{};
+      counters_.overruns = overruns;  // a fact about the schedule, not about the session
+    }
+  }
+  static bool all_finite(const proto::WheelOutput& o) noexcept {
+    return std::isfinite(o.fx_n) && std::isfinite(o.fy_n) && std::isfinite(o.mz_nm) &&
+           std::isfinite(o.mx_nm) && std::isfinite(o.my_nm) && std::isfinite(o.rl_m);
+  }
+  static bool all_finite(const proto::WheelsetOutput& o) noexcept {
+    return std::isfinite(o.r_left_mm) && std::isfinite(o.r_right_mm) &&
+           std::isfinite(o.delta_r_mm) && std::isfinite(o.gamma_left_rad) &&
+           std::isfinite(o.gamma_right_rad);
+  }
+  static std::uint8_t saturate8(std::uint64_t v) noexcept {
+    return static_cast<std::uint8_t>(v > 255U ? 255U : v);
+  }
+  /// Sets the saturated bit in the status signals of a frame whose encoding saturated.
+  void mark_saturated(const proto::MessageSpec& m, proto::CanFrame& frame) const noexcept {
+    bool changed = false;
+    for (const proto::SignalSpec& s : m.signals) {
+      if (s.role == proto::Role::wheel_status || s.role == proto::Role::ws_status) {
+        const std::span<std::uint8_t> bytes(frame.data.data(), frame.len);
+        const auto raw = proto::decode_raw_signal(s, bytes);
+        static_cast<void>(proto::encode_raw_signal(s, raw | proto::kStatusOutOfRange, bytes));
+        changed = true;
+      }
+    }
+    if (changed) {  // re-protect with the same counter
+      proto::e2e_protect(frame, m.data_id(), proto::e2e_counter_of(frame));
+    }
+  }
+
+  NodeConfig config_;
+  std::span<Tyre> tyres_;
+  std::span<Contact> contacts_;
+  bool enabled_{true};
+  proto::RigData latest_{};
+  proto::NodeData outputs_{};
+  NodeCounters counters_{};
+  std::array<proto::E2eReceiver, proto::kMaxMessages> receivers_{};
+  std::array<std::int64_t, proto::kMaxMessages> last_valid_ns_{};
+  std::array<std::uint8_t, proto::kMaxMessages> feeds_{};
+  std::array<std::uint8_t, proto::kMaxMessages> tx_counters_{};
+  std::array<std::uint8_t, kMaxTxFrames> tx_list_{};
+  std::size_t tx_count_{0};
+  std::int64_t last_compute_ns_{kNever};
+};
+
+}  // namespace tread::node

@@ -1,0 +1,84 @@
+#include "proto/rig_link.hpp"
+
+namespace tread::proto {
+namespace {
+
+constexpr std::uint32_t kCommandId = 0x080;
+constexpr std::uint32_t kRigCycleId = 0x090;
+constexpr std::uint32_t kRigInputsFdId = 0x0A0;
+
+bool is_cycle_frame(const MessageSpec& m) noexcept {
+  return m.id == kRigCycleId || m.id == kRigInputsFdId;
+}
+
+}  // namespace
+
+RigLink::RigLink(Layout layout, std::uint8_t wheels, std::uint8_t wheelsets) noexcept
+    : layout_(layout),
+      wheels_(wheels > kMaxWheels ? kMaxWheels : wheels),
+      wheelsets_(wheelsets > kMaxWheelsets ? kMaxWheelsets : wheelsets) {}
+
+std::uint8_t RigLink::next_counter(std::size_t message) noexcept {
+  const std::uint8_t c = counters_[message];
+  counters_[message] = static_cast<std::uint8_t>((c + 1U) % kE2eCounterModulo);
+  return c;
+}
+
+bool RigLink::wanted(const MessageSpec& m) const noexcept {
+  if (m.direction != Direction::rig_to_node || m.id == kCommandId) {
+    return false;
+  }
+  if (m.instance < 0) {
+    return true;  // frames for all channels (RigCycle, RigInputsFD)
+  }
+  bool wheelset_message = false;
+  for (const SignalSpec& s : m.signals) {
+    wheelset_message = wheelset_message || s.role == Role::ws_lateral;
+  }
+  return wheelset_message ? m.instance < wheelsets_ : m.instance < wheels_;
+}
+
+std::size_t RigLink::encode_cycle(const RigData& data, std::span<CanFrame> out) noexcept {
+  const auto all = messages(layout_);
+  std::size_t n = 0;
+  // Channel frames first, the cycle frame last.
+  for (int pass = 0; pass < 2; ++pass) {
+    for (std::size_t m = 0; m < all.size() && n < out.size(); ++m) {
+      if (!wanted(all[m]) || is_cycle_frame(all[m]) != (pass == 1)) {
+        continue;
+      }
+      static_cast<void>(encode(all[m], data, next_counter(m), out[n]));
+      ++n;
+    }
+  }
+  return n;
+}
+
+CanFrame RigLink::encode_command(const Command& command) noexcept {
+  RigData data{};
+  data.command = command;
+  const MessageSpec* m = find_message(layout_, kCommandId);
+  CanFrame frame{};
+  static_cast<void>(encode(*m, data, next_counter(message_index(layout_, *m)), frame));
+  return frame;
+}
+
+Status RigLink::receive(const CanFrame& frame, NodeData& outputs) noexcept {
+  const MessageSpec* m = find_message(layout_, frame.id);
+  if (frame.error || m == nullptr || m->direction != Direction::node_to_rig) {
+    return Status::invalid_argument;
+  }
+  if (frame.len != m->len || frame.fd != m->fd) {
+    ++rejected_;
+    return Status::invalid_argument;
+  }
+  const E2eResult r = e2e_check(frame, m->data_id(), receivers_[message_index(layout_, *m)]);
+  if (!e2e_accepted(r)) {
+    ++rejected_;
+    return r == E2eResult::bad_crc ? Status::bad_crc : Status::bad_counter;
+  }
+  ++accepted_;
+  return decode(*m, frame, outputs);
+}
+
+}  // namespace tread::proto
