@@ -26,8 +26,9 @@
 //   - rho/Rl for FITTYP 61 solve the same quadratic in the cancellation-free form.
 //   - TYRESIDE mirroring (MountedSide), which MFeval ignores.
 //   - A finite-arithmetic envelope, applied in every mode: Fz ≤ 10·max(FZMAX, FNOMIN), |κ| ≤ 100,
-//     |Vx| ≤ 1000 m/s, |φt| ≤ 100 1/m, 0 < p ≤ 100·NOMPRES. Inputs outside it are clamped and
-//     MfOutput::status is out_of_range. It lies far outside any tyre's measured range.
+//     |α|, |γ| ≤ 1.5707 rad, |Vx| ≤ 1000 m/s, |φt| ≤ 100 1/m, 1e-6·NOMPRES ≤ p ≤ 100·NOMPRES.
+//     Inputs outside it are clamped and MfOutput::status is out_of_range. It lies far outside any
+//     tyre's measured range.
 //
 // Scalar: float, double or ceres::Jet (all maths through unqualified calls, so ADL finds Jet's).
 // No heap, no exceptions, no virtual calls, no I/O.
@@ -163,8 +164,8 @@ Prepared<T> prepare(const MfParameters<T>& p, const MfInput<T>& input, const MfO
   const T fz_env = T(10) * max_of(p.fzmax_n, p.fnomin_n);
   T fz = input.fz_n < T(0) ? T(0) : clamp_envelope(input.fz_n, T(0), fz_env, status);
   T kappa = clamp_envelope(input.kappa, T(-100), T(100), status);
-  T alpha = input.alpha_rad;
-  T gamma = input.gamma_rad;
+  T alpha = clamp_envelope(input.alpha_rad, T(-1.5707), T(1.5707), status);
+  T gamma = clamp_envelope(input.gamma_rad, T(-1.5707), T(1.5707), status);
   T phit = clamp_envelope(input.phit_1pm, T(-100), T(100), status);
   const T vx = clamp_envelope(input.vx_mps, T(-1000), T(1000), status);
   T pressure = input.p_pa > T(0) ? input.p_pa : p.inflpres_pa;

@@ -1,0 +1,182 @@
+// Unit tests of src/mf/mf_evaluate.hpp: properties that hold independently of MFeval's numbers.
+#include "mf/mf_evaluate.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "mf/mf_options.hpp"
+
+namespace tread::mf {
+namespace {
+
+MfInput<double> make_input(double fz, double kappa, double alpha, double gamma, double vx = 16.7) {
+  MfInput<double> in;
+  in.fz_n = fz;
+  in.kappa = kappa;
+  in.alpha_rad = alpha;
+  in.gamma_rad = gamma;
+  in.vx_mps = vx;
+  return in;
+}
+
+TEST(MfOptions, UseModeDigits) {
+  const auto m111 = options_from_use_mode(111);
+  ASSERT_TRUE(m111.ok());
+  EXPECT_TRUE(m111.value.use_limits);
+  EXPECT_FALSE(m111.value.use_alpha_star);
+  EXPECT_FALSE(m111.value.use_turn_slip);
+  const auto m222 = options_from_use_mode(222);
+  ASSERT_TRUE(m222.ok());
+  EXPECT_FALSE(m222.value.use_limits);
+  EXPECT_TRUE(m222.value.use_alpha_star);
+  EXPECT_TRUE(m222.value.use_turn_slip);
+  for (int bad : {0, 11, 110, 113, 131, 311, 1111, -111}) {
+    EXPECT_EQ(options_from_use_mode(bad).status, Status::invalid_argument) << bad;
+  }
+}
+
+TEST(MfEvaluate, DefaultParametersAreTheBookTyre) {
+  const MfParameters<double> p;
+  EXPECT_DOUBLE_EQ(p.fnomin_n, 4000.0);
+  EXPECT_DOUBLE_EQ(p.unloaded_radius_m, 0.3135);
+  EXPECT_DOUBLE_EQ(p.pky1, -15.0);
+  EXPECT_GT(kMfParameterCount, 200);
+}
+
+TEST(MfEvaluate, ZeroOrNegativeLoadGivesNoForces) {
+  const MfParameters<double> p;
+  for (int mode : {111, 121, 112, 211, 222}) {
+    const MfOptions o = options_from_use_mode(mode).value;
+    for (double fz : {0.0, -500.0}) {
+      const MfOutput<double> out = evaluate(p, make_input(fz, 0.1, 0.1, 0.05), o);
+      EXPECT_EQ(out.fx_n, 0.0) << mode;
+      EXPECT_EQ(out.fy_n, 0.0) << mode;
+      EXPECT_EQ(out.fz_n, 0.0) << mode;
+      EXPECT_EQ(out.mx_nm, 0.0) << mode;
+      EXPECT_EQ(out.my_nm, 0.0) << mode;
+      EXPECT_EQ(out.mz_nm, 0.0) << mode;
+    }
+  }
+}
+
+TEST(MfEvaluate, PureSlipShape) {
+  // Book tyre, no shifts: Fx(κ) odd, Fx'(0) = Kxk, Fy'(0) = Kya (mode 211: no low-speed effects).
+  const MfParameters<double> p;
+  const MfOptions o = options_from_use_mode(211).value;
+  const double h = 1e-7;
+  const MfOutput<double> at0 = evaluate(p, make_input(4000.0, 0.0, 0.0, 0.0), o);
+  const double fx_p = evaluate(p, make_input(4000.0, h, 0.0, 0.0), o).fx_n;
+  const double fx_m = evaluate(p, make_input(4000.0, -h, 0.0, 0.0), o).fx_n;
+  EXPECT_NEAR(fx_p, -fx_m, 1e-9);
+  EXPECT_NEAR((fx_p - fx_m) / (2 * h), at0.kxk_n, 1e-4 * at0.kxk_n);
+  // Kxk = Fz·PKX1 at the nominal load (PKX2 = PKX3 = 0 in the book file).
+  EXPECT_NEAR(at0.kxk_n, 4000.0 * 16.0, 1e-9);
+  const double fy_p = evaluate(p, make_input(4000.0, 0.0, h, 0.0), o).fy_n;
+  const double fy_m = evaluate(p, make_input(4000.0, 0.0, -h, 0.0), o).fy_n;
+  EXPECT_NEAR((fy_p - fy_m) / (2 * h), at0.kya_nprad, 1e-4 * std::fabs(at0.kya_nprad));
+  // Kya = PKY1·Fz0·sin(PKY4·atan(1/PKY2)) at Fz = Fz0.
+  EXPECT_NEAR(at0.kya_nprad, -15.0 * 4000.0 * std::sin(2.0 * std::atan(0.5)), 1e-6);
+  // Peak: |Fx| ≤ Dx = mux·Fz with mux = PDX1 at Fz0.
+  double peak = 0.0;
+  for (double k = 0.0; k < 1.0; k += 0.001) {
+    peak = std::max(peak, std::fabs(evaluate(p, make_input(4000.0, k, 0.0, 0.0), o).fx_n));
+  }
+  EXPECT_NEAR(peak, 1.0 * 4000.0, 1.0);
+}
+
+TEST(MfEvaluate, CombinedSlipReducesEachForce) {
+  const MfParameters<double> p;
+  const MfOptions o = options_from_use_mode(211).value;
+  // Adding the other slip shrinks each force (friction ellipse).
+  const auto pure_x = evaluate(p, make_input(4000.0, 0.08, 0.0, 0.0), o);
+  const auto comb_x = evaluate(p, make_input(4000.0, 0.08, 0.1, 0.0), o);
+  EXPECT_LT(std::fabs(comb_x.fx_n), std::fabs(pure_x.fx_n));  // friction ellipse
+  const auto pure_y = evaluate(p, make_input(4000.0, 0.0, 0.1, 0.0), o);
+  const auto comb_y = evaluate(p, make_input(4000.0, 0.08, 0.1, 0.0), o);
+  EXPECT_LT(std::fabs(comb_y.fy_n), std::fabs(pure_y.fy_n));
+}
+
+TEST(MfEvaluate, TyreSideMirroring) {
+  MfParameters<double> left;
+  left.tyre_side = TyreSide::left;
+  // Asymmetric coefficients, so mirroring is visible.
+  left.phy1 = 0.01;
+  left.pvy1 = 0.03;
+  left.qsx1 = 0.02;
+  left.qhz1 = 0.01;
+  MfParameters<double> right = left;
+  right.tyre_side = TyreSide::right;
+  for (int mode : {111, 121, 112, 211}) {
+    MfOptions o = options_from_use_mode(mode).value;
+    for (double alpha : {-0.1, 0.03, 0.2}) {
+      for (double gamma : {-0.04, 0.0, 0.05}) {
+        MfInput<double> in = make_input(4500.0, 0.05, alpha, gamma);
+        in.phit_1pm = 0.02;
+        MfInput<double> mirrored = in;
+        mirrored.alpha_rad = -alpha;
+        mirrored.gamma_rad = -gamma;
+        mirrored.phit_1pm = -in.phit_1pm;
+
+        o.side = MountedSide::as_measured;
+        const auto base = evaluate(left, mirrored, o);
+        // A left tyre on the right wheel = mirror image of the left tyre.
+        o.side = MountedSide::right;
+        const auto on_right = evaluate(left, in, o);
+        EXPECT_DOUBLE_EQ(on_right.fx_n, base.fx_n);
+        EXPECT_DOUBLE_EQ(on_right.fy_n, -base.fy_n);
+        EXPECT_DOUBLE_EQ(on_right.mx_nm, -base.mx_nm);
+        EXPECT_DOUBLE_EQ(on_right.my_nm, base.my_nm);
+        EXPECT_DOUBLE_EQ(on_right.mz_nm, -base.mz_nm);
+        EXPECT_DOUBLE_EQ(on_right.alpha_rad, in.alpha_rad);
+        // Same side as the file: no mirroring, for either side.
+        o.side = MountedSide::left;
+        const auto left_on_left = evaluate(left, in, o);
+        o.side = MountedSide::as_measured;
+        const auto left_as_measured = evaluate(left, in, o);
+        EXPECT_DOUBLE_EQ(left_on_left.fy_n, left_as_measured.fy_n);
+        o.side = MountedSide::right;
+        const auto right_on_right = evaluate(right, in, o);
+        EXPECT_DOUBLE_EQ(right_on_right.fy_n, left_as_measured.fy_n);
+        EXPECT_DOUBLE_EQ(right_on_right.mz_nm, left_as_measured.mz_nm);
+        // A right tyre on the left wheel mirrors too.
+        o.side = MountedSide::left;
+        const auto right_on_left = evaluate(right, in, o);
+        EXPECT_DOUBLE_EQ(right_on_left.fy_n, on_right.fy_n);
+        EXPECT_DOUBLE_EQ(right_on_left.mz_nm, on_right.mz_nm);
+        // The asymmetry is real: the mirror image differs from the tyre itself.
+        if (alpha > 0.1 && gamma > 0.0) {
+          EXPECT_NE(on_right.fy_n, left_as_measured.fy_n);
+        }
+      }
+    }
+  }
+}
+
+TEST(MfEvaluate, EnvelopeFlagsAbsurdInputs) {
+  const MfParameters<double> p;
+  const MfOptions o = options_from_use_mode(211).value;
+  EXPECT_EQ(evaluate(p, make_input(4000.0, 0.1, 0.1, 0.0), o).status, Status::ok);
+  EXPECT_EQ(evaluate(p, make_input(1e9, 0.1, 0.1, 0.0), o).status, Status::out_of_range);
+  EXPECT_EQ(evaluate(p, make_input(4000.0, 1e6, 0.1, 0.0), o).status, Status::out_of_range);
+  EXPECT_EQ(evaluate(p, make_input(4000.0, 0.1, 0.1, 0.0, 1e5), o).status, Status::out_of_range);
+}
+
+TEST(MfEvaluate, FloatFollowsDouble) {
+  const MfParameters<double> pd;
+  const MfParameters<float> pf = convert_parameters<float>(pd);
+  const MfOptions o = options_from_use_mode(111).value;
+  MfInput<float> inf;
+  inf.fz_n = 3000.0f;
+  inf.kappa = 0.05f;
+  inf.alpha_rad = 0.05f;
+  inf.vx_mps = 20.0f;
+  const auto of = evaluate(pf, inf, o);
+  const auto od = evaluate(pd, make_input(3000.0, 0.05, 0.05, 0.0, 20.0), o);
+  EXPECT_NEAR(static_cast<double>(of.fx_n), od.fx_n, 1e-4 * 3000.0);
+  EXPECT_NEAR(static_cast<double>(of.fy_n), od.fy_n, 1e-4 * 3000.0);
+  EXPECT_NEAR(static_cast<double>(of.mz_nm), od.mz_nm, 1e-3);
+}
+
+}  // namespace
+}  // namespace tread::mf
