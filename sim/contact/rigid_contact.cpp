@@ -166,6 +166,7 @@ WheelContact RigidContact::solve(const ProfileFunction& wheel, double shift_mm,
     }
   }
   out.y_rail_mm = s_c;
+  out.at_profile_end = s_c <= lo + 1e-9 || s_c >= hi - 1e-9;
   out.y_wheel_mm = s_c - shift_mm;
   out.r_mm = r0_mm + wheel.z_at(out.y_wheel_mm);
   out.gamma_rad = std::atan(-wheel.slope_at(out.y_wheel_mm, settings_.slope_half_window_mm));
@@ -205,6 +206,7 @@ ContactTable RigidContact::table(double y_min_mm, double y_max_mm, double step_m
     t.yr_right_mm.push_back(c.right.y_rail_mm);
     t.second_gap_left_mm.push_back(c.left.second_gap_mm);
     t.second_gap_right_mm.push_back(c.right.second_gap_mm);
+    t.at_profile_end.push_back(c.left.at_profile_end || c.right.at_profile_end);
   }
   return t;
 }

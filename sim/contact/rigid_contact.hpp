@@ -44,6 +44,9 @@ struct WheelContact {
   /// away; near 0 means two-point contact; +inf when there is none.
   double second_gap_mm = 0.0;
   double y_rail_second_mm = 0.0;  ///< where that second candidate is (track frame)
+  /// The contact lies at the end of the wheel's or the rail's sampled range: the profiles do not
+  /// cover this displacement (e.g. flange contact below the end of a rail head table).
+  bool at_profile_end = false;
 };
 
 struct ContactState {
@@ -69,6 +72,7 @@ struct ContactTable {
   std::vector<double> yr_right_mm;
   std::vector<double> second_gap_left_mm;
   std::vector<double> second_gap_right_mm;
+  std::vector<bool> at_profile_end;  ///< either wheel's contact at the end of a profile
 };
 
 class RigidContact {

@@ -1,0 +1,40 @@
+#pragma once
+// What the `tread contact` and `tread conicity` commands share: the wheel/rail/wheelset settings as
+// plain values and their turning into a RigidContact (profiles read, smoothed, rail placed).
+
+#include <optional>
+#include <string>
+
+#include "contact/rail_placement.hpp"
+#include "contact/rigid_contact.hpp"
+
+namespace tread::contact {
+
+struct ContactSetup {
+  std::string wheel_spec;        ///< built-in wheel, e.g. "S1002:h=28,e=32.5,slope=1:15"
+  std::string wheel_file;        ///< left wheel (and right unless wheel_right_file) CSV
+  std::string wheel_right_file;  ///< optional right wheel CSV
+  std::string rail_spec;         ///< built-in rail head, e.g. "60E1"
+  std::string rail_file;         ///< rail CSV
+  std::string rail_frame =
+      "upright";              ///< "upright" (own frame, placed by cant and gauge) | "track"
+  std::string cant = "1:40";  ///< rail inclination: "1:N", "none" or "0"
+  double gauge_mm = 1435.0;
+  double back_to_back_mm = 1360.0;
+  double r0_mm = 460.0;
+  std::optional<double> r0_right_mm;
+  double smooth_half_window_mm = 0.0;  ///< local quadratic smoothing of the profiles (0 = off)
+};
+
+/// "1:40" -> atan(1/40); "none" or "0" -> 0. Throws std::invalid_argument otherwise.
+double parse_cant_rad(const std::string& text);
+
+/// Reads the profiles and builds the contact. Throws std::runtime_error / std::invalid_argument
+/// with a message naming the offending option or file.
+RigidContact build_contact(const ContactSetup& setup);
+
+/// Smallest |y| of the table whose contact lies at the end of a profile (see
+/// WheelContact::at_profile_end), if any: the results from there on are not meaningful.
+std::optional<double> first_profile_end_abs_y(const ContactTable& table);
+
+}  // namespace tread::contact

@@ -1,0 +1,37 @@
+#pragma once
+// The command-line options of ContactSetup, shared by `tread contact` and `tread conicity`
+// (header-only: only the tread executable links CLI11).
+
+#include <CLI/CLI.hpp>
+
+#include "contact/contact_setup.hpp"
+
+namespace tread::contact {
+
+inline void add_contact_setup_options(CLI::App& cmd, ContactSetup& s) {
+  cmd.add_option("--wheel", s.wheel_spec,
+                 "built-in wheel profile, e.g. S1002[:h=28,e=32.5,slope=1:15]");
+  cmd.add_option("--wheel-file", s.wheel_file,
+                 "wheel profile CSV y_mm,z_mm (left wheel; also the right unless "
+                 "--wheel-right-file)");
+  cmd.add_option("--wheel-right-file", s.wheel_right_file, "right wheel profile CSV");
+  cmd.add_option("--rail", s.rail_spec, "built-in rail head: 60E1 or 54E1");
+  cmd.add_option("--rail-file", s.rail_file, "rail profile CSV y_mm,z_mm");
+  cmd.add_option("--rail-frame", s.rail_frame,
+                 "frame of --rail-file: upright (own frame, placed by --cant and --gauge) or track "
+                 "(already in the running-circle frame; --cant/--gauge do not apply)")
+      ->capture_default_str();
+  cmd.add_option("--cant", s.cant, "rail inclination 1:N, or none")->capture_default_str();
+  cmd.add_option("--gauge", s.gauge_mm, "track gauge (mm), 14 mm below the top of rail")
+      ->capture_default_str();
+  cmd.add_option("--b2b", s.back_to_back_mm, "wheel back-to-back distance (mm)")
+      ->capture_default_str();
+  cmd.add_option("--r0", s.r0_mm, "rolling radius at the taping line (mm), left wheel")
+      ->capture_default_str();
+  cmd.add_option("--r0-right", s.r0_right_mm, "right wheel radius (mm); default --r0");
+  cmd.add_option("--smooth", s.smooth_half_window_mm,
+                 "smooth measured profiles: local quadratic fit half window (mm), 0 = off")
+      ->capture_default_str();
+}
+
+}  // namespace tread::contact
