@@ -1,0 +1,59 @@
+// `tread pac plot`: draw PAC89/PAC94 curves (Fx(κ), Fy(α), Mz(α) at several loads, combined-slip
+// envelope) from a Chrono JSON coefficient file or an Adams .tir file, to PNG or SVG via gnuplot.
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "tir/pac_coefficients.hpp"
+#include "tir/pac_plot.hpp"
+#include "tir/tir_file.hpp"
+
+namespace tread::cli {
+
+namespace {
+
+void add_pac_command(CLI::App& app) {
+  auto* pac = app.add_subcommand("pac", "PAC89 / PAC94 tyre models");
+  pac->require_subcommand(1);
+  auto* plot = pac->add_subcommand("plot", "Plot PAC89/PAC94 curves to PNG or SVG (gnuplot)");
+  struct Options {
+    std::string json;
+    std::string tir;
+    std::string output = "pac_curves.png";
+    int model = 89;
+    std::vector<double> loads = {2000.0, 4000.0, 6000.0, 10000.0};
+  };
+  static Options opt;
+  auto* src = plot->add_option_group("source")->require_option(1);
+  src->add_option("--json", opt.json, "Chrono Pac89Tire JSON coefficient file")
+      ->check(CLI::ExistingFile);
+  src->add_option("--tir", opt.tir, "Adams PAC89/PAC94 .tir file")->check(CLI::ExistingFile);
+  plot->add_option("--model", opt.model, "89 or 94")
+      ->check(CLI::IsMember({89, 94}))
+      ->capture_default_str();
+  plot->add_option("--loads", opt.loads, "wheel loads in N")->capture_default_str();
+  plot->add_option("--output,-o", opt.output, ".png or .svg")->capture_default_str();
+  plot->callback([] {
+    const auto coeff = opt.json.empty() ? tir::pac_from_tir(tir::read_tir(opt.tir))
+                                        : tir::pac_from_chrono_json(opt.json);
+    if (!coeff.missing.empty()) {
+      std::cerr << "tread pac plot: " << coeff.missing.size()
+                << " coefficients missing, taken as 0 (first: " << coeff.missing.front() << ")\n";
+    }
+    tir::PacPlotOptions po;
+    po.model = opt.model == 94 ? tir::PacModel::kPac94 : tir::PacModel::kPac89;
+    po.loads_n = opt.loads;
+    po.title = (opt.model == 94 ? "PAC94 " : "PAC89 ") +
+               std::filesystem::path(opt.json.empty() ? opt.tir : opt.json).filename().string();
+    tir::run_gnuplot(tir::pac_plot_script(coeff.params, po, opt.output));
+    std::cout << "wrote " << opt.output << '\n';
+  });
+}
+
+}  // namespace
+
+TREAD_REGISTER_COMMAND("pac", add_pac_command);
+
+}  // namespace tread::cli

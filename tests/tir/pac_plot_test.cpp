@@ -1,0 +1,75 @@
+// The PAC plot script: one datablock per load plus four combined-slip blocks, each with the
+// requested number of samples; gnuplot turns it into a PNG and an SVG.
+#include "tir/pac_plot.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "golden_path.hpp"
+#include "tir/pac_coefficients.hpp"
+
+namespace {
+
+std::filesystem::path tmp_dir() {
+  const char* env = std::getenv("TREAD_TEST_TMP");
+  auto dir = std::filesystem::path(env != nullptr ? env : "/tmp") / "pac_plot_test";
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+tread::pac::PacParams<double> hmmwv() {
+  const auto path = tread::testing::refdata("tir/chrono_HMMWV_Pac89Tire.json");
+  EXPECT_TRUE(std::filesystem::exists(path)) << path;
+  return tread::tir::pac_from_chrono_json(path).params;
+}
+
+TEST(PacPlot, ScriptHasOneBlockPerLoadWithAllSamples) {
+  tread::tir::PacPlotOptions o;
+  o.loads_n = {3000.0, 5000.0};
+  o.points = 11;
+  const std::string script = tread::tir::pac_plot_script(hmmwv(), o, "x.png");
+  std::istringstream in(script);
+  std::string line;
+  int blocks = 0;
+  int rows = 0;
+  bool inside = false;
+  while (std::getline(in, line)) {
+    if (line.find("<< EOD") != std::string::npos) {
+      ++blocks;
+      inside = true;
+    } else if (line == "EOD") {
+      inside = false;
+    } else if (inside) {
+      ++rows;
+    }
+  }
+  EXPECT_EQ(blocks, 2 + 4);
+  EXPECT_EQ(rows, 11 * (2 + 4));
+  EXPECT_NE(script.find("pngcairo"), std::string::npos);
+  EXPECT_THROW((void)tread::tir::pac_plot_script(hmmwv(), o, "x.jpg"), std::invalid_argument);
+}
+
+TEST(PacPlot, GnuplotWritesPngAndSvg) {
+  for (const char* name : {"hmmwv.png", "hmmwv.svg"}) {
+    const auto out = tmp_dir() / name;
+    std::filesystem::remove(out);
+    tread::tir::run_gnuplot(tread::tir::pac_plot_script(hmmwv(), {}, out));
+    ASSERT_TRUE(std::filesystem::exists(out)) << out;
+    std::ifstream f(out, std::ios::binary);
+    std::string head(8, '\0');
+    f.read(head.data(), 8);
+    if (std::string(name).ends_with(".png")) {
+      EXPECT_EQ(head.substr(1, 3), "PNG");
+    } else {
+      EXPECT_NE(head.find('<'), std::string::npos);
+    }
+    EXPECT_GT(std::filesystem::file_size(out), 10000U);
+  }
+}
+
+}  // namespace
