@@ -1,7 +1,9 @@
 #pragma once
 // Test helper: a numeric CSV with a header row, columns looked up by name. Lines starting with '#'
-// are comments. Values are parsed with strtod (so "NaN", "Inf", "-Inf" read as such).
+// are comments. Values are parsed with strtod (so "NaN", "Inf", "-Inf" read as such); other text
+// cells read as NaN.
 
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -60,10 +62,8 @@ inline CsvTable read_csv(const std::string& path) {
     for (const std::string& c : cells) {
       char* end = nullptr;
       const double v = std::strtod(c.c_str(), &end);
-      if (end == c.c_str()) {
-        throw std::runtime_error(path + ":" + std::to_string(line_no) + ": not a number: " + c);
-      }
-      row.push_back(v);
+      // Text cells (e.g. a status column) read as NaN.
+      row.push_back(end == c.c_str() ? std::nan("") : v);
     }
     table.rows.push_back(std::move(row));
   }
