@@ -1,0 +1,56 @@
+#pragma once
+// candump log format (can-utils `candump -l`, read by canplayer):
+//   (seconds.micros) iface ID#DATA         classic; ID 3 hex digits (11-bit) or 8 (29-bit)
+//   (seconds.micros) iface ID##FDATA       FD; F = one hex digit of flags (1 = BRS)
+// Error frames carry CAN_ERR_FLAG (0x20000000) in an 8-digit ID.
+
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "proto/can_frame.hpp"
+
+namespace tread::host {
+
+struct LoggedFrame {
+  std::int64_t time_ns{0};  ///< microsecond resolution
+  std::string interface;
+  proto::CanFrame frame{};
+};
+
+/// One log line (no newline) into `out`, which must hold at least kCandumpLineMax characters.
+/// Returns the length. Allocation-free: usable from the real-time loop.
+inline constexpr std::size_t kCandumpLineMax = 192;
+std::size_t format_candump_line(const proto::CanFrame& frame, std::int64_t time_ns,
+                                std::string_view interface, char* out) noexcept;
+
+/// Parses one line. Throws std::runtime_error naming `where` ("file:line") on malformed input.
+LoggedFrame parse_candump_line(std::string_view line, const std::string& where);
+
+/// Reads a whole log; errors name the file and line.
+std::vector<LoggedFrame> read_candump_log(const std::filesystem::path& path);
+
+/// Writes frames to a FILE through a fixed buffer: no allocation after open.
+class CandumpWriter {
+ public:
+  CandumpWriter() = default;
+  CandumpWriter(const CandumpWriter&) = delete;
+  CandumpWriter& operator=(const CandumpWriter&) = delete;
+  ~CandumpWriter();
+
+  /// Opens (truncates) `path`; throws std::runtime_error if it cannot.
+  void open(const std::filesystem::path& path, std::string interface);
+  [[nodiscard]] bool is_open() const noexcept { return file_ != nullptr; }
+  void write(const proto::CanFrame& frame, std::int64_t time_ns) noexcept;
+  void close() noexcept;
+
+ private:
+  std::FILE* file_{nullptr};
+  std::string interface_;
+  std::vector<char> buffer_;
+};
+
+}  // namespace tread::host

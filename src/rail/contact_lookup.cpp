@@ -1,0 +1,111 @@
+#include "rail/contact_lookup.hpp"
+
+#include <cmath>
+
+namespace tread::rail {
+namespace {
+
+struct Position {
+  std::uint32_t index;  ///< row below y
+  float fraction;       ///< 0..1 toward the next row
+  Status status;
+};
+
+Position locate(float y_first, float y_step, std::uint32_t count, float y) noexcept {
+  if (!std::isfinite(y)) {
+    return {0, 0.0F, Status::out_of_range};
+  }
+  const float u = (y - y_first) / y_step;
+  const auto last = static_cast<float>(count - 1U);
+  if (u <= 0.0F) {
+    return {0, 0.0F, u < 0.0F ? Status::out_of_range : Status::ok};
+  }
+  if (u >= last) {
+    return {count - 2U, 1.0F, u > last ? Status::out_of_range : Status::ok};
+  }
+  const auto i = static_cast<std::uint32_t>(u);
+  const std::uint32_t index = i < count - 1U ? i : count - 2U;
+  return {index, u - static_cast<float>(index), Status::ok};
+}
+
+inline float lerp(const float* column, const Position& p) noexcept {
+  const float a = column[p.index];
+  const float b = column[p.index + 1U];
+  return a + (b - a) * p.fraction;
+}
+
+bool valid(std::uint32_t count, float step) noexcept {
+  return count >= 2U && step > 0.0F;
+}
+
+}  // namespace
+
+Result<ContactSample> lookup(const ContactTableF32& t, float y_mm) noexcept {
+  Result<ContactSample> r;
+  if (!valid(t.count, t.y_step_mm) || t.r_left_mm == nullptr || t.r_right_mm == nullptr ||
+      t.delta_r_mm == nullptr || t.gamma_left_rad == nullptr || t.gamma_right_rad == nullptr) {
+    r.status = Status::invalid_argument;
+    return r;
+  }
+  const Position p = locate(t.y_first_mm, t.y_step_mm, t.count, y_mm);
+  r.status = p.status;
+  r.value.r_left_mm = lerp(t.r_left_mm, p);
+  r.value.r_right_mm = lerp(t.r_right_mm, p);
+  r.value.delta_r_mm = lerp(t.delta_r_mm, p);
+  r.value.gamma_left_rad = lerp(t.gamma_left_rad, p);
+  r.value.gamma_right_rad = lerp(t.gamma_right_rad, p);
+  return r;
+}
+
+Result<ContactSampleQ> lookup(const ContactTableQ& t, std::int32_t y) noexcept {
+  Result<ContactSampleQ> r;
+  if (t.count < 2U || t.y_step <= 0 || t.r_left == nullptr || t.r_right == nullptr ||
+      t.delta_r == nullptr || t.gamma_left == nullptr || t.gamma_right == nullptr) {
+    r.status = Status::invalid_argument;
+    return r;
+  }
+  const std::int64_t span = static_cast<std::int64_t>(t.count - 1U) * t.y_step;
+  std::int64_t offset = static_cast<std::int64_t>(y) - t.y_first;
+  if (offset < 0) {
+    offset = 0;
+    r.status = Status::out_of_range;
+  } else if (offset > span) {
+    offset = span;
+    r.status = Status::out_of_range;
+  }
+  auto index = static_cast<std::uint32_t>(offset / t.y_step);
+  std::int64_t rem = offset % t.y_step;
+  if (index >= t.count - 1U) {
+    index = t.count - 2U;
+    rem = t.y_step;
+  }
+  const auto lerp_q = [&](const std::int32_t* c) {
+    const std::int64_t a = c[index];
+    const std::int64_t b = c[index + 1U];
+    const std::int64_t num = (b - a) * rem;
+    // Round to nearest, symmetric for negative differences.
+    const std::int64_t half = t.y_step / 2;
+    const std::int64_t q = num >= 0 ? (num + half) / t.y_step : -((-num + half) / t.y_step);
+    return static_cast<std::int32_t>(a + q);
+  };
+  r.value.r_left = lerp_q(t.r_left);
+  r.value.r_right = lerp_q(t.r_right);
+  r.value.delta_r = lerp_q(t.delta_r);
+  r.value.gamma_left = lerp_q(t.gamma_left);
+  r.value.gamma_right = lerp_q(t.gamma_right);
+  return r;
+}
+
+Result<float> lookup(const RadiusTableF32& t, float y_mm) noexcept {
+  Result<float> r;
+  if (!valid(t.count, t.y_step_mm) || t.z_mm == nullptr) {
+    r.status = Status::invalid_argument;
+    return r;
+  }
+  const Position p = locate(t.y_first_mm, t.y_step_mm, t.count, y_mm);
+  r.status = p.status;
+  r.value = lerp(t.z_mm, p);
+  return r;
+}
+
+}  // namespace tread::rail

@@ -1,0 +1,77 @@
+#pragma once
+// Wheel–rail contact lookup for the real-time core: tables over a uniform grid of wheelset lateral
+// displacement y, O(1) index + linear interpolation, no heap. Tables live in flash (generated into
+// lut/ at build time) or in RAM (built by a host tool at init); this view does not own them.
+//
+// Two storage variants: float32, and fixed point (int32; radii and Δr in units of 0.1 µm, angles in
+// µrad) for targets without an FPU. Out-of-range y is clamped to the table and reported.
+
+#include <cstdint>
+
+#include "core/status.hpp"
+
+namespace tread::rail {
+
+struct ContactSample {
+  float r_left_mm{0.0F};
+  float r_right_mm{0.0F};
+  float delta_r_mm{0.0F};
+  float gamma_left_rad{0.0F};
+  float gamma_right_rad{0.0F};
+};
+
+/// Column pointers of a float table with `count` ≥ 2 rows at y = y_first_mm + i·y_step_mm.
+struct ContactTableF32 {
+  float y_first_mm{0.0F};
+  float y_step_mm{0.0F};
+  std::uint32_t count{0};
+  const float* r_left_mm{nullptr};
+  const float* r_right_mm{nullptr};
+  const float* delta_r_mm{nullptr};
+  const float* gamma_left_rad{nullptr};
+  const float* gamma_right_rad{nullptr};
+};
+
+/// Fixed-point table: y in units of `y_unit_um` µm (integers), values as documented above.
+struct ContactTableQ {
+  std::int32_t y_first{0};  ///< first y, in y units
+  std::int32_t y_step{0};   ///< step, in y units (> 0)
+  std::uint32_t count{0};
+  const std::int32_t* r_left{nullptr};       ///< 0.1 µm
+  const std::int32_t* r_right{nullptr};      ///< 0.1 µm
+  const std::int32_t* delta_r{nullptr};      ///< 0.1 µm
+  const std::int32_t* gamma_left{nullptr};   ///< µrad
+  const std::int32_t* gamma_right{nullptr};  ///< µrad
+};
+inline constexpr std::int32_t kQLengthPerMm = 10'000;  ///< 0.1 µm units per mm
+inline constexpr std::int32_t kQAnglePerRad = 1'000'000;
+inline constexpr std::int32_t kQYPerMm = 1'000;  ///< y units per mm (1 µm)
+
+struct ContactSampleQ {
+  std::int32_t r_left{0};
+  std::int32_t r_right{0};
+  std::int32_t delta_r{0};
+  std::int32_t gamma_left{0};
+  std::int32_t gamma_right{0};
+};
+
+/// @retval Status::ok               y inside the table
+/// @retval Status::out_of_range     y outside (or not finite): the nearest end's values
+/// @retval Status::invalid_argument the table is empty or malformed
+Result<ContactSample> lookup(const ContactTableF32& table, float y_mm) noexcept;
+
+/// Fixed point: `y` in the table's y units (µm); integer-only arithmetic.
+Result<ContactSampleQ> lookup(const ContactTableQ& table, std::int32_t y) noexcept;
+
+/// A wheel profile's rolling radius r(y) = r0 + z(y) over a uniform grid (float).
+struct RadiusTableF32 {
+  float y_first_mm{0.0F};
+  float y_step_mm{0.0F};
+  std::uint32_t count{0};
+  const float* z_mm{nullptr};
+};
+
+/// z(y) (radius increase); as lookup() above.
+Result<float> lookup(const RadiusTableF32& table, float y_mm) noexcept;
+
+}  // namespace tread::rail
