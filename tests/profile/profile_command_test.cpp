@@ -1,0 +1,161 @@
+// End-to-end tests of `tread profile` (runs the built executable).
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "golden_path.hpp"
+#include "profile/profile_csv.hpp"
+#include "profile/simpack_profile.hpp"
+#include "profile/wheel_profile.hpp"
+
+namespace tread::profile {
+namespace {
+
+struct CommandResult {
+  int status;
+  std::string out;
+};
+
+CommandResult run(const std::string& args) {
+  const std::string command = std::string(TREAD_EXE) + " profile " + args + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  EXPECT_NE(pipe, nullptr);
+  std::string out;
+  std::array<char, 4096> buffer{};
+  std::size_t n = 0;
+  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) {
+    out.append(buffer.data(), n);
+  }
+  return {pclose(pipe), out};
+}
+
+std::filesystem::path tmp_dir() {
+  const char* env = std::getenv("TREAD_TEST_TMP");
+  std::filesystem::path dir = env != nullptr ? env : std::filesystem::temp_directory_path();
+  dir /= "profile_command_test";
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+TEST(ProfileCommandGolden, TableReproducesTheSeedAppendix) {
+  const CommandResult r =
+      run("--family S1002 --flange-height 28 --flange-thickness 32.5 --outer-slope 6.7");
+  ASSERT_EQ(r.status, 0) << r.out;
+  // The seed's appendix rows, from the seed text (its header names the first two columns the
+  // wrong way round: the first is y).
+  const auto seed = std::filesystem::path(::tread::testing::refdata_dir()).parent_path() / "seeds" /
+                    "001_a2af4bf31fc62f5e.txt";
+  std::ifstream in(seed);
+  ASSERT_TRUE(in) << seed;
+  std::string line;
+  bool in_table = false;
+  std::size_t compared = 0;
+  double worst = 0.0;
+  std::istringstream ours(r.out);
+  std::string our_line;
+  // Skip our header (4 lines before the column names, then the column names).
+  while (std::getline(ours, our_line) && our_line.rfind("y [mm]", 0) != 0) {
+  }
+  ASSERT_EQ(our_line, "y [mm]\tz [mm]\ttan");
+  while (std::getline(in, line)) {
+    if (line.find("Vzor ASCII tabulky") != std::string::npos) {
+      in_table = true;
+      continue;
+    }
+    double y = 0.0;
+    double z = 0.0;
+    double tan = 0.0;
+    if (!in_table || std::sscanf(line.c_str(), "%lf %lf %lf", &y, &z, &tan) != 3) {
+      if (in_table && compared > 0 && line.find("Změna") != std::string::npos) {
+        break;
+      }
+      continue;
+    }
+    ASSERT_TRUE(std::getline(ours, our_line));
+    double oy = 0.0;
+    double oz = 0.0;
+    double otan = 0.0;
+    ASSERT_EQ(std::sscanf(our_line.c_str(), "%lf %lf %lf", &oy, &oz, &otan), 3) << our_line;
+    EXPECT_NEAR(oy, y, 1e-12);
+    EXPECT_NEAR(oz, z, 1e-5) << our_line;
+    EXPECT_NEAR(otan, tan, 1e-5) << our_line;
+    worst = std::max({worst, std::fabs(oz - z), std::fabs(otan - tan)});
+    ++compared;
+  }
+  EXPECT_EQ(compared, 445u);
+  std::printf("tread profile table vs seed appendix: %zu rows, worst %.3g\n", compared, worst);
+  // The table runs on down to the wheel back, where the slope is vertical.
+  const std::string tail = r.out.substr(r.out.size() - 40);
+  EXPECT_NE(tail.find("-70.0\t9.51926\tinf\n"), std::string::npos) << tail;
+}
+
+TEST(ProfileCommand, CsvAndPrwOutputsReadBackToTheConstruction) {
+  const auto dir = tmp_dir();
+  const WheelProfile w({WheelFamily::kEps, 32.0, 29.5, OuterSlope::k10, 135.0, true});
+  const CommandResult csv =
+      run("--family EPS --flange-height 32 --flange-thickness 29.5 --outer-slope 10 "
+          "--width 135 --step 0.25 --format csv --output " +
+          (dir / "eps.csv").string());
+  ASSERT_EQ(csv.status, 0) << csv.out;
+  std::ifstream first_line_in(dir / "eps.csv");
+  std::string header;
+  std::getline(first_line_in, header);
+  EXPECT_EQ(header, "y_mm,z_mm,tan");
+  const SampledProfile p = read_profile_csv(dir / "eps.csv");
+  ASSERT_EQ(p.y_mm.size(), 541u);  // -70 … 65 at 0.25
+  EXPECT_DOUBLE_EQ(p.y_mm.front(), -70.0);
+  EXPECT_DOUBLE_EQ(p.y_mm.back(), 65.0);
+  for (std::size_t i = 0; i < p.y_mm.size(); ++i) {
+    EXPECT_NEAR(p.z_mm[i], w.at(p.y_mm[i]).z_mm, 6e-7);
+  }
+
+  const CommandResult prw =
+      run("--family EPS --flange-height 32 --flange-thickness 29.5 --outer-slope 10 "
+          "--width 135 --step 0.25 --format prw --output " +
+          (dir / "eps.prw").string());
+  ASSERT_EQ(prw.status, 0) << prw.out;
+  const SimpackProfile s = read_simpack_profile(dir / "eps.prw");
+  EXPECT_EQ(s.type, SimpackProfileType::kWheel);
+  ASSERT_EQ(s.profile.y_mm.size(), 541u);
+  for (std::size_t i = 0; i < s.profile.y_mm.size(); ++i) {
+    EXPECT_NEAR(s.profile.z_mm[i], w.at(s.profile.y_mm[i]).z_mm, 1e-9);
+  }
+}
+
+TEST(ProfileCommand, PlotWritesAPng) {
+  const auto png = tmp_dir() / "s1002.png";
+  std::filesystem::remove(png);
+  const CommandResult r = run("--family S1002 --flange-thickness 30 --output " +
+                              (tmp_dir() / "t.txt").string() + " --plot " + png.string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  std::ifstream in(png, std::ios::binary);
+  std::array<char, 8> magic{};
+  in.read(magic.data(), magic.size());
+  EXPECT_EQ(std::string(magic.data() + 1, 3), "PNG");
+  EXPECT_GT(std::filesystem::file_size(png), 10000u);
+}
+
+TEST(ProfileCommand, BadInputFailsWithAMessage) {
+  CommandResult r = run("--family P8");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.out.find("unknown wheel profile family 'P8'"), std::string::npos) << r.out;
+  r = run("--family S1002 --flange-height 31");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.out.find("flange height must be 28, 30 or 32"), std::string::npos) << r.out;
+  r = run("--family EPS --flange-thickness 30.2");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.out.find("Table D.1"), std::string::npos) << r.out;
+  r = run("--format xml");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.out.find("--format must be table, csv or prw"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace tread::profile
