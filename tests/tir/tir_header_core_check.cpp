@@ -2,6 +2,7 @@
 // in an ECU build. Also checks at compile time that lookups work in a constant expression.
 #include "tir_header_core_check.hpp"
 
+#include "generated/mf61_params_float.hpp"
 #include "generated/mf61_tyre.hpp"
 
 static_assert(tread::tir::find_entry(tyres::kMf61, "vertical", "fnomin") != nullptr);
@@ -14,3 +15,6 @@ double core_check_fnomin() noexcept {
   constexpr double fnomin = tread::tir::number_or(tyres::kMf61, "VERTICAL", "FNOMIN", -1.0);
   return fnomin;
 }
+
+// The MF parameter header too (what an ECU build includes).
+static_assert(tyres::kMf61Float.fit_type == tread::mf::FitType::mf61);
