@@ -35,9 +35,11 @@ MfTirParameters mf_parameters_from_tir(const tir::TirFile& file) {
 
   const std::optional<double> fittyp = file.number_any("FITTYP");
   if (!fittyp) {
-    result.params.fit_type = FitType::mf52;
+    result.params.fit_type = FitType::pac2002;
     if (!result.warning.empty()) result.warning += "\n";
-    result.warning += file.origin() + ": no FITTYP: evaluated with the MF 5.2 / PAC2002 equations";
+    result.warning +=
+        file.origin() +
+        ": no FITTYP: evaluated as Adams PAC2002 (MF 5.2 equations with LGAX/LGAY/LGAZ)";
   } else {
     const double f = *fittyp;
     long code = std::lround(f);

@@ -4,8 +4,8 @@
 // Every key of TREAD_MF_PARAMETER_LIST is looked up by name in any section (TNO key names are
 // unique across the standard sections); a missing key takes MFeval's default (the Pacejka-book
 // value) and is listed in `missing` / `warning`. FITTYP 6 and 21 select MF 5.2, 61 MF 6.1, 62
-// MF 6.2; a file without FITTYP (Adams PAC2002) is evaluated on the MF 5.2 path and says so in the
-// warning. TYRESIDE 'RIGHT' (any case) sets TyreSide::right, anything else left.
+// MF 6.2; a file without FITTYP (Adams PAC2002) selects FitType::pac2002 (the MF 5.2 path with
+// LGAX/LGAY/LGAZ) and says so in the warning. TYRESIDE 'RIGHT' (any case) sets TyreSide::right.
 
 #include <filesystem>
 #include <string>

@@ -106,6 +106,9 @@ struct Prepared {
 template <typename T>
 struct Basic {
   T alpha_star, gamma_star, lmux_star, lmuy_star, lmux_prime, lmuy_prime;
+  // Camber as seen by Fx and Mz: γ (and γ*) except for PAC2002, which scales it by LGAX / LGAZ
+  // (and γ* = γ·LGAY for Fy).
+  T gamma_x, gamma_star_x, gamma_z, gamma_star_z;
   T fz0_prime, alpha_prime, dfz, dpi;
 };
 
@@ -251,6 +254,17 @@ Basic<T> basic(const MfParameters<T>& p, const Prepared<T>& in, const MfOptions&
     b.alpha_star = in.alpha;
     b.gamma_star = in.gamma;
   }
+  b.gamma_x = in.gamma;
+  b.gamma_star_x = b.gamma_star;
+  b.gamma_z = in.gamma;
+  b.gamma_star_z = b.gamma_star;
+  if (p.fit_type == FitType::pac2002) {
+    b.gamma_x = in.gamma * p.lgax;
+    b.gamma_star_x = b.gamma_star * p.lgax;
+    b.gamma_z = in.gamma * p.lgaz;
+    b.gamma_star_z = b.gamma_star * p.lgaz;
+    b.gamma_star = b.gamma_star * p.lgay;
+  }
   const T vc_prime = vc + T(1e-6) * sgn_nz(vc);
   // |Vcx/Vc'| < 1 mathematically; the clamp only absorbs rounding.
   b.alpha_prime = acos(max_of(T(-1), min_of(T(1), vcx / vc_prime)));
@@ -276,7 +290,7 @@ T fx0(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>& b, const 
   }
   const T cx = p.pcx1 * p.lcx;
   mux = (p.pdx1 + p.pdx2 * dfz) * (T(1) + p.ppx3 * dpi + p.ppx4 * dpi * dpi) *
-        (T(1) - p.pdx3 * in.gamma * in.gamma) * b.lmux_star;
+        (T(1) - p.pdx3 * b.gamma_x * b.gamma_x) * b.lmux_star;
   if (is_zero(fz)) mux = T(0);
   const T dx = mux * fz * zeta1;
   kxk = fz * (p.pkx1 + p.pkx2 * dfz) * exp(p.pkx3 * dfz) *
@@ -309,7 +323,7 @@ Fy0Result<T> fy0(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>
   const T r0 = p.unloaded_radius_m;
   const T vcx = in.vx;
   const T eps = T(1e-6);
-  const bool mf52 = p.fit_type == FitType::mf52;
+  const bool mf52 = p.fit_type == FitType::mf52 || p.fit_type == FitType::pac2002;
 
   T zeta2 = T(1);
   T zeta3 = T(1);
@@ -412,7 +426,7 @@ T gxa(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>& b,
   if (options.use_limits && exa > T(1)) exa = T(1);
   const T shxa = p.rhx1;
   const T bxa =
-      (p.rbx1 + p.rbx3 * b.gamma_star * b.gamma_star) * cos(atan(p.rbx2 * in.kappa)) * p.lxal;
+      (p.rbx1 + p.rbx3 * b.gamma_star_x * b.gamma_star_x) * cos(atan(p.rbx2 * in.kappa)) * p.lxal;
   const T alphas = b.alpha_star + shxa;
   const T s0 = bxa * shxa;
   const T gxa0 = cos(cxa * atan(s0 - exa * (s0 - atan(s0))));
@@ -449,7 +463,7 @@ T my(const MfParameters<T>& p, const Prepared<T>& in, const T& fx) {
   const T v = vcx / p.longvl_mps;
   const T v2 = v * v;
   T m;
-  if (p.fit_type == FitType::mf52) {
+  if (p.fit_type == FitType::mf52 || p.fit_type == FitType::pac2002) {
     m = -r0 * fz * p.lmy * (p.qsy1 + p.qsy2 * (fx / fz0) + p.qsy3 * abs(v) + p.qsy4 * v2 * v2);
   } else {
     const T fz_ratio = fz / fz0;
@@ -544,8 +558,8 @@ MfOutput<T> evaluate(const MfParameters<T>& params, const MfInput<T>& input,
   if (options.use_limits) fz_mz = in.fz > T(0) ? in.fz_low_limit : T(0);
   const T dfz = b.dfz;
   const T dpi = b.dpi;
-  const T gs = b.gamma_star;
-  const T g = in.gamma;
+  const T gs = b.gamma_star_z;
+  const T g = b.gamma_z;
   const T sht = p.qhz1 + p.qhz2 * dfz + (p.qhz3 + p.qhz4 * dfz) * gs;
   const T kya_prime = y0.kya + eps * sgn_nz(y0.kya);
   const T shf = y0.shy + y0.svy / kya_prime;
@@ -617,7 +631,7 @@ MfOutput<T> evaluate(const MfParameters<T>& params, const MfInput<T>& input,
     mzr = mzr * in.reduction_smooth;
   }
   T mz;
-  if (p.fit_type == FitType::mf52) {
+  if (p.fit_type == FitType::mf52 || p.fit_type == FitType::pac2002) {
     mz = -t * (fy - svyk) + mzr + s * fx;
   } else {
     mz = -t * fy_prime + mzr + s * fx;
@@ -709,7 +723,7 @@ MfOutput<T> evaluate(const MfParameters<T>& params, const MfInput<T>& input,
         fz = (r0 - p.rim_radius_m - p.bottom_offst_m) * ncz;
       }
       fz = max_of(fz, T(0));
-      if (p.fit_type == FitType::mf52) {
+      if (p.fit_type == FitType::mf52 || p.fit_type == FitType::pac2002) {
         T q_a1 = p.q_a1;
         T q_a2 = p.q_a2;
         if (is_zero(q_a1) && is_zero(q_a2)) {
@@ -735,7 +749,7 @@ MfOutput<T> evaluate(const MfParameters<T>& params, const MfInput<T>& input,
                    (T(1) + p.pcfx1 * dfz_r + p.pcfx2 * dfz_r * dfz_r) * (T(1) + p.pcfx3 * dpi);
       out.cy_npm = p.lateral_stiffness_npm * (T(1) + p.pcfy1 * dfz_r + p.pcfy2 * dfz_r * dfz_r) *
                    (T(1) + p.pcfy3 * dpi);
-      if (p.fit_type == FitType::mf52) {
+      if (p.fit_type == FitType::mf52 || p.fit_type == FitType::pac2002) {
         out.sigmax_m =
             (p.ptx1 + p.ptx2 * dfz_r) * exp(-p.ptx3 * dfz_r) * p.lsgkp * r0 * in.fz / fz0;
         const T sigmayg = T(1) - p.pky3 * abs(in.gamma);

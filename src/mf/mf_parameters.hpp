@@ -109,6 +109,9 @@ namespace tread::mf {
   X(lmx, "SCALING_COEFFICIENTS", "LMX", 1.0, "Scale factor of overturning couple") \
   X(lmy, "SCALING_COEFFICIENTS", "LMY", 1.0, "Scale factor of rolling resistance torque") \
   X(lmp, "SCALING_COEFFICIENTS", "LMP", 1.0, "Scale factor of Parking Moment") \
+  X(lgax, "SCALING_COEFFICIENTS", "LGAX", 1.0, "PAC2002 scale factor of camber for Fx") \
+  X(lgay, "SCALING_COEFFICIENTS", "LGAY", 1.0, "PAC2002 scale factor of camber for Fy") \
+  X(lgaz, "SCALING_COEFFICIENTS", "LGAZ", 1.0, "PAC2002 scale factor of camber for Mz") \
   X(lsgkp, "SCALING_COEFFICIENTS", "LSGKP", 1.0, "MF5.2 scale factor of relaxation length of Fx") \
   X(lsgal, "SCALING_COEFFICIENTS", "LSGAL", 1.0, "MF5.2 scale factor of relaxation length of Fy") \
   /* [LONGITUDINAL_COEFFICIENTS] */ \
@@ -271,7 +274,11 @@ namespace tread::mf {
 
 /// FITTYP: which equation set. PAC2002 (Adams) shares the MF 5.2 equations in steady state.
 enum class FitType : std::uint8_t {
-  mf52 = 6,   ///< MF-Tyre 5.2 (FITTYP 6, also 21); PAC2002 files are evaluated on this path
+  mf52 = 6,  ///< MF-Tyre 5.2 (FITTYP 6, also 21), as MFeval evaluates it
+  /// Adams PAC2002 (a file without FITTYP) in steady state (ζ = 1): the MF 5.2 equations with the
+  /// camber scale factors γx = γ·LGAX (Fx), γy = γ·LGAY (Fy), γz = γ·LGAZ (Mz), which MFeval's
+  /// MF 5.2 path ignores. Same code path as mf52.
+  pac2002 = 2,
   mf61 = 61,  ///< MF 6.1 (FITTYP 61)
   mf62 = 62,  ///< MF 6.2 (FITTYP 62)
 };

@@ -39,11 +39,11 @@ TEST(MfParametersFromTir, Mf52FileTakesDefaults) {
   EXPECT_DOUBLE_EQ(r.params.pdy3, -7.088);
 }
 
-TEST(MfParametersFromTir, FileWithoutFittypIsMf52WithWarning) {
+TEST(MfParametersFromTir, FileWithoutFittypIsPac2002WithWarning) {
   const tir::TirFile f =
       tir::parse_tir("[MODEL]\nTYRESIDE = 'Right'\n[VERTICAL]\nFNOMIN = 5000\n", "x.tir");
   const MfTirParameters r = mf_parameters_from_tir(f);
-  EXPECT_EQ(r.params.fit_type, FitType::mf52);
+  EXPECT_EQ(r.params.fit_type, FitType::pac2002);
   EXPECT_EQ(r.params.tyre_side, TyreSide::right);
   EXPECT_DOUBLE_EQ(r.params.fnomin_n, 5000.0);
   EXPECT_NE(r.warning.find("no FITTYP"), std::string::npos);
