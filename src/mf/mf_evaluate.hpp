@@ -546,10 +546,14 @@ MfOutput<T> evaluate(const MfParameters<T>& params, const MfInput<T>& input,
   const Fy0Result<T> y0 = fy0(p, in, b, options, b.gamma_star, options.use_turn_slip);
 
   // Combined slip.
-  const T fx = gxa(p, in, b, options) * fx_pure;
+  // Combined slip (or, with options.combined off, the pure-slip forces).
   T svyk = T(0);
-  const T gyk = gyk_svyk(p, in, b, options, y0.muy, y0.zeta2, svyk);
-  const T fy = gyk * y0.fy0 + svyk;
+  T gyk = T(1);
+  if (options.combined || options.use_turn_slip) {
+    gyk = gyk_svyk(p, in, b, options, y0.muy, y0.zeta2, svyk);
+  }
+  const T fx = options.combined ? gxa(p, in, b, options) * fx_pure : fx_pure;
+  const T fy = options.combined ? gyk * y0.fy0 + svyk : y0.fy0;
 
   // Aligning moment: calculateMz0's trail and residual-moment coefficients.
   const T r0 = p.unloaded_radius_m;
@@ -610,31 +614,40 @@ MfOutput<T> evaluate(const MfParameters<T>& params, const MfInput<T>& input,
   const T br = (p.qbz9 * p.lky / b.lmuy_star + p.qbz10 * y0.by * y0.cy) * zeta6;
   const T cr = zeta7;
 
-  // calculateMz (combined).
-  const T kk = div_or(kxk, kya_prime, T(0)) * in.kappa;
-  const T tan_r = tan(alphar);
-  const T tan_t = tan(alphat);
-  const T alphar_eq = atan(sqrt(tan_r * tan_r + kk * kk)) * sgn(alphar);
-  const T alphat_eq = atan(sqrt(tan_t * tan_t + kk * kk)) * sgn(alphat);
-  const T s = r0 * (p.ssz1 + p.ssz2 * (fy / p.fnomin_n) + (p.ssz3 + p.ssz4 * dfz) * g) * p.ls;
-  T mzr = dr * cos(cr * atan(br * alphar_eq));
-  // Fy0 and Fy at γ = 0 (turn slip as in the main evaluation; Gyk with the original γ*).
-  const Fy0Result<T> y00 = fy0(p, in, b, options, T(0), options.use_turn_slip);
-  T svyk0 = T(0);
-  const T gyk0 = gyk_svyk(p, in, b, options, y00.muy, T(1), svyk0);
-  const T fy_prime = gyk0 * y00.fy0;
-  const T bta = bt * alphat_eq;
-  T t = dt * cos(ct * atan(bta - et * (bta - atan(bta)))) * cos(b.alpha_prime);
-  t = t * p.lfzo;
-  if (in.is_low_speed) {
-    t = t * in.reduction_smooth;
-    mzr = mzr * in.reduction_smooth;
-  }
   T mz;
-  if (p.fit_type == FitType::mf52 || p.fit_type == FitType::pac2002) {
-    mz = -t * (fy - svyk) + mzr + s * fx;
+  T t;
+  T mzr;
+  if (!options.combined) {
+    // Pure slip: calculateMz0's Mz0 = −t0·Fy0(γ = 0, no turn slip) + Mzr0.
+    const T bta = bt * alphat;
+    t = dt * cos(ct * atan(bta - et * (bta - atan(bta)))) * cos(b.alpha_prime);
+    mzr = dr * cos(cr * atan(br * alphar)) * cos(b.alpha_prime);
+    const Fy0Result<T> y00 = fy0(p, in, b, options, T(0), false);
+    mz = -t * y00.fy0 + mzr;
   } else {
-    mz = -t * fy_prime + mzr + s * fx;
+    // calculateMz (combined).
+    const T kk = div_or(kxk, kya_prime, T(0)) * in.kappa;
+    const T tan_r = tan(alphar);
+    const T tan_t = tan(alphat);
+    const T alphar_eq = atan(sqrt(tan_r * tan_r + kk * kk)) * sgn(alphar);
+    const T alphat_eq = atan(sqrt(tan_t * tan_t + kk * kk)) * sgn(alphat);
+    const T s = r0 * (p.ssz1 + p.ssz2 * (fy / p.fnomin_n) + (p.ssz3 + p.ssz4 * dfz) * g) * p.ls;
+    mzr = dr * cos(cr * atan(br * alphar_eq));
+    const T bta = bt * alphat_eq;
+    t = dt * cos(ct * atan(bta - et * (bta - atan(bta)))) * cos(b.alpha_prime);
+    t = t * p.lfzo;
+    if (in.is_low_speed) {
+      t = t * in.reduction_smooth;
+      mzr = mzr * in.reduction_smooth;
+    }
+    if (p.fit_type == FitType::mf52 || p.fit_type == FitType::pac2002) {
+      mz = -t * (fy - svyk) + mzr + s * fx;
+    } else {
+      // Fy' = Gyk·Fy0(γ = 0), turn slip as in the main evaluation. MFeval evaluates Gyk again at
+      // γ = 0 but with the original γ* (its starVar), which is the same Gyk.
+      const Fy0Result<T> y00 = fy0(p, in, b, options, T(0), options.use_turn_slip);
+      mz = -t * (gyk * y00.fy0) + mzr + s * fx;
+    }
   }
 
   out.fx_n = fx;

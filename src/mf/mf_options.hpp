@@ -23,6 +23,9 @@ struct MfOptions {
   bool use_alpha_star = false;  ///< useMode x2x
   bool use_turn_slip = false;   ///< useMode xx2
   MountedSide side = MountedSide::as_measured;
+  /// Combined slip (MFeval, Adams USE_MODE 4). False: uncombined (Adams USE_MODE 3): Fx = Fx0,
+  /// Fy = Fy0, Mz = Mz0 = −t0·Fy0(γ = 0) + Mzr0, as MFeval's calculateMz0.
+  bool combined = true;
   /// Also compute Re, Rl, rho, contact patch, Cx/Cy/Cz and relaxation lengths. Forces and moments
   /// do not need them (except the turn-slip spin, which needs the rolling speed from Re).
   bool extras = true;

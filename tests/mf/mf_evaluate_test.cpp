@@ -97,6 +97,25 @@ TEST(MfEvaluate, CombinedSlipReducesEachForce) {
   EXPECT_LT(std::fabs(comb_y.fy_n), std::fabs(pure_y.fy_n));
 }
 
+TEST(MfEvaluate, UncombinedIgnoresTheOtherSlip) {
+  MfParameters<double> p;
+  p.rhx1 = 0.01;  // so combined and pure differ even at zero other slip
+  MfOptions pure = options_from_use_mode(211).value;
+  pure.combined = false;
+  const MfOptions combined = options_from_use_mode(211).value;
+  const auto a = evaluate(p, make_input(4000.0, 0.07, 0.0, 0.02), pure);
+  const auto b = evaluate(p, make_input(4000.0, 0.07, 0.15, 0.02), pure);
+  EXPECT_DOUBLE_EQ(a.fx_n, b.fx_n);  // Fx0 does not depend on α
+  const auto c = evaluate(p, make_input(4000.0, 0.0, 0.1, 0.02), pure);
+  const auto d = evaluate(p, make_input(4000.0, 0.2, 0.1, 0.02), pure);
+  EXPECT_DOUBLE_EQ(c.fy_n, d.fy_n);  // Fy0 does not depend on κ
+  EXPECT_DOUBLE_EQ(c.mz_nm, d.mz_nm);
+  // At κ = 0 the combined Fy is Fy0 (Gyk = 1, SVyk = 0 for the book tyre).
+  EXPECT_NEAR(evaluate(p, make_input(4000.0, 0.0, 0.1, 0.02), combined).fy_n, c.fy_n, 1e-9);
+  EXPECT_LT(std::fabs(evaluate(p, make_input(4000.0, 0.07, 0.15, 0.02), combined).fx_n),
+            std::fabs(b.fx_n));
+}
+
 TEST(MfEvaluate, TyreSideMirroring) {
   MfParameters<double> left;
   left.tyre_side = TyreSide::left;

@@ -72,6 +72,7 @@ void fuzz(const std::string& tir_name, int cases) {
     for (int mode : {111, 112, 121, 122, 211, 212, 221, 222}) {
       MfOptions o = options_from_use_mode(mode).value;
       o.side = (i % 2 == 0) ? MountedSide::left : MountedSide::right;
+      o.combined = (i % 3 != 0);
       const MfOutput<T> out = evaluate(p, in, o);
       for (const auto& c : columns) {
         const T v = out.*(c.member);

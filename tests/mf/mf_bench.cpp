@@ -1,0 +1,77 @@
+// Google Benchmark of src/mf: ns per evaluation (one wheel, one instant), float and double, pure
+// and combined slip, forces and moments only (extras off) and with the extras (Re, Rl, patch...).
+// Parameters: ../shared/refdata/tir/MagicFormula61_Parameters.tir (MF 6.1), useMode 111.
+// Inputs cycle through 1024 precomputed physical operating points, so branches are not trivially
+// predicted. Target (issue 3): MF 6.1 combined Fx, Fy, Mz, Mx, My in float ≤ 100 ns per wheel.
+#include <benchmark/benchmark.h>
+
+#include <array>
+#include <random>
+
+#include "golden_path.hpp"
+#include "mf/mf_evaluate.hpp"
+#include "mf/mf_parameters_from_tir.hpp"
+
+namespace tread::mf {
+namespace {
+
+constexpr std::size_t kInputs = 1024;
+
+template <typename T>
+std::array<MfInput<T>, kInputs> make_inputs() {
+  std::mt19937 rng(42);
+  std::uniform_real_distribution<double> fz(500.0, 9000.0), kappa(-0.3, 0.3), alpha(-0.25, 0.25),
+      gamma(-0.08, 0.08), vx(5.0, 40.0);
+  std::array<MfInput<T>, kInputs> inputs{};
+  for (auto& in : inputs) {
+    in.fz_n = static_cast<T>(fz(rng));
+    in.kappa = static_cast<T>(kappa(rng));
+    in.alpha_rad = static_cast<T>(alpha(rng));
+    in.gamma_rad = static_cast<T>(gamma(rng));
+    in.vx_mps = static_cast<T>(vx(rng));
+  }
+  return inputs;
+}
+
+template <typename T>
+void bench(benchmark::State& state, const char* tir, bool combined, bool extras) {
+  const MfParameters<T> p =
+      convert_parameters<T>(load_mf_parameters(testing::refdata(std::string("tir/") + tir)).params);
+  MfOptions o = options_from_use_mode(111).value;
+  o.combined = combined;
+  o.extras = extras;
+  const auto inputs = make_inputs<T>();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    MfOutput<T> out = evaluate(p, inputs[i], o);
+    benchmark::DoNotOptimize(out);
+    i = (i + 1) % kInputs;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+constexpr const char* kMf61 = "MagicFormula61_Parameters.tir";
+constexpr const char* kMf52 = "MagicFormula52_Parameters.tir";
+
+void BM_Mf61_Float_Combined(benchmark::State& s) { bench<float>(s, kMf61, true, false); }
+void BM_Mf61_Float_Pure(benchmark::State& s) { bench<float>(s, kMf61, false, false); }
+void BM_Mf61_Double_Combined(benchmark::State& s) { bench<double>(s, kMf61, true, false); }
+void BM_Mf61_Double_Pure(benchmark::State& s) { bench<double>(s, kMf61, false, false); }
+void BM_Mf61_Float_Combined_Extras(benchmark::State& s) { bench<float>(s, kMf61, true, true); }
+void BM_Mf61_Double_Combined_Extras(benchmark::State& s) { bench<double>(s, kMf61, true, true); }
+void BM_Mf52_Float_Combined(benchmark::State& s) { bench<float>(s, kMf52, true, false); }
+void BM_Mf52_Double_Combined(benchmark::State& s) { bench<double>(s, kMf52, true, false); }
+
+BENCHMARK(BM_Mf61_Float_Combined);
+BENCHMARK(BM_Mf61_Float_Pure);
+BENCHMARK(BM_Mf61_Double_Combined);
+BENCHMARK(BM_Mf61_Double_Pure);
+BENCHMARK(BM_Mf61_Float_Combined_Extras);
+BENCHMARK(BM_Mf61_Double_Combined_Extras);
+BENCHMARK(BM_Mf52_Float_Combined);
+BENCHMARK(BM_Mf52_Double_Combined);
+
+}  // namespace
+}  // namespace tread::mf
+
+BENCHMARK_MAIN();
