@@ -334,7 +334,7 @@ TirFile parse_tir(std::string_view text, const std::string& origin) {
     std::string_view raw = text.substr(pos, eol - pos);
     pos = eol + 1;
     ++line_no;
-    if (!raw.empty() && raw.back() == '\r') raw.remove_suffix(1);
+    while (!raw.empty() && raw.back() == '\r') raw.remove_suffix(1);  // CRLF (and stray CRs)
     const std::string_view t = trim(raw);
 
     Line l;

@@ -13,7 +13,7 @@
 //   - Table sections ([SHAPE], [DEFLECTION_LOAD_CURVE], ...): lines that are not `KEY = value`
 //     (e.g. `{pen fz}` or rows of numbers) are kept verbatim as table rows. A section is either a
 //     key/value section or a table section: mixing the two in one section is an error.
-//   - Lines may end in CRLF; the CR is dropped.
+//   - Lines may end in CRLF; trailing CRs are dropped.
 //   - Section names and keys are looked up case-insensitively (ASCII); they are kept as written.
 // Errors (TirError, message `file:line: what`):
 //   - unterminated quote, text after a closing quote, `KEY =` without a value, a malformed section
