@@ -2,6 +2,7 @@
 // against Annex J and Annex K; bad input exits non-zero with a message.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -118,6 +119,54 @@ TEST(ContactCommand, BadInputFailsWithAMessage) {
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   EXPECT_NE(text.find("/nonexistent.csv: cannot open"), std::string::npos) << text;
   EXPECT_NE(run("contact " + en15302_args() + " --cant 1:x", tmp_dir() / "bad.out", err), 0);
+}
+
+// The built-in S1002 (profile construction) and the Manchester benchmark's S1002 file (SIMPACK
+// reader, points every ~0.39 mm) on the built-in 60E1 at 1:40 give the same equivalent conicity.
+// (delta r itself differs by up to a few 0.01 mm next to the contact jumps: S1002 on 60E1 1:40 is
+// nearly conformal and the file's linear interpolation moves the jumps slightly.)
+TEST(ContactCommand, BuiltinS1002MatchesTheManchesterS1002File) {
+  const fs::path prw = tread::testing::refdata("rail/manchester_benchmark/MBench_S1002_v3.prw");
+  ASSERT_TRUE(fs::exists(prw)) << prw;
+  const std::string common =
+      " --rail 60E1 --cant 1:40 --gauge 1435 --b2b 1360 --r0 460 --amplitudes 1,2,3,4,5,6";
+  const fs::path a = tmp_dir() / "builtin.csv";
+  const fs::path b = tmp_dir() / "manchester.csv";
+  ASSERT_EQ(run("conicity --wheel S1002:h=28,e=32.5,slope=1:15" + common, a, tmp_dir() / "a.log"),
+            0);
+  ASSERT_EQ(run("conicity --wheel-file " + prw.string() + common, b, tmp_dir() / "b.log"), 0);
+  const auto ca = read_csv(a);
+  const auto cb = read_csv(b);
+  ASSERT_EQ(ca.size(), 6u);
+  ASSERT_EQ(cb.size(), 6u);
+  for (std::size_t k = 0; k < ca.size(); ++k) {
+    EXPECT_NEAR(ca[k][1], cb[k][1], 0.002) << "amplitude " << ca[k][0];
+  }
+  // Odd symmetry of delta r for identical wheels on a symmetric track.
+  const fs::path table = tmp_dir() / "builtin_dr.csv";
+  ASSERT_EQ(run("contact --wheel S1002 --rail 60E1 --cant 1:40 --ymax 8 --step 0.1 --output " +
+                    table.string(),
+                tmp_dir() / "c.out", tmp_dir() / "c.log"),
+            0);
+  const auto dr = read_csv(table);
+  ASSERT_EQ(dr.size(), 161u);
+  for (std::size_t k = 0; k < dr.size(); ++k) {
+    EXPECT_NEAR(dr[k][3], -dr[dr.size() - 1 - k][3], 1e-9);
+  }
+}
+
+TEST(ContactCommand, AnyCantPlacesTheBuiltinHead) {
+  const fs::path out = tmp_dir() / "cant.csv";
+  ASSERT_EQ(run("contact --wheel S1002 --rail 54E1 --cant 1:30 --gauge 1437 --ymax 3 --step 1 "
+                "--output " +
+                    out.string(),
+                tmp_dir() / "cant.out", tmp_dir() / "cant.log"),
+            0);
+  const auto rows = read_csv(out);
+  ASSERT_EQ(rows.size(), 7u);
+  for (std::size_t k = 1; k < rows.size(); ++k) {
+    EXPECT_GT(rows[k][3], rows[k - 1][3]);  // delta r rises with y on the tread
+  }
 }
 
 }  // namespace
