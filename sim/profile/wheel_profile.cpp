@@ -225,6 +225,17 @@ WheelProfile::WheelProfile(const WheelParameters& parameters) : parameters_(para
   const double k_g = rf / (rf - kTipRadius_mm);
   const Point g1{fm.y + k_g * (tip_face.y - fm.y), fm.z + k_g * (tip_face.z - fm.z)};
   const double d1_y = -35.0 - s;
+  const auto mark = [this](const char* name, Point pt) { points_.push_back({name, pt.y, pt.z}); };
+  mark("Hm", back_centre);
+  mark("H1", h1);
+  mark("RIm", tip_back);
+  mark("S", s_point);
+  mark("REm", tip_face);
+  mark("G1", g1);
+  mark("Fm", fm);
+  mark("F1", f1);
+  mark("E1", e1);
+  mark("Dm", root_centre);
 
   add(arc_piece("flange back R20.5", back_centre, kBackRadius_mm, 1.0, kBackY_mm, h1.y), "", true);
   add(arc_piece("flange tip R12 (back)", tip_back, kTipRadius_mm, 1.0, 0.0, s_point.y), "H1", true);
@@ -233,10 +244,7 @@ WheelProfile::WheelProfile(const WheelParameters& parameters) : parameters_(para
   } else {
     pieces_.back().y1 = g1.y;  // the two R12 arcs coincide
   }
-  add(arc_piece("flange outer arc R" + std::to_string(static_cast<int>(rf * 10.0) / 10) +
-                    (near(rf, 21.5) ? ".5" : ""),
-                fm, rf, 1.0, 0.0, f1.y),
-      "G1", true);
+  add(arc_piece("flange outer arc", fm, rf, 1.0, 0.0, f1.y), "G1", true);
   add(line_piece("flank 70°", f1, -std::tan(kFlankAngle_rad), e1.y), "F1", true);
   pieces_.back().y0 = f1.y;
 
@@ -277,6 +285,9 @@ WheelProfile::WheelProfile(const WheelParameters& parameters) : parameters_(para
       const Point d1a{jm.y + rj / dd * (root_centre.y - jm.y),
                       jm.z + rj / dd * (root_centre.z - jm.z)};
       const Point c11a{jm.y - rj * (1.0 / 40.0) / q, jm.z - rj / q};
+      mark("Jm", jm);
+      mark("D1a", d1a);
+      mark("C11a", c11a);
       add(arc_piece("flange root R13", root_centre, kRootRadius_mm, -1.0, 0.0, d1_y), "E1", true);
       add(arc_piece("1/40 root R13", root_centre, kRootRadius_mm, -1.0, 0.0, d1a.y), "D1", true);
       add(arc_piece("1/40 transition R36", jm, rj, -1.0, 0.0, c11a.y), "D1a", true);
@@ -305,6 +316,9 @@ WheelProfile::WheelProfile(const WheelParameters& parameters) : parameters_(para
       const Point j100{-6.5, j330.z - std::sqrt(230.0 * 230.0 - 25.5 * 25.5)};
       const Point c11b{j330.y + 330.0 / 230.0 * (j100.y - j330.y),
                        j330.z + 330.0 / 230.0 * (j100.z - j330.z)};
+      mark("Jm", j100);
+      mark("Jm1", j330);
+      mark("C11b", c11b);
       const std::size_t n = en13715::kEpsTableCount[column];
       std::vector<double> xs(n);
       std::vector<double> zs(n);

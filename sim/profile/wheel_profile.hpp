@@ -69,6 +69,14 @@ struct ProfileJunction {
   std::size_t left;  ///< index of the piece ending here
 };
 
+/// A named point of the construction (the standard's names: Hm, H1, RIm, S, REm, G1, Fm, F1, E1,
+/// Dm; 1/40: Jm, D1a, C11a; EPS: Jm (R100 centre), Jm1 (R330 centre), C11b).
+struct ProfilePoint {
+  std::string name;
+  double y_mm;
+  double z_mm;
+};
+
 class WheelProfile {
  public:
   /// Throws std::invalid_argument for h not in {28, 30, 32}, e outside [28.5, 32.5], a width other
@@ -90,6 +98,7 @@ class WheelProfile {
   std::size_t piece_count() const { return pieces_.size(); }
   const std::string& piece_name(std::size_t index) const { return pieces_[index].name; }
   const std::vector<ProfileJunction>& junctions() const { return junctions_; }
+  const std::vector<ProfilePoint>& points() const { return points_; }
 
   /// Samples from y_min to y_max at `step_mm` (both ends included; the last step may be shorter).
   SampledProfile sample(double step_mm) const;
@@ -113,6 +122,7 @@ class WheelProfile {
   WheelParameters parameters_;
   std::vector<Piece> pieces_;
   std::vector<ProfileJunction> junctions_;
+  std::vector<ProfilePoint> points_;
   std::vector<MonotoneCubic> cubics_;
 };
 
