@@ -1,6 +1,7 @@
 #include "tir/pac_coefficients.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -50,6 +51,10 @@ PacCoefficients pac_from_tir(const TirFile& file) {
   out.params.unloaded_radius_m = optional_any(file, "UNLOADED_RADIUS", out.missing);
   out.params.rolling_resistance = optional_any(file, "ROLLING_RESISTANCE", out.missing);
   out.params.lateral_stiffness_npm = optional_any(file, "LATERAL_STIFFNESS", out.missing);
+  if (const auto side = file.text_any("TYRESIDE")) {
+    for (const char c : *side)
+      out.tyreside += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  }
   return out;
 }
 

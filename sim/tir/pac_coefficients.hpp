@@ -23,6 +23,9 @@ namespace tread::tir {
 struct PacCoefficients {
   pac::PacParams<double> params;
   std::vector<std::string> missing;  ///< keys that took their default (0)
+  /// TYRESIDE from the .tir in upper case ('LEFT', 'RIGHT', 'SYMMETRIC'), empty if absent; apply
+  /// pac::mirror_pac89/mirror_pac94 (pac/pac_mirror.hpp) for a tyre on the other side.
+  std::string tyreside;
 };
 
 PacCoefficients pac_from_tir(const TirFile& file);

@@ -161,8 +161,10 @@ TEST(PacLoaders, TirKeysAreCaseInsensitiveAndErrorsNameTheLine) {
   } catch (const tread::tir::TirError& e) {
     EXPECT_EQ(e.line(), 5);
   }
-  const auto g = tread::tir::parse_tir("[lateral_coefficients]\na0 = 1.3\nA3 = 1500\n", "p.tir");
+  const auto g = tread::tir::parse_tir(
+      "[MODEL]\nTYRESIDE = 'Right'\n[lateral_coefficients]\na0 = 1.3\nA3 = 1500\n", "p.tir");
   const auto c = tread::tir::pac_from_tir(g);
+  EXPECT_EQ(c.tyreside, "RIGHT");
   EXPECT_EQ(c.params.a[0], 1.3);
   EXPECT_EQ(c.params.a[3], 1500.0);
 }
