@@ -33,6 +33,7 @@
 // Scalar: float, double or ceres::Jet (all maths through unqualified calls, so ADL finds Jet's).
 // No heap, no exceptions, no virtual calls, no I/O.
 
+#include "mf/mf_math.hpp"
 #include "mf/mf_options.hpp"
 #include "mf/mf_parameters.hpp"
 #include "mf/mf_types.hpp"
@@ -45,13 +46,9 @@ namespace detail {
 
 using std::abs;
 using std::acos;
-using std::atan;
-using std::cos;
 using std::exp;
 using std::pow;
-using std::sin;
 using std::sqrt;
-using std::tan;
 
 template <typename T>
 constexpr bool is_zero(const T& x) {
@@ -109,7 +106,7 @@ struct Basic {
   // Camber as seen by Fx and Mz: γ (and γ*) except for PAC2002, which scales it by LGAX / LGAZ
   // (and γ* = γ·LGAY for Fy).
   T gamma_x, gamma_star_x, gamma_z, gamma_star_z;
-  T fz0_prime, alpha_prime, dfz, dpi;
+  T fz0_prime, cos_alpha_prime, dfz, dpi;  // cos α' = Vcx/Vc' (MFeval: cos(acos(Vcx/Vc')))
 };
 
 template <typename T>
@@ -125,7 +122,7 @@ void rolling_radius(const MfParameters<T>& p, Prepared<T>& in) {
   const T fz0 = p.fnomin_n;
   const T cz = p.vertical_stiffness_npm * (T(1) + p.pfz1 * in.dpi);
   const T deflection =
-      (fz0 / cz) * (p.dreff * atan(p.breff * (in.ufz / fz0)) + p.freff * (in.ufz / fz0));
+      (fz0 / cz) * (p.dreff * mf_atan(p.breff * (in.ufz / fz0)) + p.freff * (in.ufz / fz0));
   T re = r0 * T(0.965);
   T re_old = r0;
   T omega = T(0);
@@ -183,18 +180,19 @@ Prepared<T> prepare(const MfParameters<T>& p, const MfInput<T>& input, const MfO
   in.fz_low_limit = fz;
 
   if (options.use_limits) {
-    phit = phit * cos(alpha);  // "empirically discovered"
+    if (!is_zero(phit)) phit = phit * mf_cos(alpha);  // "empirically discovered"
     const T vxlow = p.vxlow_mps;
     in.is_low_speed = abs(vx) <= vxlow;
     T reduction_linear = T(1);
     if (in.is_low_speed) {
-      const T wvlow = T(0.5) * (T(1) + cos(pi<T>() * div_or(vx, vxlow, T(0))));
+      const T wvlow = T(0.5) * (T(1) + mf_cos(pi<T>() * div_or(vx, vxlow, T(0))));
       in.reduction_smooth = T(1) - wvlow;
       reduction_linear = abs(div_or(vx, vxlow, T(0)));
       in.ukappa_low = in.ukappa_low * reduction_linear;
       phit = phit * reduction_linear;
     }
-    const T vsy = tan(alpha) * vx;
+    // |Vx| + |tan α·Vx| < VXLOW needs |Vx| < VXLOW: skip the tan otherwise.
+    const T vsy = abs(vx) < vxlow ? mf_tan(alpha) * vx : T(0);
     if (vx < T(0)) phit = -phit;
     const T speed_sum = abs(vx) + abs(vsy);
     if (in.is_low_speed) kappa = kappa * reduction_linear;
@@ -226,12 +224,12 @@ Prepared<T> prepare(const MfParameters<T>& p, const MfInput<T>& input, const MfO
   if (options.use_turn_slip) {
     const T fz0_prime = p.lfzo * p.fnomin_n;
     const T dfz = (fz - fz0_prime) / fz0_prime;
-    const T vsy = -tan(alpha) * abs(vx);
+    const T vsy = -mf_tan(alpha) * abs(vx);
     T vc_prime = sqrt(vx * vx + vsy * vsy);
     in.epsilong = p.pecp1 * (T(1) + p.pecp2 * dfz);
     if (abs(vx) < p.vxlow_mps) vc_prime = p.vxlow_mps * sgn_nz(vx);
     const T psi_dot = -phit * vc_prime;
-    in.phi = div_or(psi_dot - (T(1) - in.epsilong) * in.omega * sin(gamma), vc_prime, T(0));
+    in.phi = div_or(psi_dot - (T(1) - in.epsilong) * in.omega * mf_sin(gamma), vc_prime, T(0));
   }
   in.status = status;
   return in;
@@ -242,14 +240,14 @@ template <typename T>
 Basic<T> basic(const MfParameters<T>& p, const Prepared<T>& in, const MfOptions& options) {
   Basic<T> b;
   const T vcx = in.vx;
-  const T vsy = tan(in.alpha) * abs(vcx);
+  const T vsy = mf_tan(in.alpha) * abs(vcx);
   const T vc = sqrt(vcx * vcx + vsy * vsy);
   b.fz0_prime = p.lfzo * p.fnomin_n;
   b.dfz = (in.fz - b.fz0_prime) / b.fz0_prime;
   b.dpi = (in.p - p.nompres_pa) / p.nompres_pa;
   if (options.use_alpha_star) {
-    b.alpha_star = tan(in.alpha) * sgn(vcx);
-    b.gamma_star = sin(in.gamma);
+    b.alpha_star = mf_tan(in.alpha) * sgn(vcx);
+    b.gamma_star = mf_sin(in.gamma);
   } else {
     b.alpha_star = in.alpha;
     b.gamma_star = in.gamma;
@@ -266,8 +264,9 @@ Basic<T> basic(const MfParameters<T>& p, const Prepared<T>& in, const MfOptions&
     b.gamma_star = b.gamma_star * p.lgay;
   }
   const T vc_prime = vc + T(1e-6) * sgn_nz(vc);
-  // |Vcx/Vc'| < 1 mathematically; the clamp only absorbs rounding.
-  b.alpha_prime = acos(max_of(T(-1), min_of(T(1), vcx / vc_prime)));
+  // |Vcx/Vc'| < 1 mathematically; the clamp only absorbs rounding. α' itself is only used as cos
+  // α'.
+  b.cos_alpha_prime = max_of(T(-1), min_of(T(1), vcx / vc_prime));
   // LMUV = 0 → LMU*_star = LMU*; A_mu = 1 → LMU*_prime = LMU*_star.
   b.lmux_star = p.lmux;
   b.lmuy_star = p.lmuy;
@@ -285,8 +284,8 @@ T fx0(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>& b, const 
   const T fz = in.fz;
   T zeta1 = T(1);
   if (options.use_turn_slip) {
-    const T bxp = p.pdxp1 * (T(1) + p.pdxp2 * dfz) * cos(atan(p.pdxp3 * in.kappa));
-    zeta1 = cos(atan(bxp * p.unloaded_radius_m * in.phi));
+    const T bxp = p.pdxp1 * (T(1) + p.pdxp2 * dfz) * cos_atan(p.pdxp3 * in.kappa);
+    zeta1 = cos_atan(bxp * p.unloaded_radius_m * in.phi);
   }
   const T cx = p.pcx1 * p.lcx;
   mux = (p.pdx1 + p.pdx2 * dfz) * (T(1) + p.ppx3 * dpi + p.ppx4 * dpi * dpi) *
@@ -306,7 +305,7 @@ T fx0(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>& b, const 
   T ex = (p.pex1 + p.pex2 * dfz + p.pex3 * dfz * dfz) * (T(1) - p.pex4 * sgn(kappax)) * p.lex;
   if (options.use_limits && ex > T(1)) ex = T(1);
   const T bk = bx * kappax;
-  T f = dx * sin(cx * atan(bk - ex * (bk - atan(bk)))) + svx;
+  T f = dx * mf_sin(cx * mf_atan(bk - ex * (bk - mf_atan(bk)))) + svx;
   if (in.vx < T(0)) f = -f;
   return f;
 }
@@ -328,20 +327,22 @@ Fy0Result<T> fy0(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>
   T zeta2 = T(1);
   T zeta3 = T(1);
   if (turn_slip) {
-    zeta3 = cos(atan(p.pkyp1 * r0 * r0 * in.phi * in.phi));
-    const T byp = p.pdyp1 * (T(1) + p.pdyp2 * dfz) * cos(atan(p.pdyp3 * tan(in.alpha)));
+    zeta3 = cos_atan(p.pkyp1 * r0 * r0 * in.phi * in.phi);
+    const T byp = p.pdyp1 * (T(1) + p.pdyp2 * dfz) * cos_atan(p.pdyp3 * mf_tan(in.alpha));
     const T r0phi = r0 * abs(in.phi);
-    zeta2 = cos(atan(byp * (r0phi + p.pdyp4 * sqrt(r0phi))));
+    zeta2 = cos_atan(byp * (r0phi + p.pdyp4 * sqrt(r0phi)));
   }
   r.zeta2 = zeta2;
 
   const T gs2 = gamma_star * gamma_star;
   r.kya = p.pky1 * fz0_prime * (T(1) + p.ppy1 * dpi) * (T(1) - p.pky3 * abs(gamma_star)) *
-          sin(p.pky4 * atan((fz / fz0_prime) / ((p.pky2 + p.pky5 * gs2) * (T(1) + p.ppy2 * dpi)))) *
+          mf_sin(p.pky4 *
+                 mf_atan((fz / fz0_prime) / ((p.pky2 + p.pky5 * gs2) * (T(1) + p.ppy2 * dpi)))) *
           zeta3 * p.lky;
   const T svyg = fz * (p.pvy3 + p.pvy4 * dfz) * gamma_star * p.lkyc * b.lmuy_prime * zeta2;
   if (mf52) {
-    const T kya0 = p.pky1 * fz0_prime * sin(p.pky4 * atan(fz / (p.pky2 * fz0_prime))) * p.lkyc;
+    const T kya0 =
+        p.pky1 * fz0_prime * mf_sin(p.pky4 * mf_atan(fz / (p.pky2 * fz0_prime))) * p.lkyc;
     r.kyg0 = (p.phy3 * kya0 + fz * (p.pvy3 + p.pvy4 * dfz)) * p.lkyc;
   } else {
     r.kyg0 = fz * (p.pky6 + p.pky7 * dfz) * (T(1) + p.ppy5 * dpi) * p.lkyc;
@@ -351,8 +352,8 @@ Fy0Result<T> fy0(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>
   T zeta4 = T(1);
   if (turn_slip) {
     const T kya0 = p.pky1 * fz0_prime * (T(1) + p.ppy1 * dpi) *
-                   sin(p.pky4 * atan((fz / fz0_prime) / (p.pky2 * (T(1) + p.ppy2 * dpi)))) * zeta3 *
-                   p.lky;
+                   mf_sin(p.pky4 * mf_atan((fz / fz0_prime) / (p.pky2 * (T(1) + p.ppy2 * dpi)))) *
+                   zeta3 * p.lky;
     const T kya_prime = r.kya + eps * sgn_nz(r.kya);
     const T kyao_prime = kya0 + eps * sgn_nz(kya0);
     const T chyp = p.phyp1;
@@ -362,7 +363,7 @@ Fy0Result<T> fy0(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>
     const T kyrp0 = div_or(r.kyg0, T(1) - in.epsilong, T(0));
     const T bhyp = div_or(kyrp0, chyp * dhyp * kyao_prime, T(0));
     const T x = bhyp * r0 * in.phi;
-    const T shyp = dhyp * sin(chyp * atan(x - ehyp * (x - atan(x)))) * sgn(vcx);
+    const T shyp = dhyp * mf_sin(chyp * mf_atan(x - ehyp * (x - mf_atan(x)))) * sgn(vcx);
     zeta0 = T(0);
     zeta4 = T(1) + shyp - svyg / kya_prime;
   }
@@ -388,7 +389,7 @@ Fy0Result<T> fy0(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>
   if (options.use_limits && ey > T(1)) ey = T(1);
   r.by = div_or(r.kya, r.cy * dy + eps * sgn_nz(dy), T(0));
   const T ba = r.by * alphay;
-  r.fy0 = dy * sin(r.cy * atan(ba - ey * (ba - atan(ba)))) + r.svy;
+  r.fy0 = dy * mf_sin(r.cy * mf_atan(ba - ey * (ba - mf_atan(ba)))) + r.svy;
   if (options.use_alpha_star && vcx < T(0)) r.fy0 = -r.fy0;
   if (is_zero(fz)) r.muy = T(0);
   return r;
@@ -400,19 +401,19 @@ T gyk_svyk(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>& b,
            const MfOptions& options, const T& muy, const T& zeta2, T& svyk) {
   const T dfz = b.dfz;
   const T dvyk = muy * in.fz * (p.rvy1 + p.rvy2 * dfz + p.rvy3 * b.gamma_star) *
-                 cos(atan(p.rvy4 * b.alpha_star)) * zeta2;
-  svyk = dvyk * sin(p.rvy5 * atan(p.rvy6 * in.kappa)) * p.lvyka;
+                 cos_atan(p.rvy4 * b.alpha_star) * zeta2;
+  svyk = dvyk * mf_sin(p.rvy5 * mf_atan(p.rvy6 * in.kappa)) * p.lvyka;
   const T shyk = p.rhy1 + p.rhy2 * dfz;
   T eyk = p.rey1 + p.rey2 * dfz;
   if (options.use_limits && eyk > T(1)) eyk = T(1);
   const T cyk = p.rcy1;
   const T byk = (p.rby1 + p.rby4 * b.gamma_star * b.gamma_star) *
-                cos(atan(p.rby2 * (b.alpha_star - p.rby3))) * p.lyka;
+                cos_atan(p.rby2 * (b.alpha_star - p.rby3)) * p.lyka;
   const T kappas = in.kappa + shyk;
   const T s0 = byk * shyk;
-  const T gyk0 = cos(cyk * atan(s0 - eyk * (s0 - atan(s0))));
+  const T gyk0 = is_zero(s0) ? T(1) : mf_cos(cyk * mf_atan(s0 - eyk * (s0 - mf_atan(s0))));
   const T s1 = byk * kappas;
-  const T gyk = div_or(cos(cyk * atan(s1 - eyk * (s1 - atan(s1)))), gyk0, T(1));
+  const T gyk = div_or(mf_cos(cyk * mf_atan(s1 - eyk * (s1 - mf_atan(s1)))), gyk0, T(1));
   if (in.is_low_speed) svyk = svyk * in.reduction_smooth;
   return gyk;
 }
@@ -426,12 +427,12 @@ T gxa(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>& b,
   if (options.use_limits && exa > T(1)) exa = T(1);
   const T shxa = p.rhx1;
   const T bxa =
-      (p.rbx1 + p.rbx3 * b.gamma_star_x * b.gamma_star_x) * cos(atan(p.rbx2 * in.kappa)) * p.lxal;
+      (p.rbx1 + p.rbx3 * b.gamma_star_x * b.gamma_star_x) * cos_atan(p.rbx2 * in.kappa) * p.lxal;
   const T alphas = b.alpha_star + shxa;
   const T s0 = bxa * shxa;
-  const T gxa0 = cos(cxa * atan(s0 - exa * (s0 - atan(s0))));
+  const T gxa0 = is_zero(s0) ? T(1) : mf_cos(cxa * mf_atan(s0 - exa * (s0 - mf_atan(s0))));
   const T s1 = bxa * alphas;
-  return div_or(cos(cxa * atan(s1 - exa * (s1 - atan(s1)))), gxa0, T(1));
+  return div_or(mf_cos(cxa * mf_atan(s1 - exa * (s1 - mf_atan(s1)))), gxa0, T(1));
 }
 
 /// calculateMx.
@@ -444,9 +445,9 @@ T mx(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>& b, const T
   return p.unloaded_radius_m * fz * p.lmx *
              (p.qsx1 * p.lvmx - p.qsx2 * g * (T(1) + p.ppmx1 * b.dpi) - p.qsx12 * g * abs(g) +
               p.qsx3 * fy / fz0 +
-              p.qsx4 * cos(p.qsx5 * atan((p.qsx6 * fz / fz0) * (p.qsx6 * fz / fz0))) *
-                  sin(p.qsx7 * g + p.qsx8 * atan(p.qsx9 * fy / fz0)) +
-              p.qsx10 * atan(p.qsx11 * fz / fz0) * g) +
+              p.qsx4 * mf_cos(p.qsx5 * mf_atan((p.qsx6 * fz / fz0) * (p.qsx6 * fz / fz0))) *
+                  mf_sin(p.qsx7 * g + p.qsx8 * mf_atan(p.qsx9 * fy / fz0)) +
+              p.qsx10 * mf_atan(p.qsx11 * fz / fz0) * g) +
          p.unloaded_radius_m * fy * p.lmx * (p.qsx13 + p.qsx14 * abs(g));
 }
 
@@ -467,11 +468,13 @@ T my(const MfParameters<T>& p, const Prepared<T>& in, const T& fx) {
     m = -r0 * fz * p.lmy * (p.qsy1 + p.qsy2 * (fx / fz0) + p.qsy3 * abs(v) + p.qsy4 * v2 * v2);
   } else {
     const T fz_ratio = fz / fz0;
-    const T load = fz_ratio > T(0) ? pow(fz_ratio, p.qsy7) : T(0);
+    const T load = fz_ratio > T(0) ? mf_pow(fz_ratio, p.qsy7) : T(0);
+    const T p_ratio = in.p / p.nompres_pa;
+    const T pressure = is_zero(p.qsy8) ? T(1) : mf_pow(p_ratio, p.qsy8);
     m = -r0 * fz0 * p.lmy *
         (p.qsy1 + p.qsy2 * (fx / fz0) + p.qsy3 * abs(v) + p.qsy4 * v2 * v2 +
          (p.qsy5 + p.qsy6 * fz_ratio) * in.gamma * in.gamma) *
-        (load * pow(in.p / p.nompres_pa, p.qsy8));
+        (load * pressure);
   }
   if (vcx < T(0)) m = -m;
   // Low-speed model ("empirically discovered").
@@ -480,7 +483,7 @@ T my(const MfParameters<T>& p, const Prepared<T>& in, const T& fx) {
   if (!(kappa < low_limit) && !(kappa > high_limit)) {
     // interpolate((−1, 0), (high_limit, π/2)) at κ
     const T reduction = (pi<T>() / T(2)) * (kappa + T(1)) / (high_limit + T(1));
-    m = m * sin(reduction);
+    m = m * mf_sin(reduction);
   }
   if (kappa < low_limit) m = -m;
   return m;
@@ -502,7 +505,7 @@ T fz62(const MfParameters<T>& p, const T& gamma, const T& omega, const T& romega
   const T den = (p.q_cam1 * romega + p.q_cam2 * romega * romega) * gamma;
   // MFeval: NaN (0/0 at γ = 0 or Q_CAM1 = Q_CAM2 = 0) → 0.
   T rho_zg = T(0);
-  if (!is_zero(den)) rho_zg = (num * num) * (rtw / T(8)) * abs(tan(gamma)) / (den * den);
+  if (!is_zero(den)) rho_zg = (num * num) * (rtw / T(8)) * abs(mf_tan(gamma)) / (den * den);
   rho_zg = rho_zg - p.q_cam3 * rho_zfr * abs(gamma);
   rho_z = max_of(rho_zfr + rho_zg, T(0));
   const T rho_r0 = rho_z / r0;
@@ -570,30 +573,30 @@ MfOutput<T> evaluate(const MfParameters<T>& params, const MfInput<T>& input,
   const T alphar = b.alpha_star + shf;
   const T alphat = b.alpha_star + sht;
   T zeta5 = T(1);
-  if (options.use_turn_slip) zeta5 = cos(atan(p.qdtp1 * r0 * in.phi));
+  if (options.use_turn_slip) zeta5 = cos_atan(p.qdtp1 * r0 * in.phi);
   const T dt = (p.qdz1 + p.qdz2 * dfz) * (T(1) - p.ppz1 * dpi) *
                (T(1) + p.qdz3 * g + p.qdz4 * g * g) * fz_mz * (r0 / b.fz0_prime) * p.ltr * zeta5;
   const T bt = (p.qbz1 + p.qbz2 * dfz + p.qbz3 * dfz * dfz) *
                (T(1) + p.qbz4 * g + p.qbz5 * abs(g)) * p.lky / b.lmuy_star;
   const T ct = p.qcz1;
   T et = (p.qez1 + p.qez2 * dfz + p.qez3 * dfz * dfz) *
-         (T(1) + (p.qez4 + p.qez5 * gs) * (T(2) / pi<T>()) * atan(bt * ct * alphat));
+         (T(1) + (p.qez4 + p.qez5 * gs) * (T(2) / pi<T>()) * mf_atan(bt * ct * alphat));
   if (options.use_limits && et > T(1)) et = T(1);
 
   T zeta0 = T(1), zeta2 = T(1), zeta6 = T(1), zeta7 = T(1), zeta8 = T(1);
   if (options.use_turn_slip) {
     zeta0 = T(0);
     zeta2 = y0.zeta2;
-    zeta6 = cos(atan(p.qbrp1 * r0 * in.phi));
+    zeta6 = cos_atan(p.qbrp1 * r0 * in.phi);
     T mzp_inf = p.qcrp1 * abs(y0.muy) * r0 * fz_mz * sqrt(fz_mz / b.fz0_prime) * p.lmp;
     if (mzp_inf < T(0)) mzp_inf = T(1e-6);
     const T cdrp = p.qdrp1;
-    const T ddrp = div_or(mzp_inf, sin(T(0.5) * pi<T>() * cdrp), T(0));
+    const T ddrp = div_or(mzp_inf, mf_sin(T(0.5) * pi<T>() * cdrp), T(0));
     const T kzgr0 =
         fz_mz * r0 * (p.qdz8 * p.qdz9 * dfz + (p.qdz10 + p.qdz11 * dfz * abs(g))) * p.lkzc;
     const T bdrp = div_or(kzgr0, cdrp * ddrp * (T(1) - in.epsilong), T(0));
-    const T drp = ddrp * sin(cdrp * atan(bdrp * r0 * in.phit));
-    const T mzp90 = mzp_inf * (T(2) / pi<T>()) * atan(p.qcrp2 * r0 * abs(in.phit)) * gyk;
+    const T drp = ddrp * mf_sin(cdrp * mf_atan(bdrp * r0 * in.phit));
+    const T mzp90 = mzp_inf * (T(2) / pi<T>()) * mf_atan(p.qcrp2 * r0 * abs(in.phit)) * gyk;
     // MFeval: acos(Mzp90/|Drp|), NaN for a ratio above 1 (e.g. 0/0 at φt = 0). Here the ratio
     // is clamped to [−1, 1], and Drp = 0 gives the turn-slip-free Cr = 1.
     if (is_zero(drp)) {
@@ -609,7 +612,7 @@ MfOutput<T> evaluate(const MfParameters<T>& params, const MfInput<T>& input,
           ((p.qdz6 + p.qdz7 * dfz) * p.lres * zeta2 +
            ((p.qdz8 + p.qdz9 * dfz) * (T(1) + p.ppz2 * dpi) + (p.qdz10 + p.qdz11 * dfz) * abs(gs)) *
                gs * p.lkzc * zeta0) *
-          b.lmuy_star * sgn(in.vx) * cos(b.alpha_star) +
+          b.lmuy_star * sgn(in.vx) * mf_cos(b.alpha_star) +
       zeta8 - T(1);
   const T br = (p.qbz9 * p.lky / b.lmuy_star + p.qbz10 * y0.by * y0.cy) * zeta6;
   const T cr = zeta7;
@@ -620,21 +623,21 @@ MfOutput<T> evaluate(const MfParameters<T>& params, const MfInput<T>& input,
   if (!options.combined) {
     // Pure slip: calculateMz0's Mz0 = −t0·Fy0(γ = 0, no turn slip) + Mzr0.
     const T bta = bt * alphat;
-    t = dt * cos(ct * atan(bta - et * (bta - atan(bta)))) * cos(b.alpha_prime);
-    mzr = dr * cos(cr * atan(br * alphar)) * cos(b.alpha_prime);
+    t = dt * mf_cos(ct * mf_atan(bta - et * (bta - mf_atan(bta)))) * b.cos_alpha_prime;
+    mzr = dr * mf_cos(cr * mf_atan(br * alphar)) * b.cos_alpha_prime;
     const Fy0Result<T> y00 = fy0(p, in, b, options, T(0), false);
     mz = -t * y00.fy0 + mzr;
   } else {
     // calculateMz (combined).
     const T kk = div_or(kxk, kya_prime, T(0)) * in.kappa;
-    const T tan_r = tan(alphar);
-    const T tan_t = tan(alphat);
-    const T alphar_eq = atan(sqrt(tan_r * tan_r + kk * kk)) * sgn(alphar);
-    const T alphat_eq = atan(sqrt(tan_t * tan_t + kk * kk)) * sgn(alphat);
+    const T tan_r = mf_tan(alphar);
+    const T tan_t = mf_tan(alphat);
+    const T alphar_eq = mf_atan(sqrt(tan_r * tan_r + kk * kk)) * sgn(alphar);
+    const T alphat_eq = mf_atan(sqrt(tan_t * tan_t + kk * kk)) * sgn(alphat);
     const T s = r0 * (p.ssz1 + p.ssz2 * (fy / p.fnomin_n) + (p.ssz3 + p.ssz4 * dfz) * g) * p.ls;
-    mzr = dr * cos(cr * atan(br * alphar_eq));
+    mzr = dr * mf_cos(cr * mf_atan(br * alphar_eq));
     const T bta = bt * alphat_eq;
-    t = dt * cos(ct * atan(bta - et * (bta - atan(bta)))) * cos(b.alpha_prime);
+    t = dt * mf_cos(ct * mf_atan(bta - et * (bta - mf_atan(bta)))) * b.cos_alpha_prime;
     t = t * p.lfzo;
     if (in.is_low_speed) {
       t = t * in.reduction_smooth;
@@ -767,7 +770,7 @@ MfOutput<T> evaluate(const MfParameters<T>& params, const MfInput<T>& input,
             (p.ptx1 + p.ptx2 * dfz_r) * exp(-p.ptx3 * dfz_r) * p.lsgkp * r0 * in.fz / fz0;
         const T sigmayg = T(1) - p.pky3 * abs(in.gamma);
         const T ptyfzn = p.pty2 * b.fz0_prime;
-        out.sigmay_m = p.pty1 * sin(T(2) * atan(div_or(in.fz, ptyfzn, T(0)))) * sigmayg * r0 *
+        out.sigmay_m = p.pty1 * mf_sin(T(2) * mf_atan(div_or(in.fz, ptyfzn, T(0)))) * sigmayg * r0 *
                        p.lfzo * p.lsgal;
       } else {
         out.sigmax_m = abs(div_or(kxk, out.cx_npm, T(0)));
