@@ -53,14 +53,30 @@ void bench(benchmark::State& state, const char* tir, bool combined, bool extras)
 constexpr const char* kMf61 = "MagicFormula61_Parameters.tir";
 constexpr const char* kMf52 = "MagicFormula52_Parameters.tir";
 
-void BM_Mf61_Float_Combined(benchmark::State& s) { bench<float>(s, kMf61, true, false); }
-void BM_Mf61_Float_Pure(benchmark::State& s) { bench<float>(s, kMf61, false, false); }
-void BM_Mf61_Double_Combined(benchmark::State& s) { bench<double>(s, kMf61, true, false); }
-void BM_Mf61_Double_Pure(benchmark::State& s) { bench<double>(s, kMf61, false, false); }
-void BM_Mf61_Float_Combined_Extras(benchmark::State& s) { bench<float>(s, kMf61, true, true); }
-void BM_Mf61_Double_Combined_Extras(benchmark::State& s) { bench<double>(s, kMf61, true, true); }
-void BM_Mf52_Float_Combined(benchmark::State& s) { bench<float>(s, kMf52, true, false); }
-void BM_Mf52_Double_Combined(benchmark::State& s) { bench<double>(s, kMf52, true, false); }
+void BM_Mf61_Float_Combined(benchmark::State& s) {
+  bench<float>(s, kMf61, true, false);
+}
+void BM_Mf61_Float_Pure(benchmark::State& s) {
+  bench<float>(s, kMf61, false, false);
+}
+void BM_Mf61_Double_Combined(benchmark::State& s) {
+  bench<double>(s, kMf61, true, false);
+}
+void BM_Mf61_Double_Pure(benchmark::State& s) {
+  bench<double>(s, kMf61, false, false);
+}
+void BM_Mf61_Float_Combined_Extras(benchmark::State& s) {
+  bench<float>(s, kMf61, true, true);
+}
+void BM_Mf61_Double_Combined_Extras(benchmark::State& s) {
+  bench<double>(s, kMf61, true, true);
+}
+void BM_Mf52_Float_Combined(benchmark::State& s) {
+  bench<float>(s, kMf52, true, false);
+}
+void BM_Mf52_Double_Combined(benchmark::State& s) {
+  bench<double>(s, kMf52, true, false);
+}
 
 BENCHMARK(BM_Mf61_Float_Combined);
 BENCHMARK(BM_Mf61_Float_Pure);
