@@ -1,6 +1,7 @@
 // `tread contact`: the rigid wheel–rail contact table over wheelset displacement y (no roll, no
 // penetration; global vertical-gap minimum per wheel), as CSV
 // y_mm,r_left_mm,r_right_mm,delta_r_mm,gamma_left_rad,gamma_right_rad,yc_left_mm,yc_right_mm.
+#include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -19,10 +20,13 @@ void write_table(std::ostream& out, const contact::ContactTable& t) {
   out << "y_mm,r_left_mm,r_right_mm,delta_r_mm,gamma_left_rad,gamma_right_rad,yc_left_mm,"
          "yc_right_mm\n";
   out << std::fixed;
+  // Values that round to zero print as 0.000000, never -0.000000.
+  auto v = [](double x) { return std::abs(x) < 5e-7 ? 0.0 : x; };
   for (std::size_t k = 0; k < t.y_mm.size(); ++k) {
-    out << std::setprecision(4) << t.y_mm[k] << ',' << std::setprecision(6) << t.r_left_mm[k] << ','
-        << t.r_right_mm[k] << ',' << t.delta_r_mm[k] << ',' << t.gamma_left_rad[k] << ','
-        << t.gamma_right_rad[k] << ',' << t.yc_left_mm[k] << ',' << t.yc_right_mm[k] << '\n';
+    out << std::setprecision(4) << v(t.y_mm[k]) << ',' << std::setprecision(6) << v(t.r_left_mm[k])
+        << ',' << v(t.r_right_mm[k]) << ',' << v(t.delta_r_mm[k]) << ',' << v(t.gamma_left_rad[k])
+        << ',' << v(t.gamma_right_rad[k]) << ',' << v(t.yc_left_mm[k]) << ',' << v(t.yc_right_mm[k])
+        << '\n';
   }
 }
 

@@ -54,24 +54,30 @@ double ProfileFunction::slope_at(double y_mm, double half_window_mm) const {
   while (hi + 1 < y_mm_.size() && y_mm_[hi + 1] <= y + half_window_mm) {
     ++hi;
   }
-  // Least-squares line through samples lo..hi, centred on y for conditioning.
-  double sx = 0.0;
-  double sz = 0.0;
-  const auto n = static_cast<double>(hi - lo + 1);
-  for (std::size_t i = lo; i <= hi; ++i) {
-    sx += y_mm_[i] - y;
-    sz += z_mm_[i];
+  // Least-squares parabola z = c0 + c1 d + c2 d^2 in d = y_i - y through samples lo..hi; the
+  // slope at y is c1 (exact for parabolas even when the window is not symmetric about y). With
+  // fewer than 3 samples, the chord.
+  if (hi - lo + 1 < 3) {
+    return (z_mm_[hi] - z_mm_[lo]) / (y_mm_[hi] - y_mm_[lo]);
   }
-  const double mx = sx / n;
-  const double mz = sz / n;
-  double sxx = 0.0;
-  double sxz = 0.0;
+  double m0 = 0, m1 = 0, m2 = 0, m3 = 0, m4 = 0, r0 = 0, r1 = 0, r2 = 0;
   for (std::size_t i = lo; i <= hi; ++i) {
-    const double dx = y_mm_[i] - y - mx;
-    sxx += dx * dx;
-    sxz += dx * (z_mm_[i] - mz);
+    const double d = y_mm_[i] - y;
+    const double d2 = d * d;
+    m0 += 1.0;
+    m1 += d;
+    m2 += d2;
+    m3 += d2 * d;
+    m4 += d2 * d2;
+    r0 += z_mm_[i];
+    r1 += z_mm_[i] * d;
+    r2 += z_mm_[i] * d2;
   }
-  return sxz / sxx;
+  const double det = m0 * (m2 * m4 - m3 * m3) - m1 * (m1 * m4 - m3 * m2) + m2 * (m1 * m3 - m2 * m2);
+  if (!(std::abs(det) > 0.0)) {
+    return (z_mm_[hi] - z_mm_[lo]) / (y_mm_[hi] - y_mm_[lo]);
+  }
+  return (m0 * (r1 * m4 - m3 * r2) - r0 * (m1 * m4 - m3 * m2) + m2 * (m1 * r2 - r1 * m2)) / det;
 }
 
 profile::SampledProfile smooth_profile(const profile::SampledProfile& profile,

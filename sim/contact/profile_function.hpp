@@ -26,8 +26,8 @@ class ProfileFunction {
   /// Linear interpolation; y is clamped into [y_min, y_max].
   double z_at(double y_mm) const;
 
-  /// Slope dz/dy from a least-squares line through the samples within ±half_window_mm of y (at
-  /// least the two neighbouring samples); y is clamped into the range.
+  /// Slope dz/dy at y from a least-squares parabola through the samples within ±half_window_mm of
+  /// y (at least the two neighbouring samples; the chord if fewer than 3); y is clamped.
   double slope_at(double y_mm, double half_window_mm) const;
 
   /// Index i of the segment [y_i, y_i+1] holding y (clamped).

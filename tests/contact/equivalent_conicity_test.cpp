@@ -85,5 +85,16 @@ TEST(EquivalentConicity, RejectsMotionOutsideTheTableAndNonRestoringDeltaR) {
   EXPECT_THROW((void)equivalent_conicity(flat, 1.0), std::domain_error);
 }
 
+TEST(EquivalentConicity, OffsetDeltaRIsCentredOnItsRoot) {
+  // Different wheel radii shift delta r: the motion centres on the root y0.
+  const double tan_g = 0.12;
+  const double y0 = -1.25;
+  const ContactTable t = table_of([&](double y) { return 2.0 * tan_g * (y - y0); });
+  const ConicityResult r = equivalent_conicity(t, 4.0);
+  EXPECT_NEAR(r.centre_y_mm, y0, 1e-9);
+  EXPECT_NEAR(r.tan_gamma_e, tan_g, 1e-5 * tan_g);
+  EXPECT_NEAR(linearised_conicity(t, 4.0), tan_g, 1e-9);
+}
+
 }  // namespace
 }  // namespace tread::contact
