@@ -1,12 +1,14 @@
 // `tread pac plot`: draw PAC89/PAC94 curves (Fx(κ), Fy(α), Mz(α) at several loads, combined-slip
 // envelope) from a Chrono JSON coefficient file or an Adams .tir file, to PNG or SVG via gnuplot.
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include "cli/commands.hpp"
 #include "tir/pac_coefficients.hpp"
+#include "tir/pac_csv.hpp"
 #include "tir/pac_plot.hpp"
 #include "tir/tir_file.hpp"
 
@@ -14,9 +16,12 @@ namespace tread::cli {
 
 namespace {
 
+void add_pac_eval(CLI::App* pac);
+
 void add_pac_command(CLI::App& app) {
   auto* pac = app.add_subcommand("pac", "PAC89 / PAC94 tyre models");
   pac->require_subcommand(1);
+  add_pac_eval(pac);
   auto* plot = pac->add_subcommand("plot", "Plot PAC89/PAC94 curves to PNG or SVG (gnuplot)");
   struct Options {
     std::string json;
@@ -49,6 +54,49 @@ void add_pac_command(CLI::App& app) {
                std::filesystem::path(opt.json.empty() ? opt.tir : opt.json).filename().string();
     tir::run_gnuplot(tir::pac_plot_script(coeff.params, po, opt.output));
     std::cout << "wrote " << opt.output << '\n';
+  });
+}
+
+void add_pac_eval(CLI::App* pac) {
+  auto* eval = pac->add_subcommand("eval", "Evaluate PAC89/PAC94 for the rows of a CSV file");
+  struct Options {
+    std::string json;
+    std::string tir;
+    std::string input;
+    std::string output;
+    int model = 89;
+    bool pure = false;
+    bool use_float = false;
+    bool iso_w = false;
+  };
+  static Options opt;
+  auto* src = eval->add_option_group("source")->require_option(1);
+  src->add_option("--json", opt.json, "Chrono Pac89Tire JSON coefficient file")
+      ->check(CLI::ExistingFile);
+  src->add_option("--tir", opt.tir, "Adams PAC89/PAC94 .tir file")->check(CLI::ExistingFile);
+  eval->add_option("--model", opt.model, "89 or 94")
+      ->check(CLI::IsMember({89, 94}))
+      ->capture_default_str();
+  eval->add_flag("--pure", opt.pure, "pure slip (default: combined)");
+  eval->add_flag("--float", opt.use_float, "evaluate in float");
+  eval->add_flag("--iso-w", opt.iso_w, "outputs in ISO-W axes (Fy, My, Mz sign-flipped)");
+  eval->add_option("--input", opt.input, "CSV with Fz_N,kappa,alpha_rad,gamma_rad")
+      ->required()
+      ->check(CLI::ExistingFile);
+  eval->add_option("--output", opt.output, "CSV to write")->required();
+  eval->callback([] {
+    const auto coeff = opt.json.empty() ? tir::pac_from_tir(tir::read_tir(opt.tir))
+                                        : tir::pac_from_chrono_json(opt.json);
+    tir::PacCsvOptions o;
+    o.model = opt.model == 94 ? tir::PacModel::kPac94 : tir::PacModel::kPac89;
+    o.slip = opt.pure ? pac::Slip::kPure : pac::Slip::kCombined;
+    o.use_float = opt.use_float;
+    o.iso_w = opt.iso_w;
+    std::ifstream in(opt.input);
+    std::ofstream out(opt.output);
+    if (!out) throw std::runtime_error(opt.output + ": cannot write");
+    const auto rows = tir::evaluate_pac_csv(coeff.params, o, in, opt.input, out);
+    std::cout << "evaluated " << rows << " rows -> " << opt.output << '\n';
   });
 }
 
