@@ -1,4 +1,5 @@
 // `tread mf eval`: evaluate a Magic Formula .tir (MF 5.2 / 6.1 / 6.2, PAC2002) on a CSV of inputs.
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <stdexcept>
@@ -8,6 +9,7 @@
 #include "mf/mf_csv.hpp"
 #include "mf/mf_options.hpp"
 #include "mf/mf_parameters_from_tir.hpp"
+#include "mf/mf_plot.hpp"
 
 namespace tread::cli {
 
@@ -44,6 +46,30 @@ void run_mf_eval(const MfEvalArgs& args) {
   std::cerr << "tread mf eval: " << rows << " rows → " << args.output << '\n';
 }
 
+struct MfPlotArgs {
+  std::string tir;
+  int mode = 111;
+  std::string output;
+};
+
+void run_mf_plot(const MfPlotArgs& args) {
+  const mf::MfTirParameters loaded = mf::load_mf_parameters(args.tir);
+  if (!loaded.warning.empty()) std::cerr << "tread mf plot: warning: " << loaded.warning << '\n';
+  const Result<mf::MfOptions> options = mf::options_from_use_mode(args.mode);
+  if (!options.ok()) throw std::runtime_error("--mode " + std::to_string(args.mode) + ": invalid");
+  std::filesystem::path png = args.output;
+  if (png.extension() != ".png") throw std::runtime_error(args.output + ": expected a .png name");
+  std::filesystem::path svg = png;
+  svg.replace_extension(".svg");
+  mf::MfPlotOptions plot;
+  plot.title = std::filesystem::path(args.tir).filename().string() + " (useMode " +
+               std::to_string(args.mode) + ")";
+  for (const auto& out : {png, svg}) {
+    mf::run_gnuplot_script(mf::mf_plot_script(loaded.params, options.value, plot, out));
+    std::cerr << "tread mf plot: wrote " << out.string() << '\n';
+  }
+}
+
 void add_mf_command(CLI::App& app) {
   auto* mf_cmd = app.add_subcommand("mf", "Magic Formula tyre model (MF 5.2 / 6.1 / 6.2, PAC2002)");
   mf_cmd->require_subcommand(1);
@@ -60,6 +86,15 @@ void add_mf_command(CLI::App& app) {
       ->required();
   eval->add_option("--output", args.output, "CSV to write")->required();
   eval->callback([] { run_mf_eval(args); });
+
+  static MfPlotArgs plot_args;
+  auto* plot = mf_cmd->add_subcommand(
+      "plot", "Plot Fx(κ), Fy(α), Mz(α) at several loads and a Fx(κ, Fz) map (PNG + SVG)");
+  plot->add_option("--tir", plot_args.tir, "Tyre property file (.tir)")->required();
+  plot->add_option("--mode", plot_args.mode, "MFeval useMode: 111 (default) … 222");
+  plot->add_option("--output", plot_args.output, "PNG to write; an SVG is written beside it")
+      ->required();
+  plot->callback([] { run_mf_plot(plot_args); });
 }
 
 }  // namespace

@@ -117,4 +117,25 @@ TEST(MfCommand, BadInputNamesFileAndLine) {
             0);
 }
 
+TEST(MfCommand, PlotWritesPngAndSvg) {
+  const auto tir = tread::testing::refdata("tir/MagicFormula52_Parameters.tir");
+  const auto dir = tmp_dir();
+  const auto png = dir / "curves.png";
+  const auto svg = dir / "curves.svg";
+  std::filesystem::remove(png);
+  std::filesystem::remove(svg);
+  ASSERT_EQ(run("mf plot --tir " + tir.string() + " --output " + png.string(), dir / "plot.txt"), 0)
+      << slurp(dir / "plot.txt");
+  const std::string png_bytes = slurp(png);
+  ASSERT_GT(png_bytes.size(), 10000u);
+  EXPECT_EQ(png_bytes.substr(1, 3), "PNG");
+  const std::string svg_text = slurp(svg);
+  EXPECT_NE(svg_text.find("<svg"), std::string::npos);
+  EXPECT_NE(svg_text.find("Aligning moment"), std::string::npos);
+  // Not a .png name: refused.
+  EXPECT_NE(run("mf plot --tir " + tir.string() + " --output " + (dir / "x.jpg").string(),
+                dir / "plot_bad.txt"),
+            0);
+}
+
 }  // namespace
