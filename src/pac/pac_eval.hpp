@@ -4,7 +4,8 @@
 //
 // Units: Fz [N] → kN, κ [-] → %, α, γ [rad] → degrees. Inputs are clamped to the limits in
 // PacParams (Fz to [0, fz_max_n], |κ| ≤ kappa_max, |α| ≤ alpha_max_rad, |γ| ≤ gamma_max_rad);
-// Fz ≤ 0 (or NaN) gives all-zero outputs.
+// Fz ≤ 0 gives all-zero outputs. PacOutput::status tells whether an input was clamped
+// (out_of_range) or not finite (invalid_argument, all outputs 0).
 //
 // Combined slip. The Adams Tire help text for the PAC89/PAC94 combined-slip mode could not be
 // consulted while writing this; we use the slip-vector ("friction circle in slip space")
@@ -28,13 +29,35 @@ T rad_to_deg(const T& x) {
   return x * T(57.295779513082320876798154814105);
 }
 
+/// False for NaN and ±inf: x − x is 0 for finite x and NaN otherwise (works for Jets too, which
+/// compare by value).
+template <typename T>
+bool is_finite(const T& x) {
+  return (x - x) < T(1);
+}
+
+template <typename T>
+bool outside(const T& x, const T& lo, const T& hi) {
+  return x < lo || hi < x;
+}
+
 template <typename Model, typename T>
 PacOutput<T> evaluate(const PacParams<T>& p, const PacInput<T>& in, Slip slip) {
   using std::atan;
   using std::sqrt;
   using std::tan;
   PacOutput<T> out{};
-  if (!(T(0) < in.fz_n)) return out;  // also catches NaN
+  if (!is_finite(in.fz_n) || !is_finite(in.kappa) || !is_finite(in.alpha_rad) ||
+      !is_finite(in.gamma_rad)) {
+    out.status = Status::invalid_argument;
+    return out;
+  }
+  if (outside(in.fz_n, T(0), p.fz_max_n) || outside(in.kappa, -p.kappa_max, p.kappa_max) ||
+      outside(in.alpha_rad, -p.alpha_max_rad, p.alpha_max_rad) ||
+      outside(in.gamma_rad, -p.gamma_max_rad, p.gamma_max_rad)) {
+    out.status = Status::out_of_range;
+  }
+  if (!(T(0) < in.fz_n)) return out;
   const T fz_n = clamp(in.fz_n, T(0), p.fz_max_n);
   const T fz_kn = fz_n / T(1000);
   const T kappa = clamp(in.kappa, -p.kappa_max, p.kappa_max);

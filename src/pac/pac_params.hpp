@@ -8,6 +8,8 @@
 
 #include <array>
 
+#include "core/status.hpp"
+
 namespace tread::pac {
 
 template <typename T>
@@ -49,13 +51,17 @@ struct PacOutput {
   T mz_nm{0};
   T mx_nm{0};
   T my_nm{0};
+  /// ok; out_of_range: an input lay outside the limits and was clamped (outputs valid for the
+  /// clamped input; Fz < 0 counts, Fz = 0 does not); invalid_argument: an input was NaN or
+  /// infinite (all outputs 0).
+  Status status{Status::ok};
 };
 
 /// Converts outputs from the PAC89 model axes to ISO-W (as Chrono's ChPac89Tire does: Fx and Mx
 /// unchanged, Fy, My and Mz change sign; α and γ are used unchanged).
 template <typename T>
 constexpr PacOutput<T> to_iso_w(const PacOutput<T>& o) noexcept {
-  return {o.fx_n, -o.fy_n, -o.mz_nm, o.mx_nm, -o.my_nm};
+  return {o.fx_n, -o.fy_n, -o.mz_nm, o.mx_nm, -o.my_nm, o.status};
 }
 
 }  // namespace tread::pac

@@ -144,6 +144,39 @@ TEST(Pac89, ZeroOrNegativeLoadGivesZero) {
   }
 }
 
+TEST(Pac89, StatusReportsClampingAndNonFiniteInputs) {
+  const auto p = t::symmetric_set<double>();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  using tread::Status;
+  EXPECT_EQ(pac89_eval(p, PacInput<double>{4000.0, 0.1, 0.1, 0.0}, Slip::kPure).status, Status::ok);
+  EXPECT_EQ(pac89_eval(p, PacInput<double>{0.0, 0.1, 0.1, 0.0}, Slip::kPure).status, Status::ok);
+  EXPECT_EQ(pac89_eval(p, PacInput<double>{-1.0, 0.1, 0.1, 0.0}, Slip::kPure).status,
+            Status::out_of_range);
+  EXPECT_EQ(pac89_eval(p, PacInput<double>{4000.0, 1.5, 0.1, 0.0}, Slip::kPure).status,
+            Status::out_of_range);
+  EXPECT_EQ(pac89_eval(p, PacInput<double>{4000.0, 0.1, 1.58, 0.0}, Slip::kPure).status,
+            Status::out_of_range);
+  EXPECT_EQ(pac89_eval(p, PacInput<double>{4000.0, 0.1, 0.1, -0.6}, Slip::kPure).status,
+            Status::out_of_range);
+  EXPECT_EQ(pac89_eval(p, PacInput<double>{2e5, 0.1, 0.1, 0.0}, Slip::kPure).status,
+            Status::out_of_range);
+  // Clamped inputs give the value at the limit.
+  EXPECT_EQ(pac89_eval(p, PacInput<double>{4000.0, 3.0, 0.0, 0.0}, Slip::kPure).fx_n,
+            pac89_eval(p, PacInput<double>{4000.0, 1.0, 0.0, 0.0}, Slip::kPure).fx_n);
+  for (const PacInput<double> in :
+       {PacInput<double>{nan, 0.1, 0.1, 0.0}, PacInput<double>{4000.0, nan, 0.1, 0.0},
+        PacInput<double>{4000.0, 0.1, inf, 0.0}, PacInput<double>{4000.0, 0.1, 0.1, -inf}}) {
+    for (const auto slip : {Slip::kPure, Slip::kCombined}) {
+      const auto o = pac89_eval(p, in, slip);
+      EXPECT_EQ(o.status, Status::invalid_argument);
+      EXPECT_EQ(o.fx_n, 0.0);
+      EXPECT_EQ(o.fy_n, 0.0);
+      EXPECT_EQ(o.mz_nm, 0.0);
+    }
+  }
+}
+
 TEST(Pac89, FloatAgreesWithDouble) {
   const auto pd = t::symmetric_set<double>();
   const auto pf = t::symmetric_set<float>();
