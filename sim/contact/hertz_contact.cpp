@@ -1,5 +1,7 @@
 #include "contact/hertz_contact.hpp"
 
+#include "contact/rigid_contact.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -49,6 +51,17 @@ double curvature(double radius_mm) {
 }
 
 }  // namespace
+
+HertzInput hertz_input_at(const WheelContact& contact, double load_n) {
+  HertzInput in;
+  in.load_n = load_n;
+  in.wheel_rx_mm = contact.r_mm / std::cos(contact.gamma_rad);
+  in.rail_rx_mm = 1e300;
+  // B = (1/Ry1 + 1/Ry2)/2 = kappa/2: put the whole relative curvature on the wheel.
+  in.wheel_ry_mm = 1.0 / contact.lateral_relative_curvature_per_mm;
+  in.rail_ry_mm = 1e300;
+  return in;
+}
 
 HertzResult hertz_contact(const HertzInput& in) {
   if (!(in.load_n > 0.0) || !(in.e1_mpa > 0.0) || !(in.e2_mpa > 0.0) || !(in.nu1 < 0.5) ||

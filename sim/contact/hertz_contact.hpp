@@ -36,6 +36,13 @@ struct HertzResult {
   double e_star_mpa = 0.0;     ///< contact modulus E*
 };
 
+struct WheelContact;
+
+/// Hertz input at a contact point of the rigid search: the wheel's radius in the contact plane
+/// r / cos(gamma) along the rail (straight track), the lateral relative curvature of both profiles
+/// (given as the wheel's lateral radius, the rail's lateral radius set to a straight line).
+HertzInput hertz_input_at(const WheelContact& contact, double load_n);
+
 /// Throws std::domain_error when A or B is not positive (conformal or non-Hertzian contact) or
 /// the load/material values are not positive.
 HertzResult hertz_contact(const HertzInput& input);

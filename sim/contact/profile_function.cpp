@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace tread::contact {
 
@@ -43,8 +45,49 @@ double ProfileFunction::z_at(double y_mm) const {
   return z_mm_[i] + t * (z_mm_[i + 1] - z_mm_[i]);
 }
 
-double ProfileFunction::slope_at(double y_mm, double half_window_mm) const {
-  const double y = std::clamp(y_mm, y_mm_.front(), y_mm_.back());
+namespace {
+
+struct LocalParabola {
+  double slope;
+  double curvature;
+};
+
+/// Least-squares parabola z = c0 + c1 d + c2 d^2 in d = y_i - y through samples lo..hi: the slope
+/// c1 and the second derivative 2 c2 at y (exact for parabolas, symmetric window or not). With
+/// fewer than 3 samples: the chord and 0.
+LocalParabola fit_parabola(std::span<const double> ys, std::span<const double> zs, std::size_t lo,
+                           std::size_t hi, double y) {
+  const LocalParabola chord{(zs[hi] - zs[lo]) / (ys[hi] - ys[lo]), 0.0};
+  if (hi - lo + 1 < 3) {
+    return chord;
+  }
+  double m0 = 0, m1 = 0, m2 = 0, m3 = 0, m4 = 0, r0 = 0, r1 = 0, r2 = 0;
+  for (std::size_t i = lo; i <= hi; ++i) {
+    const double d = ys[i] - y;
+    const double d2 = d * d;
+    m0 += 1.0;
+    m1 += d;
+    m2 += d2;
+    m3 += d2 * d;
+    m4 += d2 * d2;
+    r0 += zs[i];
+    r1 += zs[i] * d;
+    r2 += zs[i] * d2;
+  }
+  const double det = m0 * (m2 * m4 - m3 * m3) - m1 * (m1 * m4 - m3 * m2) + m2 * (m1 * m3 - m2 * m2);
+  if (!(std::abs(det) > 0.0)) {
+    return chord;
+  }
+  const double c1 =
+      (m0 * (r1 * m4 - m3 * r2) - r0 * (m1 * m4 - m3 * m2) + m2 * (m1 * r2 - r1 * m2)) / det;
+  const double c2 =
+      (m0 * (m2 * r2 - r1 * m3) - m1 * (m1 * r2 - r1 * m2) + r0 * (m1 * m3 - m2 * m2)) / det;
+  return {c1, 2.0 * c2};
+}
+
+}  // namespace
+
+std::pair<std::size_t, std::size_t> ProfileFunction::window(double y, double half_window_mm) const {
   const std::size_t seg = segment(y);
   std::size_t lo = seg;
   std::size_t hi = seg + 1;
@@ -54,30 +97,19 @@ double ProfileFunction::slope_at(double y_mm, double half_window_mm) const {
   while (hi + 1 < y_mm_.size() && y_mm_[hi + 1] <= y + half_window_mm) {
     ++hi;
   }
-  // Least-squares parabola z = c0 + c1 d + c2 d^2 in d = y_i - y through samples lo..hi; the
-  // slope at y is c1 (exact for parabolas even when the window is not symmetric about y). With
-  // fewer than 3 samples, the chord.
-  if (hi - lo + 1 < 3) {
-    return (z_mm_[hi] - z_mm_[lo]) / (y_mm_[hi] - y_mm_[lo]);
-  }
-  double m0 = 0, m1 = 0, m2 = 0, m3 = 0, m4 = 0, r0 = 0, r1 = 0, r2 = 0;
-  for (std::size_t i = lo; i <= hi; ++i) {
-    const double d = y_mm_[i] - y;
-    const double d2 = d * d;
-    m0 += 1.0;
-    m1 += d;
-    m2 += d2;
-    m3 += d2 * d;
-    m4 += d2 * d2;
-    r0 += z_mm_[i];
-    r1 += z_mm_[i] * d;
-    r2 += z_mm_[i] * d2;
-  }
-  const double det = m0 * (m2 * m4 - m3 * m3) - m1 * (m1 * m4 - m3 * m2) + m2 * (m1 * m3 - m2 * m2);
-  if (!(std::abs(det) > 0.0)) {
-    return (z_mm_[hi] - z_mm_[lo]) / (y_mm_[hi] - y_mm_[lo]);
-  }
-  return (m0 * (r1 * m4 - m3 * r2) - r0 * (m1 * m4 - m3 * m2) + m2 * (m1 * r2 - r1 * m2)) / det;
+  return {lo, hi};
+}
+
+double ProfileFunction::slope_at(double y_mm, double half_window_mm) const {
+  const double y = std::clamp(y_mm, y_mm_.front(), y_mm_.back());
+  const auto [lo, hi] = window(y, half_window_mm);
+  return fit_parabola(y_mm_, z_mm_, lo, hi, y).slope;
+}
+
+double ProfileFunction::curvature_at(double y_mm, double half_window_mm) const {
+  const double y = std::clamp(y_mm, y_mm_.front(), y_mm_.back());
+  const auto [lo, hi] = window(y, half_window_mm);
+  return fit_parabola(y_mm_, z_mm_, lo, hi, y).curvature;
 }
 
 profile::SampledProfile smooth_profile(const profile::SampledProfile& profile,

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "profile/sampled_profile.hpp"
@@ -30,10 +31,15 @@ class ProfileFunction {
   /// y (at least the two neighbouring samples; the chord if fewer than 3); y is clamped.
   double slope_at(double y_mm, double half_window_mm) const;
 
+  /// Second derivative d2z/dy2 at y from the same least-squares parabola (0 with fewer than 3
+  /// samples in the window).
+  double curvature_at(double y_mm, double half_window_mm) const;
+
   /// Index i of the segment [y_i, y_i+1] holding y (clamped).
   std::size_t segment(double y_mm) const;
 
  private:
+  std::pair<std::size_t, std::size_t> window(double y, double half_window_mm) const;
   std::string name_;
   std::vector<double> y_mm_;
   std::vector<double> z_mm_;

@@ -170,6 +170,11 @@ WheelContact RigidContact::solve(const ProfileFunction& wheel, double shift_mm,
   out.y_wheel_mm = s_c - shift_mm;
   out.r_mm = r0_mm + wheel.z_at(out.y_wheel_mm);
   out.gamma_rad = std::atan(-wheel.slope_at(out.y_wheel_mm, settings_.slope_half_window_mm));
+  const double c = std::cos(out.gamma_rad);
+  out.lateral_relative_curvature_per_mm =
+      -(wheel.curvature_at(out.y_wheel_mm, settings_.curvature_half_window_mm) +
+        rail_.curvature_at(s_c, settings_.curvature_half_window_mm)) *
+      c * c * c;
   return out;
 }
 
@@ -209,6 +214,14 @@ ContactTable RigidContact::table(double y_min_mm, double y_max_mm, double step_m
     t.at_profile_end.push_back(c.left.at_profile_end || c.right.at_profile_end);
   }
   return t;
+}
+
+ContactTable contact_table(const profile::SampledProfile& wheel_left,
+                           const profile::SampledProfile& wheel_right,
+                           const profile::SampledProfile& rail_track, const WheelsetSetup& setup,
+                           double y_min_mm, double y_max_mm, double step_mm) {
+  return RigidContact(wheel_left, wheel_right, rail_track, setup)
+      .table(y_min_mm, y_max_mm, step_mm);
 }
 
 }  // namespace tread::contact

@@ -33,6 +33,7 @@ struct SearchSettings {
   double refine_half_window_mm = 0.1;  ///< parabola fit of the gap around the minimum; 0 = off
   double slope_half_window_mm = 0.05;  ///< least-squares window for the contact angle
   double second_contact_min_distance_mm = 1.0;  ///< separation of a second (two-point) contact
+  double curvature_half_window_mm = 0.5;        ///< least-squares window for profile curvatures
 };
 
 struct WheelContact {
@@ -40,6 +41,11 @@ struct WheelContact {
   double y_rail_mm = 0.0;   ///< contact position on the rail profile (track frame of its side)
   double r_mm = 0.0;        ///< rolling radius r0 + z_wheel
   double gamma_rad = 0.0;   ///< contact angle, see above
+  /// Lateral relative curvature of the two surfaces at the contact, in the contact plane (normal
+  /// to the contact normal): the gap between wheel and rail opens as (kappa / 2) s^2 along the
+  /// contact tangent. > 0 for a Hertzian contact; <= 0 conformal. From the profiles' second
+  /// derivatives: kappa = -(z_wheel'' + z_rail'') cos^3(gamma).
+  double lateral_relative_curvature_per_mm = 0.0;
   /// Vertical gap (mm) at the best other local minimum at least second_contact_min_distance_mm
   /// away; near 0 means two-point contact; +inf when there is none.
   double second_gap_mm = 0.0;
@@ -102,5 +108,12 @@ class RigidContact {
   WheelsetSetup setup_;
   SearchSettings settings_;
 };
+
+/// The contact table of one wheel/rail pair over y_min, y_min + step, ... y_max: the entry point
+/// for the lut/ generator (RigidContact(...).table(...) with default search settings).
+ContactTable contact_table(const profile::SampledProfile& wheel_left,
+                           const profile::SampledProfile& wheel_right,
+                           const profile::SampledProfile& rail_track, const WheelsetSetup& setup,
+                           double y_min_mm, double y_max_mm, double step_mm);
 
 }  // namespace tread::contact

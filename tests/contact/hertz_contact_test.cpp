@@ -2,6 +2,8 @@
 // Goodier, Theory of Elasticity, §140: m, n against theta), scaling laws and symmetry.
 #include "contact/hertz_contact.hpp"
 
+#include "contact/rigid_contact.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -100,6 +102,25 @@ TEST(HertzContact, ConcaveWheelRadiusAndConformalLimit) {
   in.wheel_ry_mm = 1e300;
   in.load_n = 0.0;
   EXPECT_THROW((void)hertz_contact(in), std::domain_error);
+}
+
+TEST(HertzContact, InputAtARigidContactPoint) {
+  // A tread contact at gamma = 0 with relative lateral curvature 1/300 is the cone-on-R300 case.
+  WheelContact c;
+  c.r_mm = 460.0;
+  c.gamma_rad = 0.0;
+  c.lateral_relative_curvature_per_mm = 1.0 / 300.0;
+  HertzInput reference;
+  reference.load_n = 90000.0;
+  const HertzResult expected = hertz_contact(reference);
+  const HertzResult got = hertz_contact(hertz_input_at(c, 90000.0));
+  EXPECT_NEAR(got.a_mm, expected.a_mm, 1e-9);
+  EXPECT_NEAR(got.b_mm, expected.b_mm, 1e-9);
+  // On a 70 degree flange the wheel's radius in the contact plane is r / cos(gamma).
+  c.gamma_rad = 70.0 * kDeg;
+  EXPECT_NEAR(hertz_input_at(c, 1.0).wheel_rx_mm, 460.0 / std::cos(70.0 * kDeg), 1e-9);
+  c.lateral_relative_curvature_per_mm = -0.001;  // conformal
+  EXPECT_THROW((void)hertz_contact(hertz_input_at(c, 1000.0)), std::domain_error);
 }
 
 }  // namespace

@@ -34,6 +34,7 @@ TEST(ProfileFunction, SlopeOfAParabola) {
   for (const double y : {-5.0, 0.0, 2.5, 7.0}) {
     // A symmetric least-squares window gives the exact derivative of a parabola.
     EXPECT_NEAR(f.slope_at(y, 0.05), 0.04 * y - 0.1, 1e-9) << y;
+    EXPECT_NEAR(f.curvature_at(y, 0.5), 0.04, 1e-9) << y;
   }
 }
 

@@ -57,6 +57,9 @@ TEST(RigidContact, ConeOnCrownGivesTwiceTheConicityTimesY) {
     EXPECT_NEAR(c.left.y_wheel_mm, y_rail - y, 0.01);
     EXPECT_NEAR(c.right.y_wheel_mm, y_rail + y, 0.01);
     EXPECT_NEAR(c.left.r_mm, 460.0 - tan_g * c.left.y_wheel_mm, 1e-6);
+    // A straight cone on a R300 crown: the relative curvature in the contact plane is 1/300.
+    EXPECT_NEAR(c.left.lateral_relative_curvature_per_mm, 1.0 / kCrownRadius, 1e-7);
+    EXPECT_NEAR(c.right.lateral_relative_curvature_per_mm, 1.0 / kCrownRadius, 1e-7);
   }
 }
 
@@ -151,8 +154,8 @@ TEST(RigidContact, NoisyMeasuredProfileStaysCloseToTheSmoothOne) {
 
 TEST(RigidContact, TableIsAUniformGrid) {
   const auto wheel = cone_wheel(0.05);
-  const RigidContact contact(wheel, wheel, crown_rail(), WheelsetSetup{});
-  const ContactTable t = contact.table(-12.0, 12.0, 0.1);
+  const ContactTable t =
+      contact_table(wheel, wheel, crown_rail(), WheelsetSetup{}, -12.0, 12.0, 0.1);
   ASSERT_EQ(t.y_mm.size(), 241u);
   EXPECT_DOUBLE_EQ(t.y_mm.front(), -12.0);
   EXPECT_NEAR(t.y_mm.back(), 12.0, 1e-9);
@@ -160,6 +163,8 @@ TEST(RigidContact, TableIsAUniformGrid) {
     EXPECT_NEAR(t.delta_r_mm[k], t.r_left_mm[k] - t.r_right_mm[k], 1e-12);
   }
   EXPECT_EQ(t.gamma_left_rad.size(), 241u);
+  EXPECT_EQ(t.at_profile_end.size(), 241u);
+  EXPECT_NEAR(t.delta_r_mm[120], 0.0, 1e-12);  // y = 0 of a symmetric pair
 }
 
 TEST(RigidContact, RejectsBadProfilesAndNoOverlap) {
