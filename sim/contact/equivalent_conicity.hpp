@@ -9,10 +9,13 @@
 // zero crossing of y - y_c; then tan(gamma_e) = e0 r0 (2 pi / lambda)^2 (Klingel's formula solved
 // for the conicity; e0 and r0 cancel, they only set the length scale).
 //
-// linearised_conicity(): the linear-regression value for comparison: the slope of the
-// least-squares line through delta r over -amplitude..+amplitude about y_c, with y sampled as a
-// harmonic motion y = y_c + amplitude sin(phi) at uniform phi (the time a harmonic oscillation
-// spends at each y weights the regression), halved: delta r ~ 2 tan(gamma) y.
+// linearised_conicity(): the linear-regression value for comparison (EN 15302 Annex C, "linear
+// regression of the delta r function"): the slope of the least-squares line through delta r over
+// -amplitude..+amplitude about y_c, halved (delta r ~ 2 tan(gamma) y). y is sampled as a harmonic
+// motion y = y_c + amplitude sin(phi) at uniform phi, i.e. weighted by the time a harmonic
+// oscillation spends at each y. That weighting is this project's reading of the method (the
+// standard's text was not available); a uniform weighting gives somewhat larger values where delta
+// r steepens toward the amplitude.
 
 #include "contact/rigid_contact.hpp"
 
