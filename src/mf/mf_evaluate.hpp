@@ -4,10 +4,9 @@
 // departures from the book to match TNO:
 //   - A_mu = 1 in the digressive friction factor (so LMUX' = LMUX*), LMUV = 0;
 //   - Dt from (A60) (QDZ3·γ, not |γ*|), Bt from (A58), Mx from Besselink's draft (49) with
-//   QSX12…14,
-//     My from (A48) (MF 5.2: the equation manual's form), αr,eq/αt,eq from (A54)/(A55), s from
-//     (A56);
-//   - t multiplied by LFZO; Fy' and SVyk of Mz from Fy0/Fy at γ = 0 with the original γ* in Gyk;
+//     QSX12…14, My from (A48) (MF 5.2: the equation manual's form), αr,eq/αt,eq from (A54)/(A55),
+//     s from (A56);
+//   - t multiplied by LFZO; Fy' of Mz = Gyk·Fy0(γ = 0) with the original γ* in Gyk;
 //   - the low-speed model below VXLOW (linear κ, α and φt reduction, cosine reduction of SVx, SHx,
 //     SVy, SHy, SVyk, t, Mzr; the empirical My reduction), φt·cos α with limits on;
 //   - Fz is clamped only above FZMAX; FZMIN is used only in Mz0 (Fz low limit), Mx (Fz·(Fz/FZMIN)²)
@@ -30,8 +29,11 @@
 //     Inputs outside it are clamped and MfOutput::status is out_of_range. It lies far outside any
 //     tyre's measured range.
 //
-// Scalar: float, double or ceres::Jet (all maths through unqualified calls, so ADL finds Jet's).
-// No heap, no exceptions, no virtual calls, no I/O.
+// Options: MfOptions (useMode, mounted side, combined/uncombined, extras on/off).
+// PAC2002 (FitType::pac2002) takes the MF 5.2 path with the camber scale factors LGAX/LGAY/LGAZ.
+// Scalar: float, double or ceres::Jet (elementary functions through mf_math.hpp: libm/ADL for
+// double and Jet, tread's polynomial approximations for float). No heap, no exceptions, no
+// virtual calls, no I/O.
 
 #include "mf/mf_math.hpp"
 #include "mf/mf_options.hpp"
