@@ -550,7 +550,6 @@ MfOutput<T> evaluate(const MfParameters<T>& params, const MfInput<T>& input,
   const T fx_pure = fx0(p, in, b, options, mux, kxk);
   const Fy0Result<T> y0 = fy0(p, in, b, options, b.gamma_star, options.use_turn_slip);
 
-  // Combined slip.
   // Combined slip (or, with options.combined off, the pure-slip forces).
   T svyk = T(0);
   T gyk = T(1);
