@@ -1,30 +1,41 @@
-// `tread demo`: the README's main job. Until the node (issue 5) and rig (issue 6) land it reports
-// what is built and what is not, and runs the pieces that exist.
-#include <array>
-#include <cstdint>
+// `tread demo`: the README's main job — node + scripted rig on the in-process CAN bus (or --can
+// vcan0), summary, trace and plots.
 #include <iostream>
 
 #include "cli/commands.hpp"
-#include "proto/crc8_j1850.hpp"
+#include "cli/node_options.hpp"
+#include "rig/hil_demo.hpp"
 
 namespace tread::cli {
-
 namespace {
 
 void add_demo_command(CLI::App& app) {
   auto* demo =
       app.add_subcommand("demo", "Run the HIL demo: node + rig (in-process bus by default)");
-  static std::string can = "stub";
-  demo->add_option("--can", can,
-                   "CAN interface: stub (in-process) or a SocketCAN link such as vcan0");
+  static NodeCliState state;
+  static host::DemoSettings settings;
+  static std::string clock = "posix";
+  state.wheelsets = 2;
+  state.settings.wheelset_profile = "wheel=S1002,rail=60E1,cant=1:40";
+  add_node_options(*demo, state, false);
+  demo->get_option("--wheelsets")->default_val(2);
+  demo->add_option("--can", settings.can,
+                   "stub (in-process bus) or a SocketCAN interface such as vcan0")
+      ->capture_default_str();
+  demo->add_option("--clock", clock, "posix (real time) or sim (as fast as possible)")
+      ->check(CLI::IsMember({"posix", "sim"}))
+      ->capture_default_str();
+  demo->add_option("--duration-s", settings.duration_s, "simulated time")->capture_default_str();
+  demo->add_option("--period-us", settings.period_us, "cycle period")->capture_default_str();
+  demo->add_option("--out", settings.out_dir, "directory for the trace and plots")
+      ->capture_default_str();
+  demo->add_option("--log", settings.log,
+                   "candump log of the node's traffic (replay with tread node --replay)");
   demo->callback([] {
-    std::cout
-        << "tread demo — NOT BUILT YET: the real-time node and the rig simulator do not exist in\n"
-           "this build. What exists: the build, toolchains, the vcan VM test harness and the\n"
-           "E2E CRC (CRC8 SAE J1850).\n";
-    const std::array<std::uint8_t, 9> check{'1', '2', '3', '4', '5', '6', '7', '8', '9'};
-    std::cout << "CRC8 SAE J1850 check value over \"123456789\": 0x" << std::hex
-              << static_cast<int>(proto::crc8_sae_j1850(check)) << std::dec << " (expected 0x4b)\n";
+    settings.node = node_settings(state);
+    settings.sim_clock = clock == "sim";
+    const host::DemoResult result = host::run_demo(settings);
+    host::print_demo(std::cout, settings, result);
   });
 }
 

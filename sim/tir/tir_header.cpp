@@ -84,22 +84,34 @@ constexpr bool tir_iequals(std::string_view a, std::string_view b) noexcept {
   return true;
 }
 
-/// The entry (case-insensitive; an empty section matches any section), or nullptr.
+/// Index of the entry (case-insensitive; an empty section matches any section), or N if none.
+template <std::size_t N>
+constexpr std::size_t find_index(const TirEntry (&entries)[N], std::string_view section,
+                                 std::string_view key) noexcept {
+  for (std::size_t i = 0; i < N; ++i) {
+    if ((section.empty() || tir_iequals(entries[i].section, section)) &&
+        tir_iequals(entries[i].key, key)) {
+      return i;
+    }
+  }
+  return N;
+}
+
+/// The entry, or nullptr. (In constant expressions prefer find_index: comparing the pointer is not
+/// a constant expression under some compilers' sanitizers.)
 template <std::size_t N>
 constexpr const TirEntry* find_entry(const TirEntry (&entries)[N], std::string_view section,
                                      std::string_view key) noexcept {
-  for (const TirEntry& e : entries) {
-    if ((section.empty() || tir_iequals(e.section, section)) && tir_iequals(e.key, key)) return &e;
-  }
-  return nullptr;
+  const std::size_t i = find_index(entries, section, key);
+  return i < N ? &entries[i] : nullptr;
 }
 
 /// The number, or `fallback` if the key is missing or not a number.
 template <std::size_t N>
 constexpr double number_or(const TirEntry (&entries)[N], std::string_view section,
                            std::string_view key, double fallback) noexcept {
-  const TirEntry* e = find_entry(entries, section, key);
-  return (e != nullptr && e->is_number) ? e->number : fallback;
+  const std::size_t i = find_index(entries, section, key);
+  return (i < N && entries[i].is_number) ? entries[i].number : fallback;
 }
 
 }  // namespace tread::tir

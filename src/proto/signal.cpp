@@ -23,7 +23,7 @@ std::uint64_t get_raw(std::span<const std::uint8_t> data, std::uint16_t start_bi
   std::uint64_t raw = 0;
   for (std::uint32_t i = 0; i < length; ++i) {
     const std::uint32_t bit = start_bit + i;
-    if (((data[bit / 8U] >> (bit % 8U)) & 1U) != 0U) {
+    if (((static_cast<std::uint32_t>(data[bit / 8U]) >> (bit % 8U)) & 1U) != 0U) {
       raw |= std::uint64_t{1} << i;
     }
   }

@@ -5,11 +5,15 @@
 #include "generated/mf61_params_float.hpp"
 #include "generated/mf61_tyre.hpp"
 
-static_assert(tread::tir::find_entry(tyres::kMf61, "vertical", "fnomin") != nullptr);
-static_assert(tread::tir::find_entry(tyres::kMf61, "", "FNOMIN") != nullptr);
-static_assert(tread::tir::find_entry(tyres::kMf61, "MODEL", "FNOMIN") == nullptr);
-static_assert(tread::tir::find_entry(tyres::kMf61, "MODEL", "TYRESIDE")->text == "RIGHT");
-static_assert(!tread::tir::find_entry(tyres::kMf61, "MODEL", "TYRESIDE")->is_number);
+#include <iterator>
+
+constexpr std::size_t kEntries = std::size(tyres::kMf61);
+static_assert(tread::tir::find_index(tyres::kMf61, "vertical", "fnomin") < kEntries);
+static_assert(tread::tir::find_index(tyres::kMf61, "", "FNOMIN") < kEntries);
+static_assert(tread::tir::find_index(tyres::kMf61, "MODEL", "FNOMIN") == kEntries);
+static_assert(tyres::kMf61[tread::tir::find_index(tyres::kMf61, "MODEL", "TYRESIDE")].text ==
+              "RIGHT");
+static_assert(!tyres::kMf61[tread::tir::find_index(tyres::kMf61, "MODEL", "TYRESIDE")].is_number);
 
 double core_check_fnomin() noexcept {
   constexpr double fnomin = tread::tir::number_or(tyres::kMf61, "VERTICAL", "FNOMIN", -1.0);

@@ -1,0 +1,115 @@
+#include "node/node_runtime.hpp"
+
+#include <sstream>
+#include <stdexcept>
+
+#include "mf/mf_parameters_from_tir.hpp"
+
+namespace tread::host {
+
+contact::ContactSetup parse_wheelset_profile(const std::string& spec) {
+  contact::ContactSetup setup;
+  std::stringstream items(spec);
+  std::string item;
+  while (std::getline(items, item, ',')) {
+    const auto eq = item.find('=');
+    if (eq == std::string::npos) {
+      throw std::invalid_argument("--wheelset-profile: '" + item + "' is not key=value");
+    }
+    const std::string key = item.substr(0, eq);
+    const std::string value = item.substr(eq + 1);
+    try {
+      if (key == "wheel") {
+        setup.wheel_spec = value;
+      } else if (key == "wheel-file") {
+        setup.wheel_file = value;
+      } else if (key == "wheel-right-file") {
+        setup.wheel_right_file = value;
+      } else if (key == "rail") {
+        setup.rail_spec = value;
+      } else if (key == "rail-file") {
+        setup.rail_file = value;
+      } else if (key == "rail-frame") {
+        setup.rail_frame = value;
+      } else if (key == "cant") {
+        setup.cant = value;
+      } else if (key == "gauge") {
+        setup.gauge_mm = std::stod(value);
+      } else if (key == "b2b") {
+        setup.back_to_back_mm = std::stod(value);
+      } else if (key == "r0") {
+        setup.r0_mm = std::stod(value);
+      } else if (key == "r0-right") {
+        setup.r0_right_mm = std::stod(value);
+      } else {
+        throw std::invalid_argument("unknown key");
+      }
+    } catch (const std::logic_error& e) {
+      throw std::invalid_argument("--wheelset-profile: bad '" + item + "' (" + e.what() + ")");
+    }
+  }
+  return setup;
+}
+
+NodeRuntime::NodeRuntime(const NodeSettings& settings) {
+  node::NodeConfig config = settings.node;
+  if (config.wheels > 0) {
+    if (settings.tir.empty()) {
+      throw std::runtime_error("a tyre property file (--tir) is needed for road wheels");
+    }
+    const mf::MfTirParameters loaded = mf::load_mf_parameters(settings.tir);
+    params_double_ = loaded.params;
+    tir_warning_ = loaded.warning;
+    params_ = mf::convert_parameters<float>(params_double_);
+    const Result<mf::MfOptions> options = mf::options_from_use_mode(settings.use_mode);
+    if (!options.ok()) {
+      throw std::runtime_error("--use-mode " + std::to_string(settings.use_mode) +
+                               ": not a useMode (111..222)");
+    }
+    options_ = options.value;
+    options_.extras = true;  // Rl is an output
+    if (settings.side == "left") {
+      options_.side = mf::MountedSide::left;
+    } else if (settings.side == "right") {
+      options_.side = mf::MountedSide::right;
+    } else if (settings.side != "as-measured") {
+      throw std::runtime_error("--side: want as-measured, left or right, not '" + settings.side +
+                               "'");
+    }
+    for (auto& tyre : tyres_) {
+      tyre = node::MfTyreChannel(params_, options_);
+    }
+  }
+  if (config.wheelsets > 0) {
+    if (settings.wheelset_profile.empty()) {
+      throw std::runtime_error("wheelsets need --wheelset-profile (e.g. wheel=S1002,rail=60E1)");
+    }
+    const contact::RigidContact contact =
+        contact::build_contact(parse_wheelset_profile(settings.wheelset_profile));
+    const contact::ContactTable t = contact.table(
+        -settings.wheelset_ymax_mm, settings.wheelset_ymax_mm, settings.wheelset_step_mm);
+    const std::size_t n = t.y_mm.size();
+    columns_.resize(5 * n);
+    for (std::size_t i = 0; i < n; ++i) {
+      columns_[i] = static_cast<float>(t.r_left_mm[i]);
+      columns_[n + i] = static_cast<float>(t.r_right_mm[i]);
+      columns_[2 * n + i] = static_cast<float>(t.delta_r_mm[i]);
+      columns_[3 * n + i] = static_cast<float>(t.gamma_left_rad[i]);
+      columns_[4 * n + i] = static_cast<float>(t.gamma_right_rad[i]);
+    }
+    table_ = rail::ContactTableF32{static_cast<float>(t.y_first_mm),
+                                   static_cast<float>(t.y_step_mm),
+                                   static_cast<std::uint32_t>(n),
+                                   &columns_[0],
+                                   &columns_[n],
+                                   &columns_[2 * n],
+                                   &columns_[3 * n],
+                                   &columns_[4 * n]};
+    for (auto& c : contacts_) {
+      c = node::ContactTableChannel(table_);
+    }
+  }
+  node_ = std::make_unique<RuntimeNode>(config, tyres_, contacts_);
+}
+
+}  // namespace tread::host

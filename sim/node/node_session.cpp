@@ -1,0 +1,225 @@
+#include "node/node_session.hpp"
+
+#include <algorithm>
+#include <array>
+#include <fstream>
+#include <iomanip>
+#include <ostream>
+#include <stdexcept>
+#include <vector>
+
+#include "gpiod/gpiod_pin.hpp"
+#include "node/candump_log.hpp"
+#include "posix/posix_clock.hpp"
+#include "socketcan/socketcan_bus.hpp"
+#include "stub/stub_can_bus.hpp"
+
+namespace tread::host {
+namespace {
+
+/// Writes every received and transmitted frame to one candump log.
+struct Recorder {
+  CandumpWriter* writer{nullptr};
+  void on_rx(const proto::CanFrame& frame, std::int64_t time_ns) noexcept {
+    if (writer != nullptr) writer->write(frame, time_ns);
+  }
+  void on_tx(const proto::CanFrame& frame, std::int64_t time_ns) noexcept {
+    if (writer != nullptr) writer->write(frame, time_ns);
+  }
+};
+
+hal::LoopConfig loop_config(const NodeSettings& s, std::int64_t period_us) {
+  hal::LoopConfig c;
+  c.period_ns = period_us * 1000;
+  c.schedule = s.node.schedule;
+  return c;
+}
+
+bool is_node_output(proto::Layout layout, std::uint32_t id) {
+  const proto::MessageSpec* m = proto::find_message(layout, id);
+  return m != nullptr && m->direction == proto::Direction::node_to_rig;
+}
+
+template <typename Bus, typename Pin>
+SessionReport run_with(Bus& bus, Pin& pin, NodeRuntime& runtime, const NodeSettings& settings,
+                       const LiveOptions& options, const std::atomic<bool>* stop,
+                       SessionReport report) {
+  hal::PosixClock clock;
+  CandumpWriter writer;
+  Recorder recorder;
+  if (!options.log.empty()) {
+    writer.open(options.log, options.can);
+    recorder.writer = &writer;
+  }
+  hal::LoopRunner loop(runtime.node(), bus, clock, pin, loop_config(settings, options.period_us),
+                       recorder);
+  loop.run(options.cycles == 0 ? ~std::uint64_t{0} : options.cycles, stop);
+  report.loop = loop.stats();
+  report.counters = runtime.node().counters();
+  return report;
+}
+
+}  // namespace
+
+SessionReport run_live(const NodeSettings& settings, const LiveOptions& options,
+                       const std::atomic<bool>* stop) {
+  NodeRuntime runtime(settings);
+  SessionReport report;
+  if (!runtime.tir_warning().empty()) {
+    report.notes += runtime.tir_warning() + "\n";
+  }
+  hal::GpiodPin pin;
+  if (!options.gpio_chip.empty()) {
+    if (pin.open(options.gpio_chip, static_cast<unsigned>(options.gpio_cycle_line)) != Status::ok) {
+      report.notes += "GPIO: " + pin.error() + "; running without the cycle pin\n";
+    }
+  }
+  const hal::RealtimeReport rt = hal::apply_realtime(options.realtime);
+  report.notes += rt.messages;
+
+  if (options.can == "stub") {
+    hal::PosixClock clock;
+    hal::StubCanNetwork network(&hal::clock_now<hal::PosixClock>, &clock);
+    return run_with(network.endpoint(0), pin, runtime, settings, options, stop, report);
+  }
+  hal::SocketCanBus bus;
+  const bool fd = settings.node.layout == proto::Layout::fd;
+  const Status opened = bus.open(options.can, fd);
+  if (opened == Status::unsupported && bus.last_errno() == EAFNOSUPPORT) {
+    throw std::runtime_error(
+        "SocketCAN is not available in this kernel (socket(AF_CAN) refused); "
+        "use --can stub, or run in the VM harness (scripts/vm/run-in-vm.sh)");
+  }
+  if (opened != Status::ok) {
+    throw std::runtime_error("cannot open CAN interface '" + options.can + "' (" +
+                             to_string(opened) + ", errno " + std::to_string(bus.last_errno()) +
+                             (fd ? "; is its mtu 72 for CAN FD?" : "") + ")");
+  }
+  std::vector<hal::CanIdFilter> filters;
+  for (const proto::MessageSpec& m : proto::messages(settings.node.layout)) {
+    if (m.direction == proto::Direction::rig_to_node) {
+      filters.push_back({m.id, 0x7FF, false});
+    }
+  }
+  if (bus.set_filters(filters) != Status::ok) {
+    throw std::runtime_error("cannot install CAN ID filters on " + options.can);
+  }
+  return run_with(bus, pin, runtime, settings, options, stop, report);
+}
+
+ReplayResult run_replay(const NodeSettings& settings, const std::filesystem::path& log,
+                        std::int64_t period_us, const std::filesystem::path& tx_log) {
+  const std::vector<LoggedFrame> frames = read_candump_log(log);
+  if (frames.empty()) {
+    throw std::runtime_error(log.string() + ": no frames");
+  }
+  const proto::Layout layout = settings.node.layout;
+  // The node's own frames mark the cycles it ran (every cycle sends NodeStatus); the rest are its
+  // inputs, logged at the time the node consumed them. Replaying both in time order (inputs before
+  // the computation at the same time) repeats the run exactly, in periodic and in sync mode alike.
+  std::vector<const LoggedFrame*> inputs;
+  std::vector<std::int64_t> cycle_times;
+  std::vector<std::string> logged_tx;
+  char line[kCandumpLineMax + 1];
+  for (const LoggedFrame& f : frames) {
+    if (is_node_output(layout, f.frame.id) && !f.frame.error) {
+      format_candump_line(f.frame, f.time_ns, f.interface, line);
+      logged_tx.emplace_back(line);
+      if (cycle_times.empty() || cycle_times.back() != f.time_ns) {
+        cycle_times.push_back(f.time_ns);
+      }
+    } else {
+      inputs.push_back(&f);
+    }
+  }
+  if (cycle_times.empty()) {
+    throw std::runtime_error(log.string() +
+                             ": holds no frames sent by the node, so its cycles are unknown "
+                             "(record with tread node --log, which logs both directions)");
+  }
+  std::stable_sort(inputs.begin(), inputs.end(), [](const LoggedFrame* a, const LoggedFrame* b) {
+    return a->time_ns < b->time_ns;
+  });
+  std::sort(cycle_times.begin(), cycle_times.end());
+  cycle_times.erase(std::unique(cycle_times.begin(), cycle_times.end()), cycle_times.end());
+
+  NodeRuntime runtime(settings);
+  RuntimeNode& node = runtime.node();
+  CandumpWriter writer;
+  const std::string interface = frames.front().interface;
+  if (!tx_log.empty()) {
+    writer.open(tx_log, interface);
+  }
+  const std::int64_t period_ns = period_us * 1000;
+  const bool periodic = settings.node.schedule == node::Schedule::periodic;
+  std::vector<std::string> replayed_tx;
+  std::array<proto::CanFrame, node::kMaxTxFrames> tx{};
+  std::size_t next = 0;
+  ReplayResult result;
+  for (std::size_t k = 0; k < cycle_times.size(); ++k) {
+    const std::int64_t now = cycle_times[k];
+    if (periodic && k > 0) {
+      // Deadlines the live run skipped after an overrun: reported by the runner before this cycle.
+      const std::int64_t missed = (now - cycle_times[k - 1]) / period_ns - 1;
+      if (missed > 0) {
+        node.note_overrun(static_cast<std::uint64_t>(missed));
+        result.report.loop.overruns += static_cast<std::uint64_t>(missed);
+      }
+    }
+    while (next < inputs.size() && inputs[next]->time_ns <= now) {
+      static_cast<void>(node.receive(inputs[next]->frame, inputs[next]->time_ns));
+      ++next;
+    }
+    const std::size_t n = node.compute(now, tx);
+    for (std::size_t i = 0; i < n; ++i) {
+      format_candump_line(tx[i], now, interface, line);
+      replayed_tx.emplace_back(line);
+      writer.write(tx[i], now);
+    }
+    ++result.report.loop.cycles;
+  }
+  result.report.counters = node.counters();
+  result.input_frames = inputs.size();
+  result.tx_frames = replayed_tx.size();
+  result.logged_tx_frames = logged_tx.size();
+  result.identical = logged_tx == replayed_tx;
+  if (!result.identical) {
+    const std::size_t n = std::min(logged_tx.size(), replayed_tx.size());
+    std::size_t i = 0;
+    while (i < n && logged_tx[i] == replayed_tx[i]) ++i;
+    result.first_difference = i < n ? "TX frame " + std::to_string(i + 1) + ": log '" +
+                                          logged_tx[i] + "', replay '" + replayed_tx[i] + "'"
+                                    : "different number of TX frames (log " +
+                                          std::to_string(logged_tx.size()) + ", replay " +
+                                          std::to_string(replayed_tx.size()) + ")";
+  }
+  return result;
+}
+
+void print_report(std::ostream& out, const SessionReport& r, bool timing) {
+  const node::NodeCounters& c = r.counters;
+  out << "cycles            " << r.loop.cycles << "\n";
+  out << "overruns          " << r.loop.overruns << "\n";
+  if (timing) {
+    const auto row = [&out](const char* name, const hal::LatencyHistogram& h) {
+      out << name << " p50 " << h.percentile_us(0.50) << " us, p99 " << h.percentile_us(0.99)
+          << " us, max " << std::fixed << std::setprecision(1)
+          << static_cast<double>(h.max_ns()) / 1000.0 << " us\n";
+      out.unsetf(std::ios::floatfield);
+    };
+    row("wake latency     ", r.loop.wake_latency);
+    row("cycle time       ", r.loop.cycle_time);
+  }
+  out << "frames received   " << c.rx_frames << " (accepted " << c.rx_accepted << ", ignored "
+      << c.rx_ignored << ", error frames " << c.rx_error_frames << ")\n";
+  out << "frames rejected   " << c.rx_rejected() << " (bad CRC " << c.rx_bad_crc << ", bad counter "
+      << c.rx_bad_counter << ", bad length " << c.rx_bad_length << ")\n";
+  out << "frames lost       " << c.lost_frames << " (counter gaps)\n";
+  out << "frames sent       " << c.tx_frames << " (send refused " << r.loop.tx_failed << ")\n";
+  out << "stale / clamped   " << c.stale_events << " / " << c.clamp_events << " channel-cycles\n";
+  if (!r.notes.empty()) {
+    out << r.notes;
+  }
+}
+
+}  // namespace tread::host

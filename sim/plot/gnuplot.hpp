@@ -1,0 +1,19 @@
+#pragma once
+// Plots through gnuplot (Debian gnuplot-nox): the tools write their data to files and a script to a
+// gnuplot pipe. One place for starting gnuplot, quoting and error reporting.
+
+#include <string>
+
+namespace tread::host {
+
+/// Runs `script` through gnuplot; throws std::runtime_error naming `what` if gnuplot cannot start
+/// or reports failure.
+void run_gnuplot(const std::string& script, const std::string& what);
+
+/// A gnuplot single-quoted string literal ('it''s').
+std::string gnuplot_quote(const std::string& text);
+
+/// "pngcairo" or "svg" terminal line for `path` (by its extension), with the given pixel size.
+std::string gnuplot_terminal(const std::string& path, int width, int height);
+
+}  // namespace tread::host

@@ -1,0 +1,10 @@
+# Regenerates a DBC with `tread proto dbc` and fails if it differs from the file in the repo.
+execute_process(COMMAND ${TREAD} proto dbc --layout ${LAYOUT} --output ${OUT} RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "tread proto dbc failed (${rc})")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT} ${EXPECTED} RESULT_VARIABLE diff)
+if(NOT diff EQUAL 0)
+  message(FATAL_ERROR "${EXPECTED} is out of date: run `tread proto dbc --layout ${LAYOUT} --output ${EXPECTED}`")
+endif()
+message(STATUS "${EXPECTED} matches the codec tables")
