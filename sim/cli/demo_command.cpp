@@ -29,6 +29,8 @@ void add_demo_command(CLI::App& app) {
   demo->add_option("--period-us", settings.period_us, "cycle period")->capture_default_str();
   demo->add_option("--out", settings.out_dir, "directory for the trace and plots")
       ->capture_default_str();
+  demo->add_flag(
+      "--no-plot", [](std::int64_t) { settings.plot = false; }, "write the trace but no plot");
   demo->add_option("--log", settings.log,
                    "candump log of the node's traffic (replay with tread node --replay)");
   demo->callback([] {

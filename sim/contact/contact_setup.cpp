@@ -33,12 +33,7 @@ double parse_cant_rad(const std::string& text) {
   throw std::invalid_argument("--cant '" + text + "': expected 1:N (e.g. 1:40), none or 0");
 }
 
-namespace {
-
-constexpr double kBuiltinSampleStep_mm = 0.01;
-
-/// "S1002", "EPS" or "1/40", optionally ":h=28,e=32.5,slope=1:15,width=140,chamfer=1".
-profile::SampledProfile builtin_wheel(const std::string& spec) {
+profile::WheelParameters parse_wheel_spec(const std::string& spec) {
   profile::WheelParameters p;
   const auto colon = spec.find(':');
   p.family = profile::parse_wheel_family(spec.substr(0, colon));
@@ -71,7 +66,15 @@ profile::SampledProfile builtin_wheel(const std::string& spec) {
       }
     }
   }
-  return profile::WheelProfile(p).sample(kBuiltinSampleStep_mm);
+  return p;
+}
+
+namespace {
+
+constexpr double kBuiltinSampleStep_mm = 0.01;
+
+profile::SampledProfile builtin_wheel(const std::string& spec) {
+  return profile::WheelProfile(parse_wheel_spec(spec)).sample(kBuiltinSampleStep_mm);
 }
 
 /// 60E1 or 54E1 inclined by the cant and placed at the gauge, in the track frame (origin 750 mm

@@ -7,6 +7,7 @@
 
 #include "contact/rail_placement.hpp"
 #include "contact/rigid_contact.hpp"
+#include "profile/wheel_profile.hpp"
 
 namespace tread::contact {
 
@@ -25,6 +26,10 @@ struct ContactSetup {
   std::optional<double> r0_right_mm;
   double smooth_half_window_mm = 0.0;  ///< local quadratic smoothing of the profiles (0 = off)
 };
+
+/// A built-in wheel: "S1002", "EPS" or "1/40", optionally ":h=28,e=32.5,slope=1:15,width=140,
+/// chamfer=1". Throws std::invalid_argument naming the bad part.
+profile::WheelParameters parse_wheel_spec(const std::string& spec);
 
 /// "1:40" -> atan(1/40); "none" or "0" -> 0. Throws std::invalid_argument otherwise.
 double parse_cant_rad(const std::string& text);

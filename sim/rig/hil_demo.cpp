@@ -158,7 +158,7 @@ DemoResult co_simulate(const DemoSettings& s, NodeRuntime& runtime, ClockT& cloc
     }
     if (!out) throw std::runtime_error("cannot write " + result.trace_csv.string());
   }
-  if (cfg.wheels >= 2) {
+  if (s.plot && cfg.wheels >= 2) {
     result.plot_png = s.out_dir / "demo.png";
     const std::string data = gnuplot_quote(result.trace_csv.string());
     const int stride = 9;  // columns per wheel

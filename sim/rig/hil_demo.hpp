@@ -20,6 +20,7 @@ struct DemoSettings {
   std::int64_t period_us{1000};
   std::filesystem::path out_dir{"tread-demo"};
   std::filesystem::path log;  ///< candump log of the node's traffic (replayable)
+  bool plot{true};            ///< draw demo.png with gnuplot
 };
 
 struct DemoResult {

@@ -38,6 +38,43 @@ bool valid(std::uint32_t count, float step) noexcept {
   return count >= 2U && step > 0.0F;
 }
 
+struct PositionQ {
+  std::uint32_t index;
+  std::int64_t remainder;  ///< 0..step toward the next row
+  Status status;
+};
+
+PositionQ locate_q(std::int32_t y_first, std::int32_t y_step, std::uint32_t count,
+                   std::int32_t y) noexcept {
+  const std::int64_t span = static_cast<std::int64_t>(count - 1U) * y_step;
+  std::int64_t offset = static_cast<std::int64_t>(y) - y_first;
+  Status status = Status::ok;
+  if (offset < 0) {
+    offset = 0;
+    status = Status::out_of_range;
+  } else if (offset > span) {
+    offset = span;
+    status = Status::out_of_range;
+  }
+  auto index = static_cast<std::uint32_t>(offset / y_step);
+  std::int64_t rem = offset % y_step;
+  if (index >= count - 1U) {
+    index = count - 2U;
+    rem = y_step;
+  }
+  return {index, rem, status};
+}
+
+/// a + (b - a)·rem/step, rounded to nearest (symmetric for negative differences).
+std::int32_t lerp_q(const std::int32_t* column, const PositionQ& p, std::int32_t y_step) noexcept {
+  const std::int64_t a = column[p.index];
+  const std::int64_t b = column[p.index + 1U];
+  const std::int64_t num = (b - a) * p.remainder;
+  const std::int64_t half = y_step / 2;
+  const std::int64_t q = num >= 0 ? (num + half) / y_step : -((-num + half) / y_step);
+  return static_cast<std::int32_t>(a + q);
+}
+
 }  // namespace
 
 Result<ContactSample> lookup(const ContactTableF32& t, float y_mm) noexcept {
@@ -64,35 +101,13 @@ Result<ContactSampleQ> lookup(const ContactTableQ& t, std::int32_t y) noexcept {
     r.status = Status::invalid_argument;
     return r;
   }
-  const std::int64_t span = static_cast<std::int64_t>(t.count - 1U) * t.y_step;
-  std::int64_t offset = static_cast<std::int64_t>(y) - t.y_first;
-  if (offset < 0) {
-    offset = 0;
-    r.status = Status::out_of_range;
-  } else if (offset > span) {
-    offset = span;
-    r.status = Status::out_of_range;
-  }
-  auto index = static_cast<std::uint32_t>(offset / t.y_step);
-  std::int64_t rem = offset % t.y_step;
-  if (index >= t.count - 1U) {
-    index = t.count - 2U;
-    rem = t.y_step;
-  }
-  const auto lerp_q = [&](const std::int32_t* c) {
-    const std::int64_t a = c[index];
-    const std::int64_t b = c[index + 1U];
-    const std::int64_t num = (b - a) * rem;
-    // Round to nearest, symmetric for negative differences.
-    const std::int64_t half = t.y_step / 2;
-    const std::int64_t q = num >= 0 ? (num + half) / t.y_step : -((-num + half) / t.y_step);
-    return static_cast<std::int32_t>(a + q);
-  };
-  r.value.r_left = lerp_q(t.r_left);
-  r.value.r_right = lerp_q(t.r_right);
-  r.value.delta_r = lerp_q(t.delta_r);
-  r.value.gamma_left = lerp_q(t.gamma_left);
-  r.value.gamma_right = lerp_q(t.gamma_right);
+  const PositionQ p = locate_q(t.y_first, t.y_step, t.count, y);
+  r.status = p.status;
+  r.value.r_left = lerp_q(t.r_left, p, t.y_step);
+  r.value.r_right = lerp_q(t.r_right, p, t.y_step);
+  r.value.delta_r = lerp_q(t.delta_r, p, t.y_step);
+  r.value.gamma_left = lerp_q(t.gamma_left, p, t.y_step);
+  r.value.gamma_right = lerp_q(t.gamma_right, p, t.y_step);
   return r;
 }
 
@@ -105,6 +120,18 @@ Result<float> lookup(const RadiusTableF32& t, float y_mm) noexcept {
   const Position p = locate(t.y_first_mm, t.y_step_mm, t.count, y_mm);
   r.status = p.status;
   r.value = lerp(t.z_mm, p);
+  return r;
+}
+
+Result<std::int32_t> lookup(const RadiusTableQ& t, std::int32_t y) noexcept {
+  Result<std::int32_t> r;
+  if (t.count < 2U || t.y_step <= 0 || t.z == nullptr) {
+    r.status = Status::invalid_argument;
+    return r;
+  }
+  const PositionQ p = locate_q(t.y_first, t.y_step, t.count, y);
+  r.status = p.status;
+  r.value = lerp_q(t.z, p, t.y_step);
   return r;
 }
 

@@ -74,4 +74,15 @@ struct RadiusTableF32 {
 /// z(y) (radius increase); as lookup() above.
 Result<float> lookup(const RadiusTableF32& table, float y_mm) noexcept;
 
+/// Fixed point r(y) table: y in µm units (kQYPerMm), z in 0.1 µm (kQLengthPerMm).
+struct RadiusTableQ {
+  std::int32_t y_first{0};
+  std::int32_t y_step{0};
+  std::uint32_t count{0};
+  const std::int32_t* z{nullptr};
+};
+
+/// z(y) in 0.1 µm for y in µm; integer-only.
+Result<std::int32_t> lookup(const RadiusTableQ& table, std::int32_t y) noexcept;
+
 }  // namespace tread::rail

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -26,13 +27,18 @@ namespace t = tread::pac::testing;
 constexpr double kPi = std::numbers::pi;
 
 TEST(Pac94, ReducesToPac89WithoutShiftsAndExtensions) {
+  // The two models group their terms differently; aarch64 contracts a*b+c into FMA, so equality
+  // holds to rounding (a few 1e-15 relative), not to the last bit.
+  const auto near = [](double a, double b) {
+    return std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(b));
+  };
   const auto p = t::symmetric_set<double>();
   for (double fz = 0.5; fz < 9.0; fz += 0.7) {
     for (double s = -40.0; s <= 40.0; s += 0.83) {
       for (const double g : {-3.0, 0.0, 2.0}) {
-        EXPECT_DOUBLE_EQ(Pac94::fx0(p, fz, s), Pac89::fx0(p, fz, s));
-        EXPECT_DOUBLE_EQ(Pac94::fy0(p, fz, s, g), Pac89::fy0(p, fz, s, g));
-        EXPECT_DOUBLE_EQ(Pac94::mz0(p, fz, s, g), Pac89::mz0(p, fz, s, g));
+        EXPECT_PRED2(near, Pac94::fx0(p, fz, s), Pac89::fx0(p, fz, s));
+        EXPECT_PRED2(near, Pac94::fy0(p, fz, s, g), Pac89::fy0(p, fz, s, g));
+        EXPECT_PRED2(near, Pac94::mz0(p, fz, s, g), Pac89::mz0(p, fz, s, g));
       }
     }
   }

@@ -1,0 +1,10 @@
+# Regenerates the default lookup tables and fails if they differ from lut/generated/.
+execute_process(COMMAND ${GEN} ${ARGS} --output ${OUT} RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "tread_lut_gen failed (${rc})")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT} ${EXPECTED} RESULT_VARIABLE diff)
+if(NOT diff EQUAL 0)
+  message(FATAL_ERROR "${EXPECTED} differs from what the build generates (${OUT}); regenerate it")
+endif()
+message(STATUS "lookup tables reproduced byte for byte")
