@@ -51,6 +51,15 @@ class Node {
       }
     }
     last_valid_ns_.fill(kNever);
+    for (std::size_t bit = 0; bit < 8U; ++bit) {
+      for (std::size_t m = 0; m < all.size(); ++m) {
+        if (all[m].direction == proto::Direction::rig_to_node &&
+            ((static_cast<unsigned>(feeds_[m]) >> bit) & 1U) != 0U &&
+            inputs_of_[bit].count < inputs_of_[bit].message.size()) {
+          inputs_of_[bit].message[inputs_of_[bit].count++] = static_cast<std::uint8_t>(m);
+        }
+      }
+    }
   }
 
   /// Validates one received frame and keeps its values.
@@ -243,18 +252,14 @@ class Node {
   }
   /// Every input message feeding the channel `bit` arrived valid within the timeout.
   [[nodiscard]] bool fresh(std::uint8_t bit, std::int64_t now_ns) const noexcept {
-    const auto all = proto::messages(config_.layout);
-    bool any = false;
-    for (std::size_t m = 0; m < all.size(); ++m) {
-      if (all[m].direction != proto::Direction::rig_to_node || (feeds_[m] & bit) == 0U) {
-        continue;
-      }
-      any = true;
-      if (last_valid_ns_[m] == kNever || now_ns - last_valid_ns_[m] > config_.input_timeout_ns) {
+    const ChannelInputs& inputs = inputs_of_[static_cast<std::size_t>(std::countr_zero(bit))];
+    for (std::size_t k = 0; k < inputs.count; ++k) {
+      const std::int64_t last = last_valid_ns_[inputs.message[k]];
+      if (last == kNever || now_ns - last > config_.input_timeout_ns) {
         return false;
       }
     }
-    return any;
+    return inputs.count > 0U;
   }
   void apply_command() noexcept {
     enabled_ = latest_.command.enable;
@@ -307,6 +312,12 @@ class Node {
   std::array<std::uint8_t, proto::kMaxMessages> feeds_{};
   std::array<std::uint8_t, proto::kMaxMessages> tx_counters_{};
   std::array<std::uint8_t, kMaxTxFrames> tx_list_{};
+  /// Per channel bit (wheel i: bit i, wheelset j: bit 4+j): the input messages that feed it.
+  struct ChannelInputs {
+    std::array<std::uint8_t, 4> message{};
+    std::size_t count{0};
+  };
+  std::array<ChannelInputs, 8> inputs_of_{};
   std::size_t tx_count_{0};
   std::int64_t last_compute_ns_{kNever};
 };

@@ -4,30 +4,37 @@
 
 namespace tread::proto {
 
+// Intel layout: the signal's bits are bits [start, start+length) of the little-endian byte string.
+// A signal of up to 32 bits spans at most 5 bytes: work on that window as one integer.
 void put_raw(std::span<std::uint8_t> data, std::uint16_t start_bit, std::uint8_t length,
              std::uint64_t raw) noexcept {
-  for (std::uint32_t i = 0; i < length; ++i) {
-    const std::uint32_t bit = start_bit + i;
-    const std::size_t byte = bit / 8U;
-    const auto mask = static_cast<std::uint8_t>(1U << (bit % 8U));
-    if (((raw >> i) & 1U) != 0U) {
-      data[byte] = static_cast<std::uint8_t>(data[byte] | mask);
-    } else {
-      data[byte] = static_cast<std::uint8_t>(data[byte] & static_cast<std::uint8_t>(~mask));
-    }
+  const std::size_t first = start_bit / 8U;
+  const std::size_t last = (static_cast<std::size_t>(start_bit) + length - 1U) / 8U;
+  const unsigned shift = start_bit % 8U;
+  std::uint64_t window = 0;
+  for (std::size_t i = last + 1U; i-- > first;) {
+    window = (window << 8U) | data[i];
+  }
+  const std::uint64_t mask =
+      ((length >= 64U) ? ~std::uint64_t{0} : ((std::uint64_t{1} << length) - 1U)) << shift;
+  window = (window & ~mask) | ((raw << shift) & mask);
+  for (std::size_t i = first; i <= last; ++i) {
+    data[i] = static_cast<std::uint8_t>(window & 0xFFU);
+    window >>= 8U;
   }
 }
 
 std::uint64_t get_raw(std::span<const std::uint8_t> data, std::uint16_t start_bit,
                       std::uint8_t length) noexcept {
-  std::uint64_t raw = 0;
-  for (std::uint32_t i = 0; i < length; ++i) {
-    const std::uint32_t bit = start_bit + i;
-    if (((static_cast<std::uint32_t>(data[bit / 8U]) >> (bit % 8U)) & 1U) != 0U) {
-      raw |= std::uint64_t{1} << i;
-    }
+  const std::size_t first = start_bit / 8U;
+  const std::size_t last = (static_cast<std::size_t>(start_bit) + length - 1U) / 8U;
+  std::uint64_t window = 0;
+  for (std::size_t i = last + 1U; i-- > first;) {
+    window = (window << 8U) | data[i];
   }
-  return raw;
+  const std::uint64_t mask =
+      (length >= 64U) ? ~std::uint64_t{0} : ((std::uint64_t{1} << length) - 1U);
+  return (window >> (start_bit % 8U)) & mask;
 }
 
 Status encode_raw_signal(const SignalSpec& spec, std::int64_t raw,
@@ -59,7 +66,7 @@ Status encode_signal(const SignalSpec& spec, float value, std::span<std::uint8_t
     static_cast<void>(encode_raw_signal(spec, 0, data));
     return Status::out_of_range;
   }
-  const float steps = std::nearbyint((value - spec.offset_f) / spec.factor_f);
+  const float steps = (value - spec.offset_f) * spec.inverse_factor_f;
   // Compare in float before converting: the float may be far outside any integer range.
   if (steps < static_cast<float>(spec.raw_min())) {
     static_cast<void>(encode_raw_signal(spec, spec.raw_min(), data));
@@ -69,8 +76,11 @@ Status encode_signal(const SignalSpec& spec, float value, std::span<std::uint8_t
     static_cast<void>(encode_raw_signal(spec, spec.raw_max(), data));
     return Status::out_of_range;
   }
-  // float(raw_max) may round up past raw_max for long signals; encode_raw_signal saturates exactly.
-  static_cast<void>(encode_raw_signal(spec, static_cast<std::int64_t>(steps), data));
+  // Round half away from zero (no libm call on the hot path). float(raw_max) may round up past
+  // raw_max for long signals; encode_raw_signal saturates exactly.
+  const auto raw = steps >= 0.0F ? static_cast<std::int64_t>(steps + 0.5F)
+                                 : -static_cast<std::int64_t>(0.5F - steps);
+  static_cast<void>(encode_raw_signal(spec, raw, data));
   return Status::ok;
 }
 

@@ -90,6 +90,7 @@ struct SignalSpec {
   const char* unit;
   float factor_f;  ///< factor and offset as float for the real-time path
   float offset_f;
+  float inverse_factor_f;  ///< 1 / factor, so encoding multiplies
 
   constexpr SignalSpec() : SignalSpec(Role::crc, "", -1, 0, 8, false, 1.0, 0.0, "") {}
   constexpr SignalSpec(Role role_, const char* name_, std::int8_t instance_, std::uint16_t start,
@@ -105,7 +106,8 @@ struct SignalSpec {
         offset(offset_),
         unit(unit_),
         factor_f(static_cast<float>(factor_)),
-        offset_f(static_cast<float>(offset_)) {}
+        offset_f(static_cast<float>(offset_)),
+        inverse_factor_f(static_cast<float>(1.0 / factor_)) {}
 
   [[nodiscard]] constexpr std::int64_t raw_min() const noexcept {
     return is_signed ? -(std::int64_t{1} << (length - 1U)) : 0;
@@ -129,8 +131,8 @@ void put_raw(std::span<std::uint8_t> data, std::uint16_t start_bit, std::uint8_t
 [[nodiscard]] std::uint64_t get_raw(std::span<const std::uint8_t> data, std::uint16_t start_bit,
                                     std::uint8_t length) noexcept;
 
-/// Encodes a physical value: rounds to the nearest raw step and saturates to the raw range.
-/// A non-finite value encodes as 0 (physical `offset`).
+/// Encodes a physical value: rounds to the nearest raw step (halves away from zero) and saturates
+/// to the raw range. A non-finite value encodes as 0 (physical `offset`).
 /// @retval Status::ok            encoded exactly within half a step
 /// @retval Status::out_of_range  saturated, or the value was not finite
 Status encode_signal(const SignalSpec& spec, float value, std::span<std::uint8_t> data) noexcept;

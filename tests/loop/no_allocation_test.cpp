@@ -95,7 +95,11 @@ TEST(NoAllocation, TheCounterSeesNewAndMalloc) {  // the measurement itself is n
   g_counting = false;
   std::free(raw);
   delete boxed;
+#if defined(__SANITIZE_ADDRESS__)
+  EXPECT_GE(g_allocations.load(), 1U);  // under ASan only operator new is counted (see above)
+#else
   EXPECT_GE(g_allocations.load(), 2U);
+#endif
 }
 
 TEST(NoAllocation, HundredThousandCyclesOfTheFullLoopAllocateNothing) {

@@ -232,7 +232,8 @@ TEST(WheelProfileGolden, FlangeArcCentresOfEveryHeightAndThickness) {
         (name != "Hm" && name != "RIm" && name != "REm" && name != "Fm" && name != "Dm")) {
       continue;
     }
-    const ProfilePoint& p = point(WheelProfile({WheelFamily::kS1002, h, e}), name);
+    const WheelProfile wheel({WheelFamily::kS1002, h, e});
+    const ProfilePoint& p = point(wheel, name);  // a reference into `wheel`: keep it alive
     const double dy = std::fabs(p.y_mm - std::stod(row[3]));
     const double dz = std::fabs(p.z_mm - std::stod(row[4]));
     EXPECT_LT(dy, 6e-4) << h << " " << e << " " << name;
