@@ -29,6 +29,11 @@ void add_demo_command(CLI::App& app) {
   demo->add_option("--period-us", settings.period_us, "cycle period")->capture_default_str();
   demo->add_option("--out", settings.out_dir, "directory for the trace and plots")
       ->capture_default_str();
+  demo->add_option("--rt-priority", settings.realtime.fifo_priority,
+                   "SCHED_FIFO priority 1..99 (0: leave)")
+      ->check(CLI::Range(0, 99));
+  demo->add_flag("--mlock", settings.realtime.lock_memory, "lock all memory (mlockall)");
+  demo->add_option("--cpu", settings.realtime.cpu, "pin the loop to this CPU");
   demo->add_flag(
       "--no-plot", [](std::int64_t) { settings.plot = false; }, "write the trace but no plot");
   demo->add_option("--log", settings.log,

@@ -207,6 +207,7 @@ DemoResult co_simulate(const DemoSettings& s, NodeRuntime& runtime, ClockT& cloc
 
 DemoResult run_demo(const DemoSettings& s) {
   NodeRuntime runtime(s.node);
+  const hal::RealtimeReport rt = hal::apply_realtime(s.realtime);
   DemoResult result;
   if (s.can == "stub") {
     if (s.sim_clock) {
@@ -235,7 +236,8 @@ DemoResult run_demo(const DemoSettings& s) {
     hal::PosixClock clock;
     result = co_simulate(s, runtime, clock, node_bus, rig_bus);
   }
-  result.report.notes = runtime.tir_warning().empty() ? "" : runtime.tir_warning() + "\n";
+  result.report.notes =
+      rt.messages + (runtime.tir_warning().empty() ? "" : runtime.tir_warning() + "\n");
   return result;
 }
 

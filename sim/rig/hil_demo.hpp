@@ -19,8 +19,9 @@ struct DemoSettings {
   double duration_s{4.0};
   std::int64_t period_us{1000};
   std::filesystem::path out_dir{"tread-demo"};
-  std::filesystem::path log;  ///< candump log of the node's traffic (replayable)
-  bool plot{true};            ///< draw demo.png with gnuplot
+  std::filesystem::path log;        ///< candump log of the node's traffic (replayable)
+  bool plot{true};                  ///< draw demo.png with gnuplot
+  hal::RealtimeRequest realtime{};  ///< SCHED_FIFO / mlockall / CPU affinity for the loop
 };
 
 struct DemoResult {
