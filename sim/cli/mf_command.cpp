@@ -10,6 +10,7 @@
 #include "mf/mf_options.hpp"
 #include "mf/mf_parameters_from_tir.hpp"
 #include "mf/mf_plot.hpp"
+#include "plot/gnuplot.hpp"
 
 namespace tread::cli {
 
@@ -65,7 +66,7 @@ void run_mf_plot(const MfPlotArgs& args) {
   plot.title = std::filesystem::path(args.tir).filename().string() + " (useMode " +
                std::to_string(args.mode) + ")";
   for (const auto& out : {png, svg}) {
-    mf::run_gnuplot_script(mf::mf_plot_script(loaded.params, options.value, plot, out));
+    host::run_gnuplot(mf::mf_plot_script(loaded.params, options.value, plot, out), out.string());
     std::cerr << "tread mf plot: wrote " << out.string() << '\n';
   }
 }

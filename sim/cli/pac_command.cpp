@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "plot/gnuplot.hpp"
 #include "tir/pac_coefficients.hpp"
 #include "tir/pac_csv.hpp"
 #include "tir/pac_plot.hpp"
@@ -52,7 +53,7 @@ void add_pac_command(CLI::App& app) {
     po.loads_n = opt.loads;
     po.title = (opt.model == 94 ? "PAC94 " : "PAC89 ") +
                std::filesystem::path(opt.json.empty() ? opt.tir : opt.json).filename().string();
-    tir::run_gnuplot(tir::pac_plot_script(coeff.params, po, opt.output));
+    host::run_gnuplot(tir::pac_plot_script(coeff.params, po, opt.output), opt.output);
     std::cout << "wrote " << opt.output << '\n';
   });
 }

@@ -1,10 +1,11 @@
 #include "contact/contact_plot.hpp"
 
-#include <cstdio>
 #include <filesystem>
+
 #include <fstream>
 #include <stdexcept>
 #include <string>
+#include "plot/gnuplot.hpp"
 
 namespace tread::contact {
 
@@ -22,29 +23,20 @@ void plot_contact_table(const ContactTable& table, const std::string& title,
       throw std::runtime_error("cannot write " + data.string());
     }
   }
-  FILE* gp = popen("gnuplot", "w");
-  if (gp == nullptr) {
-    throw std::runtime_error("cannot start gnuplot (install gnuplot-nox)");
-  }
-  std::fprintf(gp,
-               "set terminal pngcairo size 900,900\n"
-               "set output '%s'\n"
-               "set multiplot layout 2,1 title '%s'\n"
-               "set grid\n"
-               "set xlabel 'wheelset displacement y (mm)'\n"
-               "set ylabel 'delta r = r_{left} - r_{right} (mm)'\n"
-               "plot '%s' using 1:2 with lines lw 2 title 'delta r'\n"
-               "set ylabel 'contact position on the wheel (mm)'\n"
-               "plot '%s' using 1:3 with lines lw 2 title 'left wheel', "
-               "'%s' using 1:4 with lines lw 2 title 'right wheel'\n"
-               "unset multiplot\n",
-               png_path.c_str(), title.c_str(), data.c_str(), data.c_str(), data.c_str());
-  const int status = pclose(gp);
-  std::filesystem::remove(data);
-  if (status != 0) {
-    throw std::runtime_error("gnuplot failed writing " + png_path + " (status " +
-                             std::to_string(status) + ")");
-  }
+  const std::string script = host::format_script(
+      "set terminal pngcairo size 900,900\n"
+      "set output '%s'\n"
+      "set multiplot layout 2,1 title '%s'\n"
+      "set grid\n"
+      "set xlabel 'wheelset displacement y (mm)'\n"
+      "set ylabel 'delta r = r_{left} - r_{right} (mm)'\n"
+      "plot '%s' using 1:2 with lines lw 2 title 'delta r'\n"
+      "set ylabel 'contact position on the wheel (mm)'\n"
+      "plot '%s' using 1:3 with lines lw 2 title 'left wheel', "
+      "'%s' using 1:4 with lines lw 2 title 'right wheel'\n"
+      "unset multiplot\n",
+      png_path.c_str(), title.c_str(), data.c_str(), data.c_str(), data.c_str());
+  host::run_gnuplot_with_data(script, png_path, data);
 }
 
 }  // namespace tread::contact

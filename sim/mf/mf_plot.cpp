@@ -111,22 +111,4 @@ std::string mf_plot_script(const MfParameters<double>& p, const MfOptions& optio
   return s.str();
 }
 
-void run_gnuplot_script(const std::string& script) {
-  const std::filesystem::path path =
-      std::filesystem::temp_directory_path() /
-      ("tread_mf_plot_" + std::to_string(std::hash<std::string>{}(script)) + ".gp");
-  {
-    std::ofstream f(path);
-    if (!f) throw std::runtime_error(path.string() + ": cannot write the gnuplot script");
-    f << script;
-  }
-  const std::string command = "gnuplot " + path.string();
-  const int status = std::system(command.c_str());
-  std::filesystem::remove(path);
-  if (status != 0) {
-    throw std::runtime_error("gnuplot failed (status " + std::to_string(status) +
-                             "); is gnuplot-nox installed?");
-  }
-}
-
 }  // namespace tread::mf

@@ -25,7 +25,4 @@ struct MfPlotOptions {
 std::string mf_plot_script(const MfParameters<double>& params, const MfOptions& options,
                            const MfPlotOptions& plot, const std::filesystem::path& output);
 
-/// Runs gnuplot on the script; throws std::runtime_error on failure.
-void run_gnuplot_script(const std::string& script);
-
 }  // namespace tread::mf

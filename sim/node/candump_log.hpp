@@ -53,4 +53,16 @@ class CandumpWriter {
   std::vector<char> buffer_;
 };
 
+/// A loop observer (hal/loop) that writes every frame received and sent to one candump log, so the
+/// log holds the node's view of the bus in both directions (what replay needs).
+struct CandumpRecorder {
+  CandumpWriter* writer{nullptr};
+  void on_rx(const proto::CanFrame& frame, std::int64_t time_ns) noexcept {
+    if (writer != nullptr) writer->write(frame, time_ns);
+  }
+  void on_tx(const proto::CanFrame& frame, std::int64_t time_ns) noexcept {
+    if (writer != nullptr) writer->write(frame, time_ns);
+  }
+};
+
 }  // namespace tread::host

@@ -17,17 +17,6 @@
 namespace tread::host {
 namespace {
 
-/// Writes every received and transmitted frame to one candump log.
-struct Recorder {
-  CandumpWriter* writer{nullptr};
-  void on_rx(const proto::CanFrame& frame, std::int64_t time_ns) noexcept {
-    if (writer != nullptr) writer->write(frame, time_ns);
-  }
-  void on_tx(const proto::CanFrame& frame, std::int64_t time_ns) noexcept {
-    if (writer != nullptr) writer->write(frame, time_ns);
-  }
-};
-
 hal::LoopConfig loop_config(const NodeSettings& s, std::int64_t period_us) {
   hal::LoopConfig c;
   c.period_ns = period_us * 1000;
@@ -46,7 +35,7 @@ SessionReport run_with(Bus& bus, Pin& pin, NodeRuntime& runtime, const NodeSetti
                        SessionReport report) {
   hal::PosixClock clock;
   CandumpWriter writer;
-  Recorder recorder;
+  CandumpRecorder recorder;
   if (!options.log.empty()) {
     writer.open(options.log, options.can);
     recorder.writer = &writer;

@@ -1,5 +1,6 @@
 #include "plot/gnuplot.hpp"
 
+#include <cstdarg>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
@@ -16,6 +17,32 @@ void run_gnuplot(const std::string& script, const std::string& what) {
   if (status != 0) {
     throw std::runtime_error(what + ": gnuplot failed (status " + std::to_string(status) + ")");
   }
+}
+
+void run_gnuplot_with_data(const std::string& script, const std::string& what,
+                           const std::filesystem::path& data_file) {
+  try {
+    run_gnuplot(script, what);
+  } catch (...) {
+    std::filesystem::remove(data_file);
+    throw;
+  }
+  std::filesystem::remove(data_file);
+}
+
+std::string format_script(const char* format, ...) {
+  va_list args;
+  va_start(args, format);
+  va_list copy;
+  va_copy(copy, args);
+  const int n = std::vsnprintf(nullptr, 0, format, copy);
+  va_end(copy);
+  std::string out(n > 0 ? static_cast<std::size_t>(n) : 0U, '\0');
+  if (n > 0) {
+    std::vsnprintf(out.data(), out.size() + 1U, format, args);
+  }
+  va_end(args);
+  return out;
 }
 
 std::string gnuplot_quote(const std::string& text) {

@@ -2,12 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
+
 #include <fstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
+#include "plot/gnuplot.hpp"
 
 namespace tread::profile {
 
@@ -47,13 +48,8 @@ void plot_wheel_profile(const WheelProfile& wheel, double step_mm, const std::st
   const std::filesystem::path data =
       std::filesystem::path(png_path).replace_extension(".plotdata.tsv");
   write_data(data, {&wheel, &s1002, &eps, &one40}, std::min(step_mm, 0.1));
-  FILE* gp = popen("gnuplot", "w");
-  if (gp == nullptr) {
-    throw std::runtime_error("cannot start gnuplot (install gnuplot-nox)");
-  }
   const std::string d = data.string();
-  std::fprintf(
-      gp,
+  const std::string script = host::format_script(
       "set terminal pngcairo size 1000,1200\n"
       "set output '%s'\n"
       "set multiplot layout 3,1 title '%s'\n"
@@ -75,12 +71,7 @@ void plot_wheel_profile(const WheelProfile& wheel, double step_mm, const std::st
       png_path.c_str(), wheel.name().c_str(), d.c_str(), d.c_str(), wheel.y_max_mm(),
       wheel.parameters().flange_height_mm, wheel.parameters().flange_thickness_mm,
       to_string(wheel.parameters().outer_slope), d.c_str(), d.c_str(), d.c_str());
-  const int status = pclose(gp);
-  std::filesystem::remove(data);
-  if (status != 0) {
-    throw std::runtime_error("gnuplot failed writing " + png_path + " (status " +
-                             std::to_string(status) + ")");
-  }
+  host::run_gnuplot_with_data(script, png_path, data);
 }
 
 }  // namespace tread::profile

@@ -21,16 +21,6 @@
 namespace tread::host {
 namespace {
 
-struct Recorder {
-  CandumpWriter* writer{nullptr};
-  void on_rx(const proto::CanFrame& f, std::int64_t t) noexcept {
-    if (writer != nullptr) writer->write(f, t);
-  }
-  void on_tx(const proto::CanFrame& f, std::int64_t t) noexcept {
-    if (writer != nullptr) writer->write(f, t);
-  }
-};
-
 struct TraceRow {
   double t_s;
   proto::WheelInput in[proto::kMaxWheels];
@@ -47,7 +37,7 @@ DemoResult co_simulate(const DemoSettings& s, NodeRuntime& runtime, ClockT& cloc
                        NodeBus& node_bus, RigBus& rig_bus) {
   const node::NodeConfig& cfg = runtime.node().config();
   CandumpWriter writer;
-  Recorder recorder;
+  CandumpRecorder recorder;
   if (!s.log.empty()) {
     writer.open(s.log, s.can);
     recorder.writer = &writer;

@@ -98,14 +98,4 @@ std::string pac_plot_script(const pac::PacParams<double>& p, const PacPlotOption
   return s.str();
 }
 
-void run_gnuplot(const std::string& script) {
-  FILE* pipe = popen("gnuplot", "w");
-  if (pipe == nullptr) throw std::runtime_error("cannot start gnuplot");
-  const std::size_t written = std::fwrite(script.data(), 1, script.size(), pipe);
-  const int status = pclose(pipe);
-  if (written != script.size() || status != 0) {
-    throw std::runtime_error("gnuplot failed (status " + std::to_string(status) + ")");
-  }
-}
-
 }  // namespace tread::tir

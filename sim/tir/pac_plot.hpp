@@ -28,7 +28,4 @@ struct PacPlotOptions {
 std::string pac_plot_script(const pac::PacParams<double>& params, const PacPlotOptions& options,
                             const std::filesystem::path& output);
 
-/// Runs gnuplot on the script; throws std::runtime_error with gnuplot's exit status on failure.
-void run_gnuplot(const std::string& script);
-
 }  // namespace tread::tir

@@ -1,6 +1,7 @@
 // The PAC plot script: one datablock per load plus four combined-slip blocks, each with the
 // requested number of samples; gnuplot turns it into a PNG and an SVG.
 #include "tir/pac_plot.hpp"
+#include "plot/gnuplot.hpp"
 
 #include <gtest/gtest.h>
 
@@ -58,7 +59,7 @@ TEST(PacPlot, GnuplotWritesPngAndSvg) {
   for (const char* name : {"hmmwv.png", "hmmwv.svg"}) {
     const auto out = tmp_dir() / name;
     std::filesystem::remove(out);
-    tread::tir::run_gnuplot(tread::tir::pac_plot_script(hmmwv(), {}, out));
+    tread::host::run_gnuplot(tread::tir::pac_plot_script(hmmwv(), {}, out), "pac_plot_test");
     ASSERT_TRUE(std::filesystem::exists(out)) << out;
     std::ifstream f(out, std::ios::binary);
     std::string head(8, '\0');
