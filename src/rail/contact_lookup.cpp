@@ -40,7 +40,7 @@ bool valid(std::uint32_t count, float step) noexcept {
 
 struct PositionQ {
   std::uint32_t index;
-  std::int64_t remainder;  ///< 0..step toward the next row
+  std::int32_t fraction_q16;  ///< 0..65536: the way to the next row, in 1/65536 of a step
   Status status;
 };
 
@@ -56,23 +56,25 @@ PositionQ locate_q(std::int32_t y_first, std::int32_t y_step, std::uint32_t coun
     offset = span;
     status = Status::out_of_range;
   }
-  auto index = static_cast<std::uint32_t>(offset / y_step);
-  std::int64_t rem = offset % y_step;
+  // One 32-bit division for the row and one for the fraction (the table spans < 2^31 units).
+  const auto off = static_cast<std::uint32_t>(offset);
+  const auto step = static_cast<std::uint32_t>(y_step);
+  std::uint32_t index = off / step;
+  std::uint32_t rem = off - index * step;
   if (index >= count - 1U) {
     index = count - 2U;
-    rem = y_step;
+    rem = step;
   }
-  return {index, rem, status};
+  const auto fraction = static_cast<std::int32_t>((static_cast<std::uint64_t>(rem) << 16U) / step);
+  return {index, fraction, status};
 }
 
-/// a + (b - a)·rem/step, rounded to nearest (symmetric for negative differences).
-std::int32_t lerp_q(const std::int32_t* column, const PositionQ& p, std::int32_t y_step) noexcept {
+/// a + (b - a)·fraction, rounded to nearest (half up). The fraction's resolution is 1/65536 of a
+/// step (0.0015 µm for a 0.1 mm step): far below the 0.1 µm unit.
+std::int32_t lerp_q(const std::int32_t* column, const PositionQ& p) noexcept {
   const std::int64_t a = column[p.index];
   const std::int64_t b = column[p.index + 1U];
-  const std::int64_t num = (b - a) * p.remainder;
-  const std::int64_t half = y_step / 2;
-  const std::int64_t q = num >= 0 ? (num + half) / y_step : -((-num + half) / y_step);
-  return static_cast<std::int32_t>(a + q);
+  return static_cast<std::int32_t>(a + (((b - a) * p.fraction_q16 + 32768) >> 16));
 }
 
 }  // namespace
@@ -103,11 +105,11 @@ Result<ContactSampleQ> lookup(const ContactTableQ& t, std::int32_t y) noexcept {
   }
   const PositionQ p = locate_q(t.y_first, t.y_step, t.count, y);
   r.status = p.status;
-  r.value.r_left = lerp_q(t.r_left, p, t.y_step);
-  r.value.r_right = lerp_q(t.r_right, p, t.y_step);
-  r.value.delta_r = lerp_q(t.delta_r, p, t.y_step);
-  r.value.gamma_left = lerp_q(t.gamma_left, p, t.y_step);
-  r.value.gamma_right = lerp_q(t.gamma_right, p, t.y_step);
+  r.value.r_left = lerp_q(t.r_left, p);
+  r.value.r_right = lerp_q(t.r_right, p);
+  r.value.delta_r = lerp_q(t.delta_r, p);
+  r.value.gamma_left = lerp_q(t.gamma_left, p);
+  r.value.gamma_right = lerp_q(t.gamma_right, p);
   return r;
 }
 
@@ -131,7 +133,7 @@ Result<std::int32_t> lookup(const RadiusTableQ& t, std::int32_t y) noexcept {
   }
   const PositionQ p = locate_q(t.y_first, t.y_step, t.count, y);
   r.status = p.status;
-  r.value = lerp_q(t.z, p, t.y_step);
+  r.value = lerp_q(t.z, p);
   return r;
 }
 
