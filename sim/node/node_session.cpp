@@ -55,7 +55,7 @@ SessionReport run_live(const NodeSettings& settings, const LiveOptions& options,
   NodeRuntime runtime(settings);
   SessionReport report;
   if (!runtime.tir_warning().empty()) {
-    report.notes += runtime.tir_warning() + "\n";
+    report.notes += "note: " + runtime.tir_warning() + "\n";
   }
   hal::GpiodPin pin;
   if (!options.gpio_chip.empty()) {

@@ -227,7 +227,7 @@ DemoResult run_demo(const DemoSettings& s) {
     result = co_simulate(s, runtime, clock, node_bus, rig_bus);
   }
   result.report.notes =
-      rt.messages + (runtime.tir_warning().empty() ? "" : runtime.tir_warning() + "\n");
+      rt.messages + (runtime.tir_warning().empty() ? "" : "note: " + runtime.tir_warning() + "\n");
   return result;
 }
 
