@@ -42,7 +42,7 @@ if ! cmake --build --preset host --target format-check; then failed_steps+=("for
 echo "=== summary ($(($(date +%s) - start)) s) ==="
 if ((${#failed_steps[@]})); then
   echo "test-all: FAILED steps: ${failed_steps[*]} (logs in $log_dir)"
-  echo "all presets: $total_passed passed, $total_failed failed"
+  echo "test-all: $total_passed passed, $total_failed failed"
   exit 1
 fi
-echo "all presets: $total_passed passed, $total_failed failed"
+echo "test-all: $total_passed passed, $total_failed failed"
