@@ -273,6 +273,31 @@ constexpr bool layout_is_sound(std::span<const MessageSpec> all) {
 static_assert(layout_is_sound(kClassic), "classic layout: a signal overlaps or leaves its frame");
 static_assert(layout_is_sound(kFd), "FD layout: a signal overlaps or leaves its frame");
 
+// O(1) identifier lookup: index + 1 of the message with each 11-bit identifier below 0x200 (0:
+// none).
+constexpr std::size_t kIdTableSize = 0x200;
+template <std::size_t N>
+constexpr std::array<std::uint8_t, kIdTableSize> make_id_table(
+    const std::array<MessageSpec, N>& all) {
+  std::array<std::uint8_t, kIdTableSize> table{};
+  for (std::size_t i = 0; i < N; ++i) {
+    table[all[i].id] = static_cast<std::uint8_t>(i + 1U);
+  }
+  return table;
+}
+constexpr auto kClassicIds = make_id_table(kClassic);
+constexpr auto kFdIds = make_id_table(kFd);
+
+constexpr bool ids_fit(std::span<const MessageSpec> all) {
+  for (const MessageSpec& m : all) {
+    if (m.id >= kIdTableSize) {
+      return false;
+    }
+  }
+  return true;
+}
+static_assert(ids_fit(kClassic) && ids_fit(kFd), "message identifiers must stay below 0x200");
+
 }  // namespace
 
 std::span<const MessageSpec> messages(Layout layout) noexcept {
@@ -281,12 +306,11 @@ std::span<const MessageSpec> messages(Layout layout) noexcept {
 }
 
 const MessageSpec* find_message(Layout layout, std::uint32_t id) noexcept {
-  for (const MessageSpec& m : messages(layout)) {
-    if (m.id == id) {
-      return &m;
-    }
+  if (id >= kIdTableSize) {
+    return nullptr;
   }
-  return nullptr;
+  const std::uint8_t slot = layout == Layout::classic ? kClassicIds[id] : kFdIds[id];
+  return slot == 0U ? nullptr : &messages(layout)[slot - 1U];
 }
 
 std::size_t message_index(Layout layout, const MessageSpec& message) noexcept {

@@ -8,6 +8,13 @@ namespace tread::proto {
 // A signal of up to 32 bits spans at most 5 bytes: work on that window as one integer.
 void put_raw(std::span<std::uint8_t> data, std::uint16_t start_bit, std::uint8_t length,
              std::uint64_t raw) noexcept {
+  if ((start_bit % 8U) == 0U && (length % 8U) == 0U) {  // whole bytes: the common case
+    for (std::size_t i = start_bit / 8U, n = length / 8U; n > 0U; --n, ++i) {
+      data[i] = static_cast<std::uint8_t>(raw & 0xFFU);
+      raw >>= 8U;
+    }
+    return;
+  }
   const std::size_t first = start_bit / 8U;
   const std::size_t last = (static_cast<std::size_t>(start_bit) + length - 1U) / 8U;
   const unsigned shift = start_bit % 8U;
@@ -26,6 +33,13 @@ void put_raw(std::span<std::uint8_t> data, std::uint16_t start_bit, std::uint8_t
 
 std::uint64_t get_raw(std::span<const std::uint8_t> data, std::uint16_t start_bit,
                       std::uint8_t length) noexcept {
+  if ((start_bit % 8U) == 0U && (length % 8U) == 0U) {  // whole bytes: the common case
+    std::uint64_t raw = 0;
+    for (std::size_t i = (start_bit + length) / 8U; i-- > start_bit / 8U;) {
+      raw = (raw << 8U) | data[i];
+    }
+    return raw;
+  }
   const std::size_t first = start_bit / 8U;
   const std::size_t last = (static_cast<std::size_t>(start_bit) + length - 1U) / 8U;
   std::uint64_t window = 0;
