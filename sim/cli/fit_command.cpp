@@ -1,0 +1,88 @@
+// `tread fit`: fit Magic Formula constants to measurements (CSV or TYDEX). Stage 1 (--model
+// simple): the basic formula per load for Fx(kappa), Fy(alpha), Mz(alpha); writes the constants
+// (CSV), a Markdown report and plots of measurement vs fit.
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <stdexcept>
+#include <string>
+
+#include "cli/commands.hpp"
+#include "fit/measurement.hpp"
+#include "fit/simple_fit.hpp"
+
+namespace tread::cli {
+namespace {
+
+struct FitCliState {
+  std::string model = "simple";
+  std::string input, output, report, plots, start;
+  unsigned seed = 1;
+  bool asymmetric_e = false;
+};
+
+void run_fit(const FitCliState& s) {
+  if (s.model != "simple") {
+    throw std::runtime_error("--model " + s.model +
+                             ": not implemented yet (only 'simple', Stage 1, is available)");
+  }
+  const std::string ext = std::filesystem::path(s.output).extension().string();
+  if (ext != ".csv") {
+    throw std::runtime_error("--output " + s.output +
+                             ": --model simple writes the per-load constants as .csv (a .tir needs "
+                             "a full coefficient set, Stage 2)");
+  }
+  const fit::MeasurementSet data = fit::load_measurements(s.input);
+  std::cerr << "tread fit: " << data.points.size() << " points from " << data.source << "\n";
+  fit::SimpleFitSettings settings;
+  settings.asymmetric_e = s.asymmetric_e;
+  const fit::SimpleFit result = fit::fit_simple(
+      data, settings, [](const std::string& line) { std::cerr << "tread fit: " << line << "\n"; });
+  if (result.fits.empty()) {
+    throw std::runtime_error(data.source + ": no pure-slip sweep with enough points to fit");
+  }
+  {
+    std::ofstream out(s.output);
+    fit::write_simple_fit_csv(result, out);
+    if (!out) throw std::runtime_error(s.output + ": cannot write");
+  }
+  if (!s.report.empty()) {
+    std::ofstream out(s.report);
+    fit::write_simple_fit_report(result, data.source, out);
+    if (!out) throw std::runtime_error(s.report + ": cannot write");
+  }
+  if (!s.plots.empty()) {
+    fit::plot_simple_fit(result, s.plots);
+    std::cerr << "tread fit: plots in " << s.plots << "\n";
+  }
+}
+
+void add_fit_command(CLI::App& app) {
+  auto* fit = app.add_subcommand("fit", "Fit Magic Formula constants to measurements");
+  static FitCliState state;
+  fit->add_option("--model", state.model, "simple (Stage 1: basic formula per load)")
+      ->check(CLI::IsMember({"simple", "pac2002", "mf61"}))
+      ->capture_default_str();
+  fit->add_option("--input", state.input, "measurements: .csv (tread mf eval columns) or .tdx")
+      ->required()
+      ->check(CLI::ExistingFile);
+  fit->add_option("--output", state.output, "result: per-load constants (.csv) for simple")
+      ->required();
+  fit->add_option("--report", state.report, "Markdown report (RMS, R², standard deviations)");
+  fit->add_option("--plots", state.plots, "directory for PNG plots of measurement vs fit");
+  fit->add_option("--start", state.start, "starting .tir (Stage 2, not implemented yet)");
+  fit->add_option("--seed", state.seed,
+                  "random seed (the simple model's multi-start grid is deterministic and does not "
+                  "use it)")
+      ->capture_default_str();
+  fit->add_flag("--asymmetric-e", state.asymmetric_e,
+                "simple: also fit EA, a curvature that differs on either side of the origin "
+                "(E*(1 - EA*sgn(x)), as MF's PEX4/PEY3)");
+  fit->callback([] { run_fit(state); });
+}
+
+}  // namespace
+
+TREAD_REGISTER_COMMAND("fit", add_fit_command);
+
+}  // namespace tread::cli

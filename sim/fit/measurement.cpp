@@ -1,0 +1,277 @@
+#include "fit/measurement.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <istream>
+#include <map>
+#include <numbers>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+
+namespace tread::fit {
+namespace {
+
+[[noreturn]] void fail(const std::string& name, std::size_t line, const std::string& message) {
+  throw std::runtime_error(name + ":" + std::to_string(line) + ": " + message);
+}
+
+std::string trim(const std::string& s) {
+  std::size_t b = 0, e = s.size();
+  while (b < e && std::isspace(static_cast<unsigned char>(s[b])) != 0) ++b;
+  while (e > b && std::isspace(static_cast<unsigned char>(s[e - 1])) != 0) --e;
+  return s.substr(b, e - b);
+}
+
+std::string upper(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+std::optional<double> parse_number(const std::string& text) {
+  const std::string t = trim(text);
+  if (t.empty()) return std::nullopt;
+  double value = 0.0;
+  const char* first = t.data();
+  if (*first == '+') ++first;
+  const auto [ptr, ec] = std::from_chars(first, t.data() + t.size(), value);
+  if (ec != std::errc() || ptr != t.data() + t.size() || !std::isfinite(value)) {
+    return std::nullopt;
+  }
+  return value;
+}
+
+std::vector<std::string> split(const std::string& line, char sep) {
+  std::vector<std::string> cells;
+  std::string cell;
+  std::istringstream s(line);
+  while (std::getline(s, cell, sep)) cells.push_back(cell);
+  if (!line.empty() && line.back() == sep) cells.emplace_back();
+  return cells;
+}
+
+std::vector<std::string> split_ws(const std::string& line) {
+  std::vector<std::string> tokens;
+  std::istringstream s(line);
+  std::string t;
+  while (s >> t) tokens.push_back(t);
+  return tokens;
+}
+
+enum class Field { fz, kappa, alpha, gamma, vx, fx, fy, mz };
+
+void set_field(MeasurementPoint& p, Field f, double v) {
+  switch (f) {
+    case Field::fz:
+      p.fz_n = v;
+      break;
+    case Field::kappa:
+      p.kappa = v;
+      break;
+    case Field::alpha:
+      p.alpha_rad = v;
+      break;
+    case Field::gamma:
+      p.gamma_rad = v;
+      break;
+    case Field::vx:
+      p.vx_mps = v;
+      break;
+    case Field::fx:
+      p.fx_n = v;
+      break;
+    case Field::fy:
+      p.fy_n = v;
+      break;
+    case Field::mz:
+      p.mz_nm = v;
+      break;
+  }
+}
+
+bool is_output(Field f) {
+  return f == Field::fx || f == Field::fy || f == Field::mz;
+}
+
+void check_has_output(const std::map<Field, std::size_t>& columns, const std::string& name,
+                      std::size_t line, const char* what) {
+  if (columns.count(Field::fx) + columns.count(Field::fy) + columns.count(Field::mz) == 0) {
+    fail(name, line, std::string("no measured ") + what);
+  }
+}
+
+}  // namespace
+
+MeasurementSet read_measurement_csv(std::istream& in, const std::string& name) {
+  static const std::map<std::string, Field> known = {
+      {"Fz_N", Field::fz},         {"kappa", Field::kappa}, {"alpha_rad", Field::alpha},
+      {"gamma_rad", Field::gamma}, {"Vx_mps", Field::vx},   {"Fx_N", Field::fx},
+      {"Fy_N", Field::fy},         {"Mz_Nm", Field::mz}};
+  MeasurementSet set;
+  set.source = name;
+  std::map<Field, std::size_t> columns;
+  std::size_t header_cells = 0;
+  bool have_header = false;
+  std::string raw;
+  std::size_t line = 0;
+  while (std::getline(in, raw)) {
+    ++line;
+    if (!raw.empty() && raw.back() == '\r') raw.pop_back();
+    const std::string t = trim(raw);
+    if (t.empty() || t.front() == '#') continue;
+    const std::vector<std::string> cells = split(t, ',');
+    if (!have_header) {
+      have_header = true;
+      header_cells = cells.size();
+      for (std::size_t i = 0; i < cells.size(); ++i) {
+        const auto it = known.find(trim(cells[i]));
+        if (it == known.end()) continue;
+        if (!columns.emplace(it->second, i).second) {
+          fail(name, line, "repeated column '" + trim(cells[i]) + "'");
+        }
+      }
+      if (columns.count(Field::fz) == 0) fail(name, line, "missing column 'Fz_N'");
+      if (columns.count(Field::kappa) == 0) fail(name, line, "missing column 'kappa'");
+      if (columns.count(Field::alpha) == 0) fail(name, line, "missing column 'alpha_rad'");
+      check_has_output(columns, name, line, "column (Fx_N, Fy_N or Mz_Nm)");
+      continue;
+    }
+    if (cells.size() != header_cells) {
+      fail(name, line,
+           "expected " + std::to_string(header_cells) + " cells, found " +
+               std::to_string(cells.size()));
+    }
+    MeasurementPoint p;
+    p.line = line;
+    for (const auto& [field, index] : columns) {
+      const std::string& cell = cells[index];
+      if (is_output(field) && trim(cell).empty()) continue;  // not measured here
+      const std::optional<double> v = parse_number(cell);
+      if (!v)
+        fail(name, line,
+             "cell " + std::to_string(index + 1) + " '" + trim(cell) + "' is not a finite number");
+      set_field(p, field, *v);
+    }
+    set.points.push_back(p);
+  }
+  if (!have_header) fail(name, line, "no header row");
+  return set;
+}
+
+MeasurementSet read_tydex(std::istream& in, const std::string& name) {
+  static const std::map<std::string, Field> known = {
+      {"FZW", Field::fz},         {"LONGSLIP", Field::kappa}, {"SLIPANGL", Field::alpha},
+      {"INCLANGL", Field::gamma}, {"LONGVEL", Field::vx},     {"FXW", Field::fx},
+      {"FYW", Field::fy},         {"MZW", Field::mz}};
+  struct Channel {
+    std::optional<Field> field;
+    double scale = 1.0;  // unit → SI
+    double factor = 1.0, meas_offset = 0.0, phys_offset = 0.0;
+  };
+  enum class Section { other, channels, data };
+  MeasurementSet set;
+  set.source = name;
+  std::vector<Channel> channels;
+  std::map<Field, std::size_t> columns;
+  Section section = Section::other;
+  bool seen_data = false;
+  std::size_t channels_line = 0;
+  std::string raw;
+  std::size_t line = 0;
+  while (std::getline(in, raw)) {
+    ++line;
+    if (!raw.empty() && raw.back() == '\r') raw.pop_back();
+    const std::string t = trim(raw);
+    if (t.rfind("**", 0) == 0) {
+      const std::string key = upper(split_ws(t).front());
+      if (key == "**MEASURCHANNELS") {
+        section = Section::channels;
+        channels_line = line;
+      } else if (key == "**MEASURDATA") {
+        section = Section::data;
+        seen_data = true;
+        if (channels.empty()) fail(name, line, "**MEASURDATA before any **MEASURCHANNELS");
+        if (columns.count(Field::fz) == 0) fail(name, channels_line, "missing channel FZW");
+        check_has_output(columns, name, channels_line, "channel (FXW, FYW or MZW)");
+      } else {
+        section = Section::other;
+      }
+      continue;
+    }
+    if (t.empty() || t.front() == '!' || t.front() == '$') continue;
+    const std::vector<std::string> tokens = split_ws(t);
+    if (section == Section::channels) {
+      // name, description (may hold spaces), unit, factor, measurement offset, physical offset
+      if (tokens.size() < 5)
+        fail(name, line,
+             "channel line needs name, description, unit, factor, "
+             "offsets");
+      Channel c;
+      const std::size_t n = tokens.size();
+      const auto f = parse_number(tokens[n - 3]);
+      const auto mo = parse_number(tokens[n - 2]);
+      const auto po = parse_number(tokens[n - 1]);
+      if (!f || !mo || !po) fail(name, line, "channel factor/offsets are not numbers");
+      c.factor = *f;
+      c.meas_offset = *mo;
+      c.phys_offset = *po;
+      const std::string channel = upper(tokens[0]);
+      const std::string unit = tokens[n - 4];
+      const auto it = known.find(channel);
+      if (it != known.end()) {
+        const std::string u = upper(unit);
+        if (u == "DEG") {
+          c.scale = std::numbers::pi / 180.0;
+        } else if (u == "%") {
+          c.scale = 0.01;
+        } else if (u == "KN" || u == "KNM") {
+          c.scale = 1000.0;
+        } else if (u == "KM/H" || u == "KMH") {
+          c.scale = 1.0 / 3.6;
+        } else if (u == "RAD" || u == "N" || u == "NM" || u == "M/S" || u == "-" || u == "1") {
+          c.scale = 1.0;
+        } else {
+          fail(name, line, "unknown unit '" + unit + "' of channel " + channel);
+        }
+        c.field = it->second;
+        if (!columns.emplace(it->second, channels.size()).second) {
+          fail(name, line, "repeated channel " + channel);
+        }
+      }
+      channels.push_back(c);
+    } else if (section == Section::data) {
+      if (tokens.size() != channels.size()) {
+        fail(name, line,
+             "expected " + std::to_string(channels.size()) + " values, found " +
+                 std::to_string(tokens.size()));
+      }
+      MeasurementPoint p;
+      p.line = line;
+      for (std::size_t i = 0; i < tokens.size(); ++i) {
+        const Channel& c = channels[i];
+        if (!c.field) continue;
+        const std::optional<double> v = parse_number(tokens[i]);
+        if (!v)
+          fail(name, line,
+               "value " + std::to_string(i + 1) + " '" + tokens[i] + "' is not a finite number");
+        set_field(p, *c.field, ((*v - c.meas_offset) * c.factor + c.phys_offset) * c.scale);
+      }
+      set.points.push_back(p);
+    }
+  }
+  if (!seen_data) fail(name, line, "no **MEASURDATA section");
+  return set;
+}
+
+MeasurementSet load_measurements(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path.string() + ": cannot open");
+  std::string ext = upper(path.extension().string());
+  if (ext == ".TDX") return read_tydex(in, path.string());
+  return read_measurement_csv(in, path.string());
+}
+
+}  // namespace tread::fit

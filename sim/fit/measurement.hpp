@@ -1,0 +1,52 @@
+#pragma once
+// Tyre measurements for the fitter (host side: allocates, throws).
+//
+// Two formats:
+//  - CSV with the column names of `tread mf eval`: inputs Fz_N, kappa, alpha_rad, gamma_rad
+//    (optional, default 0), Vx_mps (optional, default 0), and the measured outputs Fx_N, Fy_N,
+//    Mz_Nm (any subset, at least one). Unknown columns are ignored (so an `mf eval` output file,
+//    whose inputs are named in_*, can be read after renaming). Blank lines and lines starting with
+//    '#' are skipped; an empty cell means "not measured" for an output column.
+//  - TYDEX (.tdx): the **MEASURCHANNELS section names the channels (name, description, unit,
+//    conversion factor, measurement offset, physical offset) and **MEASURDATA holds one row per
+//    sample in that order. Channels used: FZW (vertical load), LONGSLIP, SLIPANGL, INCLANGL,
+//    LONGVEL, FXW, FYW, MZW. Units converted: deg → rad, % → 1, kN → N, kNm → Nm, km/h → m/s.
+//    A sample's physical value is (raw − measurement offset) · factor + physical offset, in the
+//    channel's unit (our reading of TYDEX 1.3; files written by MFeval use 1, 0, 0).
+// Errors: std::runtime_error with `file:line: message` (a bad cell, a row with the wrong number of
+// cells, a missing required column/channel, an unknown unit).
+
+#include <cstddef>
+#include <filesystem>
+#include <iosfwd>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace tread::fit {
+
+/// One sample. Measured values that the file does not hold are NaN.
+struct MeasurementPoint {
+  double fz_n = 0.0;
+  double kappa = 0.0;
+  double alpha_rad = 0.0;
+  double gamma_rad = 0.0;
+  double vx_mps = 0.0;
+  double fx_n = std::numeric_limits<double>::quiet_NaN();
+  double fy_n = std::numeric_limits<double>::quiet_NaN();
+  double mz_nm = std::numeric_limits<double>::quiet_NaN();
+  std::size_t line = 0;  ///< line in the source file (for messages)
+};
+
+struct MeasurementSet {
+  std::string source;  ///< file name (for messages and reports)
+  std::vector<MeasurementPoint> points;
+};
+
+MeasurementSet read_measurement_csv(std::istream& in, const std::string& name);
+MeasurementSet read_tydex(std::istream& in, const std::string& name);
+
+/// Reads `path` as TYDEX if it ends in .tdx (any case), otherwise as CSV.
+MeasurementSet load_measurements(const std::filesystem::path& path);
+
+}  // namespace tread::fit

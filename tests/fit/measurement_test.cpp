@@ -1,0 +1,124 @@
+// Measurement files for `tread fit`: CSV with `tread mf eval` column names and TYDEX (.tdx), with
+// unit conversion and file:line errors. Small files written here.
+#include "fit/measurement.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace tread::fit {
+namespace {
+
+std::string error_of(const std::string& text, bool tydex) {
+  std::istringstream in(text);
+  try {
+    if (tydex) {
+      read_tydex(in, "m.tdx");
+    } else {
+      read_measurement_csv(in, "m.csv");
+    }
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(MeasurementCsv, ReadsColumnsInAnyOrderAndSubsets) {
+  std::istringstream in(
+      "# comment\n"
+      "Fy_N,alpha_rad,kappa,Fz_N,Vx_mps,extra\n"
+      "\n"
+      "-100.5,0.01,0,4000,16.6,7\n"
+      ",0.02,0,4000,16.6,7\n");
+  const MeasurementSet set = read_measurement_csv(in, "m.csv");
+  ASSERT_EQ(set.points.size(), 2u);
+  EXPECT_DOUBLE_EQ(set.points[0].fy_n, -100.5);
+  EXPECT_DOUBLE_EQ(set.points[0].alpha_rad, 0.01);
+  EXPECT_DOUBLE_EQ(set.points[0].fz_n, 4000.0);
+  EXPECT_DOUBLE_EQ(set.points[0].vx_mps, 16.6);
+  EXPECT_DOUBLE_EQ(set.points[0].gamma_rad, 0.0);
+  EXPECT_TRUE(std::isnan(set.points[0].fx_n));
+  EXPECT_TRUE(std::isnan(set.points[0].mz_nm));
+  EXPECT_TRUE(std::isnan(set.points[1].fy_n));  // empty cell: not measured
+  EXPECT_EQ(set.points[0].line, 4u);
+  EXPECT_EQ(set.points[1].line, 5u);
+}
+
+TEST(MeasurementCsv, BadRowsNameFileAndLine) {
+  EXPECT_EQ(error_of("Fz_N,kappa,alpha_rad,Fx_N\n1,2,3,4\n1,x,3,4\n", false),
+            "m.csv:3: cell 2 'x' is not a finite number");
+  EXPECT_EQ(error_of("Fz_N,kappa,alpha_rad,Fx_N\n1,2,3\n", false),
+            "m.csv:2: expected 4 cells, found 3");
+  EXPECT_EQ(error_of("Fz_N,kappa,alpha_rad,Fx_N\n1,2,3,inf\n", false),
+            "m.csv:2: cell 4 'inf' is not a finite number");
+  EXPECT_EQ(error_of("# x\nkappa,alpha_rad,Fx_N\n", false), "m.csv:2: missing column 'Fz_N'");
+  EXPECT_EQ(error_of("Fz_N,kappa,alpha_rad\n", false),
+            "m.csv:1: no measured column (Fx_N, Fy_N or Mz_Nm)");
+  EXPECT_EQ(error_of("Fz_N,kappa,kappa,alpha_rad,Fx_N\n", false),
+            "m.csv:1: repeated column 'kappa'");
+  EXPECT_EQ(error_of("", false), "m.csv:0: no header row");
+}
+
+const char* const kTydex =
+    "**HEADER\n"
+    "RELEASE     1.3\n"
+    "**COMMENTS\n"
+    "written by measurement_test\n"
+    "**CONSTANTS\n"
+    "FZW         Vertical load                 N        4000\n"
+    "**MEASURCHANNELS\n"
+    "! name     description                   unit  factor  offsets\n"
+    "RUNTIME     Time                          s        1  0  0\n"
+    "FZW         Vertical force                kN       1  0  0\n"
+    "SLIPANGL    Slip angle                    deg      1  0  0\n"
+    "LONGSLIP    Longitudinal slip             %        1  0  0\n"
+    "INCLANGL    Inclination angle             deg      1  0  0\n"
+    "LONGVEL     Longitudinal velocity         km/h     1  0  0\n"
+    "FYW         Lateral force                 N        2  0.5  10\n"
+    "MZW         Self aligning moment          Nm       1  0  0\n"
+    "**MEASURDATA\n"
+    "0.0  4.0  2.0  0.0  1.0  36.0  -300  20\n"
+    "0.1  4.1  -2.0  5.0  0.0  72.0  300  -20\n"
+    "**END\n";
+
+TEST(MeasurementTydex, ChannelsAndUnits) {
+  std::istringstream in(kTydex);
+  const MeasurementSet set = read_tydex(in, "m.tdx");
+  ASSERT_EQ(set.points.size(), 2u);
+  const double deg = std::numbers::pi / 180.0;
+  const MeasurementPoint& p = set.points[0];
+  EXPECT_DOUBLE_EQ(p.fz_n, 4000.0);
+  EXPECT_DOUBLE_EQ(p.alpha_rad, 2.0 * deg);
+  EXPECT_DOUBLE_EQ(p.gamma_rad, 1.0 * deg);
+  EXPECT_DOUBLE_EQ(p.vx_mps, 10.0);
+  EXPECT_DOUBLE_EQ(p.fy_n, (-300.0 - 0.5) * 2.0 + 10.0);
+  EXPECT_DOUBLE_EQ(p.mz_nm, 20.0);
+  EXPECT_TRUE(std::isnan(p.fx_n));
+  EXPECT_EQ(p.line, 18u);
+  EXPECT_DOUBLE_EQ(set.points[1].kappa, 0.05);
+  EXPECT_DOUBLE_EQ(set.points[1].fz_n, 4100.0);
+  EXPECT_DOUBLE_EQ(set.points[1].vx_mps, 20.0);
+}
+
+TEST(MeasurementTydex, BadRowsNameFileAndLine) {
+  std::string short_row = kTydex;
+  short_row.replace(short_row.find("0.1  4.1"), 8, "0.1");
+  EXPECT_EQ(error_of(short_row, true), "m.tdx:19: expected 8 values, found 7");
+  std::string bad_value = kTydex;
+  bad_value.replace(bad_value.find("-300"), 4, "abc");
+  EXPECT_EQ(error_of(bad_value, true), "m.tdx:18: value 7 'abc' is not a finite number");
+  std::string bad_unit = kTydex;
+  bad_unit.replace(bad_unit.find("km/h"), 4, "mph ");
+  EXPECT_EQ(error_of(bad_unit, true), "m.tdx:14: unknown unit 'mph' of channel LONGVEL");
+  std::string no_fz = kTydex;
+  no_fz.replace(no_fz.find("FZW         Vertical force"), 3, "FZX");
+  EXPECT_EQ(error_of(no_fz, true), "m.tdx:7: missing channel FZW");
+  EXPECT_EQ(error_of("**HEADER\n", true), "m.tdx:1: no **MEASURDATA section");
+}
+
+}  // namespace
+}  // namespace tread::fit
