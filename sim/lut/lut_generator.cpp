@@ -119,18 +119,25 @@ std::string write_lut_source(const std::vector<RadiusTableData>& profiles,
     const std::string base = "kPair" + std::to_string(c);
     out << "// " << pairs[c].spec << ": y from " << t.y_first_mm << " mm, step " << t.y_step_mm
         << " mm, " << t.y_mm.size() << " rows\n";
-    const std::pair<const char*, const std::vector<double>*> columns[] = {
-        {"RLeft", &t.r_left_mm},
-        {"RRight", &t.r_right_mm},
-        {"DeltaR", &t.delta_r_mm},
-        {"GammaLeft", &t.gamma_left_rad},
-        {"GammaRight", &t.gamma_right_rad}};
-    for (std::size_t k = 0; k < 5; ++k) {
-      write_array(out, "float", base + columns[k].first, *columns[k].second, f);
-      const double scale = k < 3 ? kQLength : kQAngle;
-      write_array(out, "std::int32_t", base + columns[k].first + "Q", *columns[k].second,
-                  [scale](double v) { return int_literal(v, scale); });
+    const std::vector<double>* columns[] = {&t.r_left_mm, &t.r_right_mm, &t.delta_r_mm,
+                                            &t.gamma_left_rad, &t.gamma_right_rad};
+    out << "constexpr rail::ContactRowF32 " << base << "Rows[] = {\n";
+    for (std::size_t i = 0; i < t.y_mm.size(); ++i) {
+      out << "    {";
+      for (std::size_t k = 0; k < 5; ++k) {
+        out << (k == 0 ? "" : ", ") << float_literal((*columns[k])[i]);
+      }
+      out << "},\n";
     }
+    out << "};\nconstexpr rail::ContactRowQ " << base << "RowsQ[] = {\n";
+    for (std::size_t i = 0; i < t.y_mm.size(); ++i) {
+      out << "    {";
+      for (std::size_t k = 0; k < 5; ++k) {
+        out << (k == 0 ? "" : ", ") << int_literal((*columns[k])[i], k < 3 ? kQLength : kQAngle);
+      }
+      out << "},\n";
+    }
+    out << "};\n";
   }
   out << "constexpr ProfileTable kProfiles[] = {\n";
   for (std::size_t p = 0; p < profiles.size(); ++p) {
@@ -148,11 +155,9 @@ std::string write_lut_source(const std::vector<RadiusTableData>& profiles,
     const contact::ContactTable& t = pairs[c].table;
     const std::string b = "kPair" + std::to_string(c);
     out << "    {" << quote(pairs[c].spec) << ",\n     {" << float_literal(t.y_first_mm) << ", "
-        << float_literal(t.y_step_mm) << ", " << t.y_mm.size() << "U, " << b << "RLeft, " << b
-        << "RRight, " << b << "DeltaR, " << b << "GammaLeft, " << b << "GammaRight},\n     {"
+        << float_literal(t.y_step_mm) << ", " << t.y_mm.size() << "U, " << b << "Rows},\n     {"
         << std::llround(t.y_first_mm * kQYPerMm) << ", " << std::llround(t.y_step_mm * kQYPerMm)
-        << ", " << t.y_mm.size() << "U, " << b << "RLeftQ, " << b << "RRightQ, " << b << "DeltaRQ, "
-        << b << "GammaLeftQ, " << b << "GammaRightQ}},\n";
+        << ", " << t.y_mm.size() << "U, " << b << "RowsQ}},\n";
   }
   if (pairs.empty()) out << "    {\"none\", {}, {}},\n";
   out << "};\n\n}  // namespace\n\n"

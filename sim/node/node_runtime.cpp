@@ -89,22 +89,16 @@ NodeRuntime::NodeRuntime(const NodeSettings& settings) {
     const contact::ContactTable t = contact.table(
         -settings.wheelset_ymax_mm, settings.wheelset_ymax_mm, settings.wheelset_step_mm);
     const std::size_t n = t.y_mm.size();
-    columns_.resize(5 * n);
+    rows_.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
-      columns_[i] = static_cast<float>(t.r_left_mm[i]);
-      columns_[n + i] = static_cast<float>(t.r_right_mm[i]);
-      columns_[2 * n + i] = static_cast<float>(t.delta_r_mm[i]);
-      columns_[3 * n + i] = static_cast<float>(t.gamma_left_rad[i]);
-      columns_[4 * n + i] = static_cast<float>(t.gamma_right_rad[i]);
+      rows_[i] = rail::ContactRowF32{
+          static_cast<float>(t.r_left_mm[i]), static_cast<float>(t.r_right_mm[i]),
+          static_cast<float>(t.delta_r_mm[i]), static_cast<float>(t.gamma_left_rad[i]),
+          static_cast<float>(t.gamma_right_rad[i])};
     }
-    table_ = rail::ContactTableF32{static_cast<float>(t.y_first_mm),
-                                   static_cast<float>(t.y_step_mm),
-                                   static_cast<std::uint32_t>(n),
-                                   &columns_[0],
-                                   &columns_[n],
-                                   &columns_[2 * n],
-                                   &columns_[3 * n],
-                                   &columns_[4 * n]};
+    table_ =
+        rail::ContactTableF32{static_cast<float>(t.y_first_mm), static_cast<float>(t.y_step_mm),
+                              static_cast<std::uint32_t>(n), rows_.data()};
     for (auto& c : contacts_) {
       c = node::ContactTableChannel(table_);
     }

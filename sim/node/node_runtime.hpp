@@ -56,7 +56,7 @@ class NodeRuntime {
   std::string tir_warning_;
   std::array<node::MfTyreChannel, proto::kMaxWheels> tyres_{};
   std::array<node::ContactTableChannel, proto::kMaxWheelsets> contacts_{};
-  std::vector<float> columns_;  ///< the contact table's five columns, back to back
+  std::vector<rail::ContactRowF32> rows_;  ///< the contact table
   rail::ContactTableF32 table_{};
   std::unique_ptr<RuntimeNode> node_;
 };

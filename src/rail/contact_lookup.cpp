@@ -71,45 +71,47 @@ PositionQ locate_q(std::int32_t y_first, std::int32_t y_step, std::uint32_t coun
 
 /// a + (b - a)·fraction, rounded to nearest (half up). The fraction's resolution is 1/65536 of a
 /// step (0.0015 µm for a 0.1 mm step): far below the 0.1 µm unit.
-std::int32_t lerp_q(const std::int32_t* column, const PositionQ& p) noexcept {
-  const std::int64_t a = column[p.index];
-  const std::int64_t b = column[p.index + 1U];
-  return static_cast<std::int32_t>(a + (((b - a) * p.fraction_q16 + 32768) >> 16));
+std::int32_t lerp_q(std::int32_t a, std::int32_t b, const PositionQ& p) noexcept {
+  const std::int64_t d = static_cast<std::int64_t>(b) - a;
+  return static_cast<std::int32_t>(a + ((d * p.fraction_q16 + 32768) >> 16));
 }
 
 }  // namespace
 
 Result<ContactSample> lookup(const ContactTableF32& t, float y_mm) noexcept {
   Result<ContactSample> r;
-  if (!valid(t.count, t.y_step_mm) || t.r_left_mm == nullptr || t.r_right_mm == nullptr ||
-      t.delta_r_mm == nullptr || t.gamma_left_rad == nullptr || t.gamma_right_rad == nullptr) {
+  if (!valid(t.count, t.y_step_mm) || t.rows == nullptr) {
     r.status = Status::invalid_argument;
     return r;
   }
   const Position p = locate(t.y_first_mm, t.y_step_mm, t.count, y_mm);
   r.status = p.status;
-  r.value.r_left_mm = lerp(t.r_left_mm, p);
-  r.value.r_right_mm = lerp(t.r_right_mm, p);
-  r.value.delta_r_mm = lerp(t.delta_r_mm, p);
-  r.value.gamma_left_rad = lerp(t.gamma_left_rad, p);
-  r.value.gamma_right_rad = lerp(t.gamma_right_rad, p);
+  const ContactRowF32& a = t.rows[p.index];
+  const ContactRowF32& b = t.rows[p.index + 1U];
+  const float f = p.fraction;
+  r.value.r_left_mm = a.r_left_mm + (b.r_left_mm - a.r_left_mm) * f;
+  r.value.r_right_mm = a.r_right_mm + (b.r_right_mm - a.r_right_mm) * f;
+  r.value.delta_r_mm = a.delta_r_mm + (b.delta_r_mm - a.delta_r_mm) * f;
+  r.value.gamma_left_rad = a.gamma_left_rad + (b.gamma_left_rad - a.gamma_left_rad) * f;
+  r.value.gamma_right_rad = a.gamma_right_rad + (b.gamma_right_rad - a.gamma_right_rad) * f;
   return r;
 }
 
 Result<ContactSampleQ> lookup(const ContactTableQ& t, std::int32_t y) noexcept {
   Result<ContactSampleQ> r;
-  if (t.count < 2U || t.y_step <= 0 || t.r_left == nullptr || t.r_right == nullptr ||
-      t.delta_r == nullptr || t.gamma_left == nullptr || t.gamma_right == nullptr) {
+  if (t.count < 2U || t.y_step <= 0 || t.rows == nullptr) {
     r.status = Status::invalid_argument;
     return r;
   }
   const PositionQ p = locate_q(t.y_first, t.y_step, t.count, y);
   r.status = p.status;
-  r.value.r_left = lerp_q(t.r_left, p);
-  r.value.r_right = lerp_q(t.r_right, p);
-  r.value.delta_r = lerp_q(t.delta_r, p);
-  r.value.gamma_left = lerp_q(t.gamma_left, p);
-  r.value.gamma_right = lerp_q(t.gamma_right, p);
+  const ContactRowQ& a = t.rows[p.index];
+  const ContactRowQ& b = t.rows[p.index + 1U];
+  r.value.r_left = lerp_q(a.r_left, b.r_left, p);
+  r.value.r_right = lerp_q(a.r_right, b.r_right, p);
+  r.value.delta_r = lerp_q(a.delta_r, b.delta_r, p);
+  r.value.gamma_left = lerp_q(a.gamma_left, b.gamma_left, p);
+  r.value.gamma_right = lerp_q(a.gamma_right, b.gamma_right, p);
   return r;
 }
 
@@ -133,7 +135,7 @@ Result<std::int32_t> lookup(const RadiusTableQ& t, std::int32_t y) noexcept {
   }
   const PositionQ p = locate_q(t.y_first, t.y_step, t.count, y);
   r.status = p.status;
-  r.value = lerp_q(t.z, p);
+  r.value = lerp_q(t.z[p.index], t.z[p.index + 1U], p);
   return r;
 }
 

@@ -20,40 +20,45 @@ struct ContactSample {
   float gamma_right_rad{0.0F};
 };
 
-/// Column pointers of a float table with `count` ≥ 2 rows at y = y_first_mm + i·y_step_mm.
+/// One row of a float contact table (rows are stored together: a lookup reads one cache line).
+struct ContactRowF32 {
+  float r_left_mm;
+  float r_right_mm;
+  float delta_r_mm;
+  float gamma_left_rad;
+  float gamma_right_rad;
+};
+
+/// A float table with `count` ≥ 2 rows at y = y_first_mm + i·y_step_mm.
 struct ContactTableF32 {
   float y_first_mm{0.0F};
   float y_step_mm{0.0F};
   std::uint32_t count{0};
-  const float* r_left_mm{nullptr};
-  const float* r_right_mm{nullptr};
-  const float* delta_r_mm{nullptr};
-  const float* gamma_left_rad{nullptr};
-  const float* gamma_right_rad{nullptr};
+  const ContactRowF32* rows{nullptr};
 };
 
-/// Fixed-point table: y in units of `y_unit_um` µm (integers), values as documented above.
+/// One row of a fixed-point contact table.
+struct ContactRowQ {
+  std::int32_t r_left;       ///< 0.1 µm
+  std::int32_t r_right;      ///< 0.1 µm
+  std::int32_t delta_r;      ///< 0.1 µm
+  std::int32_t gamma_left;   ///< µrad
+  std::int32_t gamma_right;  ///< µrad
+};
+
+/// Fixed-point table: y in µm (kQYPerMm units per mm), values as documented above.
 struct ContactTableQ {
   std::int32_t y_first{0};  ///< first y, in y units
   std::int32_t y_step{0};   ///< step, in y units (> 0)
   std::uint32_t count{0};
-  const std::int32_t* r_left{nullptr};       ///< 0.1 µm
-  const std::int32_t* r_right{nullptr};      ///< 0.1 µm
-  const std::int32_t* delta_r{nullptr};      ///< 0.1 µm
-  const std::int32_t* gamma_left{nullptr};   ///< µrad
-  const std::int32_t* gamma_right{nullptr};  ///< µrad
+  const ContactRowQ* rows{nullptr};
 };
+
 inline constexpr std::int32_t kQLengthPerMm = 10'000;  ///< 0.1 µm units per mm
 inline constexpr std::int32_t kQAnglePerRad = 1'000'000;
 inline constexpr std::int32_t kQYPerMm = 1'000;  ///< y units per mm (1 µm)
 
-struct ContactSampleQ {
-  std::int32_t r_left{0};
-  std::int32_t r_right{0};
-  std::int32_t delta_r{0};
-  std::int32_t gamma_left{0};
-  std::int32_t gamma_right{0};
-};
+using ContactSampleQ = ContactRowQ;
 
 /// @retval Status::ok               y inside the table
 /// @retval Status::out_of_range     y outside (or not finite): the nearest end's values

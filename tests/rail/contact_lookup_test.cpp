@@ -21,6 +21,8 @@ double gamma_of(double y) {
 struct Fixture : ::testing::Test {
   std::array<float, kRows> rl{}, rr{}, dr{}, gl{}, gr{};
   std::array<std::int32_t, kRows> qrl{}, qrr{}, qdr{}, qgl{}, qgr{};
+  std::array<ContactRowF32, kRows> rows{};
+  std::array<ContactRowQ, kRows> qrows{};
   ContactTableF32 table{};
   ContactTableQ qtable{};
 
@@ -39,9 +41,12 @@ struct Fixture : ::testing::Test {
       qgl[i] = static_cast<std::int32_t>(std::lround(gamma_of(y) * kQAnglePerRad));
       qgr[i] = static_cast<std::int32_t>(std::lround(gamma_of(-y) * kQAnglePerRad));
     }
-    table = {-12.0F, 0.5F, kRows, rl.data(), rr.data(), dr.data(), gl.data(), gr.data()};
-    qtable = {-12 * kQYPerMm, kQYPerMm / 2, kRows,      qrl.data(),
-              qrr.data(),     qdr.data(),   qgl.data(), qgr.data()};
+    for (std::uint32_t i = 0; i < kRows; ++i) {
+      rows[i] = {rl[i], rr[i], dr[i], gl[i], gr[i]};
+      qrows[i] = {qrl[i], qrr[i], qdr[i], qgl[i], qgr[i]};
+    }
+    table = {-12.0F, 0.5F, kRows, rows.data()};
+    qtable = {-12 * kQYPerMm, kQYPerMm / 2, kRows, qrows.data()};
   }
 };
 
