@@ -375,14 +375,16 @@ void plot_simple_fit(const SimpleFit& fit, const std::string& dir) {
     const bool fx = f.channel == Channel::fx_kappa;
     std::string script = host::gnuplot_terminal(png.string(), 900, 650);
     script += "set output " + host::gnuplot_quote(png.string()) + "\n";
-    script += "set grid\nset key left top\n";
+    script += "set termoption noenhanced\nset grid\nset key outside bottom center horizontal\n";
     script +=
         "set title " +
         host::gnuplot_quote(std::string(channel_name(f.channel)) + " at Fz = " + number(f.fz_n, 5) +
                             " N (RMS " + number(f.rms, 3) + ")") +
         "\n";
     script += std::string("set xlabel ") + (fx ? "'kappa (-)'" : "'alpha (rad)'") + "\n";
-    script += "set ylabel " + host::gnuplot_quote(channel_column(f.channel)) + "\n";
+    script += std::string("set ylabel ") +
+              (fx ? "'Fx (N)'" : (f.channel == Channel::fy_alpha ? "'Fy (N)'" : "'Mz (Nm)'")) +
+              "\n";
     script += "plot " + host::gnuplot_quote(dat.string()) +
               " index 0 with points pt 7 ps 0.6 title 'measured', '' index 1 with lines lw 2 "
               "title 'fit'\n";

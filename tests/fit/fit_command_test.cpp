@@ -1,0 +1,180 @@
+// End-to-end test of `tread fit` (sim/cli/fit_command.cpp): runs the built CLI on noise-free
+// measurements of a basic Magic Formula with known constants (CSV and TYDEX), checks the written
+// constants, report and plots; bad input must fail with file:line and a non-zero exit status.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+std::filesystem::path tmp_dir() {
+  const char* env = std::getenv("TREAD_TEST_TMP");
+  std::filesystem::path dir = env != nullptr ? env : std::filesystem::temp_directory_path();
+  dir /= "fit_command_test";
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+int run(const std::string& args, const std::filesystem::path& stderr_file) {
+  const std::string command = std::string(TREAD_CLI) + " " + args + " 2> " + stderr_file.string();
+  return std::system(command.c_str());
+}
+
+std::string slurp(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The known curve, written out here (independent of the fitter's code).
+double curve(double b, double c, double d, double e, double sh, double sv, double x) {
+  const double bx = b * (x + sh);
+  return d * std::sin(c * std::atan(bx - e * (bx - std::atan(bx)))) + sv;
+}
+
+struct Truth {
+  double b, c, d, e, sh, sv;
+};
+// Lateral force per load: D grows with Fz, the shape stays.
+Truth lateral(double fz) {
+  return {9.0, 1.35, -0.95 * fz, -0.6, 0.003, 40.0};
+}
+
+/// Reads the fitter's CSV: channel_fz → column → value.
+std::map<std::string, std::map<std::string, double>> read_fit(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> names;
+  {
+    std::stringstream s(line);
+    std::string cell;
+    while (std::getline(s, cell, ',')) names.push_back(cell);
+  }
+  std::map<std::string, std::map<std::string, double>> rows;
+  while (std::getline(in, line)) {
+    std::stringstream s(line);
+    std::string cell, key;
+    std::map<std::string, double> row;
+    for (std::size_t i = 0; std::getline(s, cell, ','); ++i) {
+      if (i == 0) {
+        key = cell;
+      } else {
+        row[names[i]] = std::stod(cell);
+      }
+    }
+    rows[key + "_" + std::to_string(std::lround(row["fz_N"]))] = row;
+  }
+  return rows;
+}
+
+TEST(FitCommand, CsvInRecoversKnownConstantsWithReportAndPlots) {
+  const auto dir = tmp_dir();
+  const auto in_csv = dir / "lateral.csv";
+  {
+    std::ofstream in(in_csv);
+    in.precision(17);
+    in << "Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps,Fy_N\n";
+    for (double fz : {3000.0, 5000.0}) {
+      const Truth t = lateral(fz);
+      for (int i = -40; i <= 40; ++i) {
+        const double a = i * 0.005;
+        in << fz << ",0," << a << ",0,16," << curve(t.b, t.c, t.d, t.e, t.sh, t.sv, a) << '\n';
+      }
+    }
+  }
+  const auto out_csv = dir / "fit.csv";
+  const auto report = dir / "report.md";
+  const auto plots = dir / "plots";
+  std::filesystem::remove_all(plots);
+  const auto err = dir / "stderr.txt";
+  ASSERT_EQ(run("fit --model simple --input " + in_csv.string() + " --output " + out_csv.string() +
+                    " --report " + report.string() + " --plots " + plots.string(),
+                err),
+            0)
+      << slurp(err);
+  EXPECT_NE(slurp(err).find("Fy(alpha) at Fz 3000 N: 81 points"), std::string::npos) << slurp(err);
+  const auto rows = read_fit(out_csv);
+  ASSERT_EQ(rows.size(), 2u);  // only Fy was measured
+  for (double fz : {3000.0, 5000.0}) {
+    const Truth t = lateral(fz);
+    const auto& r = rows.at("Fy_N_" + std::to_string(std::lround(fz)));
+    EXPECT_NEAR(r.at("D"), t.d, 1e-4 * std::fabs(t.d));
+    EXPECT_NEAR(r.at("C"), t.c, 1e-4);
+    EXPECT_NEAR(r.at("B"), t.b, 1e-4 * t.b);
+    EXPECT_NEAR(r.at("E"), t.e, 1e-3);
+    EXPECT_NEAR(r.at("SH"), t.sh, 1e-6);
+    EXPECT_NEAR(r.at("SV"), t.sv, 1e-2);
+    EXPECT_LT(r.at("rms"), 1e-3);
+    EXPECT_NEAR(r.at("slope_at_origin"),
+                (curve(t.b, t.c, t.d, t.e, t.sh, t.sv, 1e-6) -
+                 curve(t.b, t.c, t.d, t.e, t.sh, t.sv, -1e-6)) /
+                    2e-6,
+                1e-4 * t.b * t.c * std::fabs(t.d));
+  }
+  const std::string md = slurp(report);
+  EXPECT_NE(md.find("## Fy(alpha)"), std::string::npos);
+  EXPECT_EQ(md.find("## Fx(kappa)"), std::string::npos);
+  EXPECT_GT(std::filesystem::file_size(plots / "Fy_N_Fz3000N.png"), 1000u);
+  EXPECT_GT(std::filesystem::file_size(plots / "Fy_N_Fz5000N.png"), 1000u);
+}
+
+TEST(FitCommand, TydexInWithUnits) {
+  const auto dir = tmp_dir();
+  const auto in_tdx = dir / "long.tdx";
+  const Truth t{12.0, 1.6, 4200.0, 0.3, 0.0, 0.0};
+  {
+    std::ofstream in(in_tdx);
+    in.precision(17);
+    in << "**HEADER\nRELEASE 1.3\n**MEASURCHANNELS\n"
+       << "FZW       Vertical force                kN     1 0 0\n"
+       << "LONGSLIP  Longitudinal slip             %      1 0 0\n"
+       << "SLIPANGL  Slip angle                    deg    1 0 0\n"
+       << "FXW       Longitudinal force            kN     1 0 0\n"
+       << "**MEASURDATA\n";
+    for (int i = -30; i <= 30; ++i) {
+      const double kappa = i * 0.01;
+      in << "4.0 " << 100.0 * kappa << " 0 "
+         << curve(t.b, t.c, t.d, t.e, t.sh, t.sv, kappa) / 1000.0 << "\n";
+    }
+    in << "**END\n";
+  }
+  const auto out_csv = dir / "long_fit.csv";
+  const auto err = dir / "stderr_tdx.txt";
+  ASSERT_EQ(run("fit --input " + in_tdx.string() + " --output " + out_csv.string(), err), 0)
+      << slurp(err);
+  const auto rows = read_fit(out_csv);
+  ASSERT_EQ(rows.count("Fx_N_4000"), 1u);
+  const auto& r = rows.at("Fx_N_4000");
+  EXPECT_NEAR(r.at("D"), t.d, 1e-4 * t.d);
+  EXPECT_NEAR(r.at("C"), t.c, 1e-4);
+  EXPECT_NEAR(r.at("B"), t.b, 1e-4 * t.b);
+}
+
+TEST(FitCommand, BadInputFailsWithFileAndLine) {
+  const auto dir = tmp_dir();
+  const auto in_csv = dir / "bad.csv";
+  {
+    std::ofstream in(in_csv);
+    in << "Fz_N,kappa,alpha_rad,Fy_N\n4000,0,0.01,-300\n4000,0,zero,-300\n";
+  }
+  const auto err = dir / "stderr_bad.txt";
+  EXPECT_NE(run("fit --input " + in_csv.string() + " --output " + (dir / "x.csv").string(), err),
+            0);
+  EXPECT_NE(slurp(err).find("bad.csv:3: cell 3 'zero' is not a finite number"), std::string::npos)
+      << slurp(err);
+  EXPECT_NE(run("fit --input " + in_csv.string() + " --output " + (dir / "x.tir").string(), err),
+            0);
+  EXPECT_NE(slurp(err).find("writes the per-load constants as .csv"), std::string::npos)
+      << slurp(err);
+}
+
+}  // namespace
