@@ -43,7 +43,7 @@ class Node {
       feeds_[m] = channel_mask(all[m]);
       receivers_[m].max_delta = config_.e2e_max_delta;
       if (all[m].direction == proto::Direction::node_to_rig && tx_count_ < kMaxTxFrames) {
-        const bool is_status = all[m].id == kNodeStatusId;
+        const bool is_status = all[m].id == proto::kNodeStatusId;
         const std::uint8_t configured = configured_mask();
         if (is_status || (feeds_[m] & configured) != 0U) {
           tx_list_[tx_count_++] = static_cast<std::uint8_t>(m);
@@ -99,21 +99,20 @@ class Node {
     ++counters_.rx_accepted;
     static_cast<void>(proto::decode(*m, frame, latest_));
     last_valid_ns_[index] = now_ns;
-    if (m->id == kCommandId) {
+    if (m->id == proto::kCommandId) {
       apply_command();
       return false;
     }
-    return m->id == kRigCycleId || m->id == kRigInputsFdId;
+    return m->id == proto::kRigCycleId || m->id == proto::kRigInputsFdId;
   }
 
   /// Computes every channel at `now_ns` and encodes the output frames into `tx`.
   /// @return the number of frames written (at most kMaxTxFrames)
   std::size_t compute(std::int64_t now_ns, std::span<proto::CanFrame> tx) noexcept {
     ++counters_.cycles;
+    // Integer nanoseconds to float seconds without double arithmetic (soft-float on Cortex-M4F).
     const float dt_s =
-        last_compute_ns_ == kNever
-            ? 0.0F
-            : static_cast<float>(static_cast<double>(now_ns - last_compute_ns_) * 1e-9);
+        last_compute_ns_ == kNever ? 0.0F : static_cast<float>(now_ns - last_compute_ns_) * 1e-9F;
     last_compute_ns_ = now_ns;
 
     std::uint8_t stale_mask = 0;
@@ -212,10 +211,6 @@ class Node {
 
  private:
   static constexpr std::int64_t kNever = std::numeric_limits<std::int64_t>::min();
-  static constexpr std::uint32_t kCommandId = 0x080;
-  static constexpr std::uint32_t kRigCycleId = 0x090;
-  static constexpr std::uint32_t kRigInputsFdId = 0x0A0;
-  static constexpr std::uint32_t kNodeStatusId = 0x0F0;
 
   static bool is_wheel_role(proto::Role r) noexcept {
     using proto::Role;

@@ -137,9 +137,9 @@ constexpr Direction kIn = Direction::rig_to_node;
 constexpr Direction kOut = Direction::node_to_rig;
 
 constexpr std::array kClassic{
-    msg("Command", -1, 0x080, kIn, kCommand),
-    msg("RigCycle", -1, 0x090, kIn, kRigCycle),
-    msg("NodeStatus", -1, 0x0F0, kOut, kNodeStatus),
+    msg("Command", -1, kCommandId, kIn, kCommand),
+    msg("RigCycle", -1, kRigCycleId, kIn, kRigCycle),
+    msg("NodeStatus", -1, kNodeStatusId, kOut, kNodeStatus),
     msg("WheelSlip", 0, 0x100, kIn, kWheelSlip),
     msg("WheelSlip", 1, 0x101, kIn, kWheelSlip),
     msg("WheelSlip", 2, 0x102, kIn, kWheelSlip),
@@ -243,9 +243,9 @@ constexpr auto kWheelOutFd = make_wheel_out();
 constexpr auto kWheelsetOutFd = make_wheelset_out();
 
 constexpr std::array kFd{
-    msg("Command", -1, 0x080, kIn, kCommand),
-    msg("NodeStatus", -1, 0x0F0, kOut, kNodeStatus),
-    msg("RigInputsFD", -1, 0x0A0, kIn, kRigInputsFd, 64, true),
+    msg("Command", -1, kCommandId, kIn, kCommand),
+    msg("NodeStatus", -1, kNodeStatusId, kOut, kNodeStatus),
+    msg("RigInputsFD", -1, kRigInputsFdId, kIn, kRigInputsFd, 64, true),
     msg("WheelOutFD", -1, 0x1C0, kOut, kWheelOutFd, 64, true),
     msg("WheelsetOutFD", -1, 0x1D0, kOut, kWheelsetOutFd, 32, true),
 };

@@ -17,6 +17,12 @@ inline constexpr std::uint8_t kMaxWheels = 4;
 inline constexpr std::uint8_t kMaxWheelsets = 2;
 
 enum class Layout : std::uint8_t { classic, fd };
+
+/// Identifiers the node and the rig treat specially (the rest is table-driven).
+inline constexpr std::uint32_t kCommandId = 0x080;      ///< Command (both layouts)
+inline constexpr std::uint32_t kRigCycleId = 0x090;     ///< RigCycle: the classic cycle frame
+inline constexpr std::uint32_t kRigInputsFdId = 0x0A0;  ///< RigInputsFD: the FD cycle frame
+inline constexpr std::uint32_t kNodeStatusId = 0x0F0;   ///< NodeStatus (both layouts)
 enum class Direction : std::uint8_t { rig_to_node, node_to_rig };
 
 struct MessageSpec {

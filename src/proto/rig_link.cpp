@@ -3,10 +3,6 @@
 namespace tread::proto {
 namespace {
 
-constexpr std::uint32_t kCommandId = 0x080;
-constexpr std::uint32_t kRigCycleId = 0x090;
-constexpr std::uint32_t kRigInputsFdId = 0x0A0;
-
 bool is_cycle_frame(const MessageSpec& m) noexcept {
   return m.id == kRigCycleId || m.id == kRigInputsFdId;
 }
