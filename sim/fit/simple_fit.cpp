@@ -24,24 +24,31 @@ constexpr double kCMin = 1.0 + 1e-6, kCMax = 3.0 - 1e-6;  // the seed's 1 < C < 
 constexpr double kEMax = 1.0 - 1e-6, kEMin = -20.0;       // E < 1; the lower bound keeps E sane
 constexpr double kEAsymMax = 0.99;                        // |EA| < 1
 
-struct PointResidual {
-  double x, y, inv_scale;
+/// All points of one sweep in one cost function (one Jet pass per point, little overhead).
+struct CurveResidual {
+  const std::vector<double>* x;
+  const std::vector<double>* y;
+  double inv_scale;
   template <typename T>
   bool operator()(const T* const k, T* residual) const {
-    const T e = k[3] * (T(1) - k[6] * pac::detail::sgn(T(x) + k[4]));
-    residual[0] =
-        (pac::detail::magic_formula(k[0], k[1], k[2], e, k[4], k[5], T(x)) - T(y)) * T(inv_scale);
+    for (std::size_t i = 0; i < x->size(); ++i) {
+      residual[i] = point((*x)[i], (*y)[i], k);
+    }
     return true;
+  }
+  template <typename T>
+  T point(double xi, double yi, const T* const k) const {
+    const T e = k[3] * (T(1) - k[6] * pac::detail::sgn(T(xi) + k[4]));
+    return (pac::detail::magic_formula(k[0], k[1], k[2], e, k[4], k[5], T(xi)) - T(yi)) *
+           T(inv_scale);
   }
 };
 
 void add_residuals(ceres::Problem& problem, double* k, const std::vector<double>& x,
                    const std::vector<double>& y, double inv_scale, bool asymmetric_e) {
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<PointResidual, 1, 7>(
-                                 new PointResidual{x[i], y[i], inv_scale}),
-                             nullptr, k);
-  }
+  problem.AddResidualBlock(new ceres::AutoDiffCostFunction<CurveResidual, ceres::DYNAMIC, 7>(
+                               new CurveResidual{&x, &y, inv_scale}, static_cast<int>(x.size())),
+                           nullptr, k);
   problem.SetParameterLowerBound(k, 1, kCMin);
   problem.SetParameterUpperBound(k, 1, kCMax);
   problem.SetParameterLowerBound(k, 3, kEMin);

@@ -42,7 +42,7 @@ struct Truth {
   }
   double peak(Channel c, double fz) const {
     double p = 0.0;
-    for (int i = -3000; i <= 3000; ++i) p = std::max(p, std::fabs(value(c, fz, i * 1e-4)));
+    for (int i = -1500; i <= 1500; ++i) p = std::max(p, std::fabs(value(c, fz, i * 2e-4)));
     return p;
   }
   double slope(Channel c, double fz) const {
@@ -122,8 +122,8 @@ void check_recovery(bool asymmetric_e, double fx_rms_limit) {
       const double true_peak = truth.peak(c, fz);
       double ss = 0.0;
       int count = 0;
-      for (int i = -3000; i <= 3000; ++i) {
-        const double x = i * 1e-4;
+      for (int i = -1500; i <= 1500; ++i) {
+        const double x = i * 2e-4;
         const double d = simple_curve(f.constants, x) - truth.value(c, fz, x);
         ss += d * d;
         ++count;
