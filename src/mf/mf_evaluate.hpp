@@ -294,7 +294,7 @@ T fx0(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>& b, const 
         (T(1) - p.pdx3 * b.gamma_x * b.gamma_x) * b.lmux_star;
   if (is_zero(fz)) mux = T(0);
   const T dx = mux * fz * zeta1;
-  kxk = fz * (p.pkx1 + p.pkx2 * dfz) * exp(p.pkx3 * dfz) *
+  kxk = fz * (p.pkx1 + p.pkx2 * dfz) * mf_exp(p.pkx3 * dfz) *
         (T(1) + p.ppx1 * dpi + p.ppx2 * dpi * dpi) * p.lkx;
   const T bx = div_or(kxk, cx * dx + T(1e-6) * sgn_nz(dx), T(0));
   T shx = (p.phx1 + p.phx2 * dfz) * p.lhx;
@@ -754,7 +754,7 @@ MfOutput<T> evaluate(const MfParameters<T>& params, const MfInput<T>& input,
       } else {
         const T f = fz / (ncz * r0);
         out.contact_length_m = T(2) * r0 * (p.q_ra2 * f + p.q_ra1 * sqrt(f));
-        const T cube_root = f > T(0) ? pow(f, T(1) / T(3)) : T(0);
+        const T cube_root = f > T(0) ? mf_pow(f, T(1) / T(3)) : T(0);
         out.contact_width_m = T(2) * p.width_m * (p.q_rb2 * f + p.q_rb1 * cube_root);
       }
     }

@@ -2,15 +2,21 @@
 // The elementary functions of the Magic Formula, per scalar:
 //   - double and ceres::Jet: the standard library / ceres (ADL), so results match MFeval to the
 //     last bits and Jet derivatives stay exact;
-//   - float: libm's float functions (sinf, cosf, tanf: fast and exact enough), tread's own
-//     atan (three-interval reduction + odd polynomial, about 1e-7 relative error, ~25 % faster
-//     than atanf here) and x^y as exp(y·ln x) (several times cheaper than powf). Measured against
-//     libm on this x86 host: a Taylor sin/cos was slower than sinf/cosf (longer dependency
-//     chain), so they are not replaced.
+//   - float: libm's sinf/cosf (glibc's FMA variants: ~28 instructions a call), tread's own tan
+//     (Cody–Waite reduction + sin/cos polynomials, one division: ~35 instructions against ~60 for
+//     tanf), tread's atan (three-interval reduction + odd polynomial, |error| < 1.5e-7, ~25 %
+//     faster than atanf here), expf, and x^y as expf(y·logf x) (several times cheaper than powf).
+//   - fast::sin/cos/exp/log: branch-free Cephes-style polynomials (errors in
+//     tests/mf/mf_math_test.cpp). Measured on this x86 host (callgrind and wall time, MF 6.1
+//     combined): in scalar code they are no faster than glibc's FMA sinf/cosf/expf/logf (the
+//     host build has no FMA), so evaluate() does not use them; they are the building blocks for a
+//     vectorised path and for targets whose libm is slow.
 // Identities used by the evaluation: cos(atan x) = 1/√(1+x²), sin(atan x) = x/√(1+x²), written
 // without overflow for huge x.
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 namespace tread::mf::detail {
 
@@ -34,6 +40,12 @@ template <typename T>
 T mf_atan(const T& x) {
   using std::atan;
   return atan(x);
+}
+
+template <typename T>
+T mf_exp(const T& x) {
+  using std::exp;
+  return exp(x);
 }
 
 template <typename T>
@@ -65,6 +77,107 @@ inline float atan(float x) {
   return std::copysign(base + (t + t * z * poly), x);
 }
 
+/// Cody–Waite reduction by π/2 for |x| ≤ kTrigMax: x = k·π/2 + r, |r| ≤ π/4 (+ rounding), and
+/// the quadrant k mod 4. π/2 is split into three parts; the first has 8 significant bits, so
+/// k·kPio2Hi is exact for |k| < 2^16.
+inline constexpr float kTrigMax = 32768.0f;
+
+struct Reduced {
+  float r;
+  unsigned quadrant;
+};
+
+inline Reduced reduce_pio2(float x) {
+  const float k = (x * 0.636619772367581f + 12582912.0f) - 12582912.0f;  // rint(x·2/π)
+  const float r = ((x - k * 1.5703125f) - k * 4.837512969970703125e-4f) - k * 7.54978995489188e-8f;
+  return {r, static_cast<unsigned>(static_cast<int>(k))};
+}
+
+/// sin and cos of the reduced argument r ∈ [−π/4, π/4] (Cephes' minimax polynomials, a few
+/// ulp).
+inline float sin_poly(float r) {
+  const float z = r * r;
+  return r + r * z * (-1.6666654611e-1f + z * (8.3321608736e-3f + z * -1.9515295891e-4f));
+}
+inline float cos_poly(float r) {
+  const float z = r * r;
+  return 1.0f - 0.5f * z +
+         z * z * (4.166664568298827e-2f + z * (-1.388731625493765e-3f + z * 2.443315711809948e-5f));
+}
+
+/// sin for |x| ≤ kTrigMax without branches (libm beyond it, and for NaN). Absolute error below
+/// 2e-7 on [−kTrigMax, kTrigMax] (see tests/mf/mf_math_test.cpp).
+inline float sin(float x) {
+  if (!(std::fabs(x) <= kTrigMax)) return std::sin(x);
+  const Reduced a = reduce_pio2(x);
+  const float s = sin_poly(a.r);
+  const float c = cos_poly(a.r);
+  const float v = (a.quadrant & 1u) != 0u ? c : s;
+  return (a.quadrant & 2u) != 0u ? -v : v;
+}
+
+/// cos, as sin.
+inline float cos(float x) {
+  if (!(std::fabs(x) <= kTrigMax)) return std::cos(x);
+  const Reduced a = reduce_pio2(x);
+  const float s = sin_poly(a.r);
+  const float c = cos_poly(a.r);
+  const float v = (a.quadrant & 1u) != 0u ? s : c;
+  return ((a.quadrant + 1u) & 2u) != 0u ? -v : v;
+}
+
+/// tan = sin/cos of the reduced argument (−cos/sin in odd quadrants); relative error below 1e-6.
+inline float tan(float x) {
+  if (!(std::fabs(x) <= kTrigMax)) return std::tan(x);
+  const Reduced a = reduce_pio2(x);
+  const float s = sin_poly(a.r);
+  const float c = cos_poly(a.r);
+  const bool odd = (a.quadrant & 1u) != 0u;
+  return odd ? -c / s : s / c;
+}
+
+/// exp for |x| < 87 (libm beyond it): x = k·ln2 + r, |r| ≤ ln2/2, Cephes' degree-6 polynomial,
+/// 2^k through the exponent bits. Relative error below 3e-7.
+inline float exp(float x) {
+  if (!(std::fabs(x) < 87.0f)) return std::exp(x);
+  const float k = (x * 1.44269504088896341f + 12582912.0f) - 12582912.0f;  // rint(x/ln2)
+  const float r = (x - k * 0.693359375f) - k * -2.12194440e-4f;
+  const float z = r * r;
+  const float poly =
+      ((((1.9875691500e-4f * r + 1.3981999507e-3f) * r + 8.3334519073e-3f) * r + 4.1665795894e-2f) *
+           r +
+       1.6666665459e-1f) *
+          r +
+      5.0000001201e-1f;
+  const float e = poly * z + r + 1.0f;
+  const std::uint32_t bits = static_cast<std::uint32_t>(static_cast<int>(k) + 127) << 23;
+  return e * std::bit_cast<float>(bits);
+}
+
+/// Natural logarithm for normal positive x (libm otherwise): x = 2^e·m, m ∈ [√½, √2), Cephes'
+/// polynomial in m − 1. Absolute error below 2e-7.
+inline float log(float x) {
+  if (!(x >= 1.17549435e-38f && x <= 3.40282347e+38f)) return std::log(x);
+  const std::uint32_t bits = std::bit_cast<std::uint32_t>(x);
+  const int e_raw = static_cast<int>(bits >> 23) - 127;
+  float m = std::bit_cast<float>((bits & 0x007fffffu) | 0x3f800000u);  // [1, 2)
+  const bool high = m > 1.41421356f;
+  m = high ? 0.5f * m : m;
+  const float e = static_cast<float>(high ? e_raw + 1 : e_raw);
+  const float f = m - 1.0f;
+  const float z = f * f;
+  float poly = 7.0376836292e-2f;
+  poly = poly * f - 1.1514610310e-1f;
+  poly = poly * f + 1.1676998740e-1f;
+  poly = poly * f - 1.2420140846e-1f;
+  poly = poly * f + 1.4249322787e-1f;
+  poly = poly * f - 1.6668057665e-1f;
+  poly = poly * f + 2.0000714765e-1f;
+  poly = poly * f - 2.4999993993e-1f;
+  poly = poly * f + 3.3333331174e-1f;
+  return ((f * z * poly - 0.5f * z) + f) + e * 0.693147180559945f;
+}
+
 }  // namespace fast
 
 inline float mf_sin(const float& x) {
@@ -74,13 +187,16 @@ inline float mf_cos(const float& x) {
   return std::cos(x);
 }
 inline float mf_tan(const float& x) {
-  return std::tan(x);
+  return fast::tan(x);
 }
 inline float mf_atan(const float& x) {
   return fast::atan(x);
 }
-/// x^y for x > 0 as exp(y·ln x): libm's expf and logf are much cheaper than powf, whose last-bit
-/// exactness float does not need.
+inline float mf_exp(const float& x) {
+  return std::exp(x);
+}
+/// x^y for x > 0 as exp(y·ln x): much cheaper than powf, whose last-bit exactness float does
+/// not need.
 inline float mf_pow(const float& x, const float& y) {
   return std::exp(y * std::log(x));
 }
