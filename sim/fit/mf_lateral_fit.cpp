@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <ostream>
 #include <sstream>
 #include <stdexcept>
 #include <tuple>
@@ -243,6 +244,33 @@ LateralFit fit_mf_pure_lateral(const MeasurementSet& data, const mf::MfParameter
     }
   }
   return fit;
+}
+
+std::array<double, kLateralCoefficientCount> lateral_values(const LateralFit& fit) {
+  mf::MfParameters<double> p = fit.params;
+  const std::array<double*, kN> m = lateral_members(p);
+  std::array<double, kN> v{};
+  for (std::size_t i = 0; i < v.size(); ++i) v[i] = *m[i];
+  return v;
+}
+
+void set_lateral_coefficients(tir::TirFile& file, const LateralFit& fit) {
+  const std::array<double, kN> v = lateral_values(fit);
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    file.set("LATERAL_COEFFICIENTS", kLateralCoefficientNames[i], v[i]);
+  }
+}
+
+void write_lateral_report(const LateralFit& fit, const std::string& source, std::ostream& out) {
+  const std::array<double, kN> v = lateral_values(fit);
+  out << "# tread fit --model mf61 (pure lateral, gamma = 0)\n\nInput: `" << source << "`, "
+      << fit.points << " points, " << fit.iterations << " solver iterations. RMS " << fit.rms_n
+      << " N, R² " << fit.r2
+      << ". Standard deviations from the Ceres covariance scaled by the residual variance.\n\n"
+      << "| coefficient | value | standard deviation |\n|---|---|---|\n";
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    out << "| " << kLateralCoefficientNames[i] << " | " << v[i] << " | " << fit.stddev[i] << " |\n";
+  }
 }
 
 }  // namespace tread::fit

@@ -3,6 +3,7 @@
 // constants, report and plots; bad input must fail with file:line and a non-zero exit status.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -11,6 +12,11 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "golden_path.hpp"
+#include "mf/mf_evaluate.hpp"
+#include "mf/mf_parameters_from_tir.hpp"
+#include "tir/tir_file.hpp"
 
 namespace {
 
@@ -175,6 +181,67 @@ TEST(FitCommand, BadInputFailsWithFileAndLine) {
             0);
   EXPECT_NE(slurp(err).find("writes the per-load constants as .csv"), std::string::npos)
       << slurp(err);
+}
+
+double fy_of(const tread::mf::MfParameters<double>& p, double fz, double alpha) {
+  tread::mf::MfInput<double> in;
+  in.fz_n = fz;
+  in.alpha_rad = alpha;
+  in.vx_mps = 16.6;
+  tread::mf::MfOptions o;
+  o.combined = false;
+  return tread::mf::evaluate(p, in, o).fy_n;
+}
+
+// Stage 2: --model mf61 fits the pure lateral coefficients from a neutral start .tir and writes a
+// .tir that the Magic Formula reader (the one `tread mf eval` uses) reads back.
+TEST(FitCommand, Mf61PureLateralWritesTir) {
+  const auto tir = tread::testing::refdata("tir/MagicFormula61_Parameters.tir");
+  ASSERT_TRUE(std::filesystem::exists(tir)) << tir;
+  const tread::mf::MfParameters<double> truth = tread::mf::load_mf_parameters(tir).params;
+  const auto dir = tmp_dir();
+  const auto start_tir = dir / "start.tir";
+  {
+    tread::tir::TirFile file = tread::tir::read_tir(tir);
+    for (const char* key : {"PCY1", "PDY1", "PDY2", "PEY1", "PEY2", "PEY3", "PKY1", "PKY2", "PKY4",
+                            "PHY1", "PHY2", "PVY1", "PVY2"}) {
+      file.erase("LATERAL_COEFFICIENTS", key);  // → the book defaults
+    }
+    tread::tir::write_tir(file, start_tir);
+  }
+  const auto in_csv = dir / "mf61_lateral.csv";
+  {
+    std::ofstream in(in_csv);
+    in.precision(17);
+    in << "Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps,Fy_N\n";
+    for (double fz : {2000.0, 4000.0, 6000.0}) {
+      for (int i = -60; i <= 60; ++i) {
+        in << fz << ",0," << i * 0.005 << ",0,16.6," << fy_of(truth, fz, i * 0.005) << '\n';
+      }
+    }
+  }
+  const auto out_tir = dir / "fitted.tir";
+  const auto report = dir / "mf61_report.md";
+  const auto err = dir / "stderr_mf61.txt";
+  ASSERT_EQ(run("fit --model mf61 --start " + start_tir.string() + " --input " + in_csv.string() +
+                    " --output " + out_tir.string() + " --report " + report.string(),
+                err),
+            0)
+      << slurp(err);
+  EXPECT_NE(slurp(err).find("iteration 1:"), std::string::npos);
+  EXPECT_NE(slurp(report).find("| PKY1 |"), std::string::npos);
+  const tread::mf::MfParameters<double> fitted = tread::mf::load_mf_parameters(out_tir).params;
+  for (double fz : {2000.0, 4000.0, 6000.0}) {
+    double ss = 0.0, peak = 0.0;
+    int n = 0;
+    for (int i = -300; i <= 300; ++i, ++n) {
+      const double t = fy_of(truth, fz, i * 1e-3);
+      const double d = fy_of(fitted, fz, i * 1e-3) - t;
+      ss += d * d;
+      peak = std::max(peak, std::fabs(t));
+    }
+    EXPECT_LT(std::sqrt(ss / n), 1e-3 * peak) << fz;  // noise-free data: a near-exact fit
+  }
 }
 
 }  // namespace
