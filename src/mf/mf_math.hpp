@@ -6,17 +6,14 @@
 //     (Cody–Waite reduction + sin/cos polynomials, one division: ~35 instructions against ~60 for
 //     tanf), tread's atan (three-interval reduction + odd polynomial, |error| < 1.5e-7, ~25 %
 //     faster than atanf here), expf, and x^y as expf(y·logf x) (several times cheaper than powf).
-//   - fast::sin/cos/exp/log: branch-free Cephes-style polynomials (errors in
-//     tests/mf/mf_math_test.cpp). Measured on this x86 host (callgrind and wall time, MF 6.1
-//     combined): in scalar code they are no faster than glibc's FMA sinf/cosf/expf/logf (the
-//     host build has no FMA), so evaluate() does not use them; they are the building blocks for a
-//     vectorised path and for targets whose libm is slow.
+//   Measured on this x86 host (callgrind and wall time, MF 6.1 combined): branch-free
+//   Cephes-style float sin/cos/exp/log polynomials (commit 0d09488) were no faster than glibc's
+//   FMA sinf/cosf/expf/logf in scalar code, also with -march=haswell, so they were removed.
+//   Errors of the float functions: tests/mf/mf_math_test.cpp.
 // Identities used by the evaluation: cos(atan x) = 1/√(1+x²), sin(atan x) = x/√(1+x²), written
 // without overflow for huge x.
 
-#include <bit>
 #include <cmath>
-#include <cstdint>
 
 namespace tread::mf::detail {
 
@@ -77,9 +74,9 @@ inline float atan(float x) {
   return std::copysign(base + (t + t * z * poly), x);
 }
 
-/// Cody–Waite reduction by π/2 for |x| ≤ kTrigMax: x = k·π/2 + r, |r| ≤ π/4 (+ rounding), and
+/// Cody–Waite reduction by π/2 (for |x| ≤ kTrigMax): x = k·π/2 + r, |r| ≤ π/4 (+ rounding), and
 /// the quadrant k mod 4. π/2 is split into three parts; the first has 8 significant bits, so
-/// k·kPio2Hi is exact for |k| < 2^16.
+/// k·1.5703125 is exact for |k| < 2^16.
 inline constexpr float kTrigMax = 32768.0f;
 
 struct Reduced {
@@ -105,27 +102,6 @@ inline float cos_poly(float r) {
          z * z * (4.166664568298827e-2f + z * (-1.388731625493765e-3f + z * 2.443315711809948e-5f));
 }
 
-/// sin for |x| ≤ kTrigMax without branches (libm beyond it, and for NaN). Absolute error below
-/// 2e-7 on [−kTrigMax, kTrigMax] (see tests/mf/mf_math_test.cpp).
-inline float sin(float x) {
-  if (!(std::fabs(x) <= kTrigMax)) return std::sin(x);
-  const Reduced a = reduce_pio2(x);
-  const float s = sin_poly(a.r);
-  const float c = cos_poly(a.r);
-  const float v = (a.quadrant & 1u) != 0u ? c : s;
-  return (a.quadrant & 2u) != 0u ? -v : v;
-}
-
-/// cos, as sin.
-inline float cos(float x) {
-  if (!(std::fabs(x) <= kTrigMax)) return std::cos(x);
-  const Reduced a = reduce_pio2(x);
-  const float s = sin_poly(a.r);
-  const float c = cos_poly(a.r);
-  const float v = (a.quadrant & 1u) != 0u ? s : c;
-  return ((a.quadrant + 1u) & 2u) != 0u ? -v : v;
-}
-
 /// tan = sin/cos of the reduced argument (−cos/sin in odd quadrants); relative error below 1e-6.
 inline float tan(float x) {
   if (!(std::fabs(x) <= kTrigMax)) return std::tan(x);
@@ -134,48 +110,6 @@ inline float tan(float x) {
   const float c = cos_poly(a.r);
   const bool odd = (a.quadrant & 1u) != 0u;
   return odd ? -c / s : s / c;
-}
-
-/// exp for |x| < 87 (libm beyond it): x = k·ln2 + r, |r| ≤ ln2/2, Cephes' degree-6 polynomial,
-/// 2^k through the exponent bits. Relative error below 3e-7.
-inline float exp(float x) {
-  if (!(std::fabs(x) < 87.0f)) return std::exp(x);
-  const float k = (x * 1.44269504088896341f + 12582912.0f) - 12582912.0f;  // rint(x/ln2)
-  const float r = (x - k * 0.693359375f) - k * -2.12194440e-4f;
-  const float z = r * r;
-  const float poly =
-      ((((1.9875691500e-4f * r + 1.3981999507e-3f) * r + 8.3334519073e-3f) * r + 4.1665795894e-2f) *
-           r +
-       1.6666665459e-1f) *
-          r +
-      5.0000001201e-1f;
-  const float e = poly * z + r + 1.0f;
-  const std::uint32_t bits = static_cast<std::uint32_t>(static_cast<int>(k) + 127) << 23;
-  return e * std::bit_cast<float>(bits);
-}
-
-/// Natural logarithm for normal positive x (libm otherwise): x = 2^e·m, m ∈ [√½, √2), Cephes'
-/// polynomial in m − 1. Absolute error below 2e-7.
-inline float log(float x) {
-  if (!(x >= 1.17549435e-38f && x <= 3.40282347e+38f)) return std::log(x);
-  const std::uint32_t bits = std::bit_cast<std::uint32_t>(x);
-  const int e_raw = static_cast<int>(bits >> 23) - 127;
-  float m = std::bit_cast<float>((bits & 0x007fffffu) | 0x3f800000u);  // [1, 2)
-  const bool high = m > 1.41421356f;
-  m = high ? 0.5f * m : m;
-  const float e = static_cast<float>(high ? e_raw + 1 : e_raw);
-  const float f = m - 1.0f;
-  const float z = f * f;
-  float poly = 7.0376836292e-2f;
-  poly = poly * f - 1.1514610310e-1f;
-  poly = poly * f + 1.1676998740e-1f;
-  poly = poly * f - 1.2420140846e-1f;
-  poly = poly * f + 1.4249322787e-1f;
-  poly = poly * f - 1.6668057665e-1f;
-  poly = poly * f + 2.0000714765e-1f;
-  poly = poly * f - 2.4999993993e-1f;
-  poly = poly * f + 3.3333331174e-1f;
-  return ((f * z * poly - 0.5f * z) + f) + e * 0.693147180559945f;
 }
 
 }  // namespace fast
