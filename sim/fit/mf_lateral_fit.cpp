@@ -232,6 +232,9 @@ LateralFit fit_mf_pure_lateral(const MeasurementSet& data, const mf::MfParameter
   fit.stddev.fill(std::numeric_limits<double>::quiet_NaN());
   ceres::Covariance::Options co;
   co.algorithm_type = ceres::DENSE_SVD;
+  // Pure-lateral data at γ = 0 can leave a direction nearly flat (e.g. Ey at its clamp): the
+  // pseudo-inverse drops it instead of failing, so the others still get a standard deviation.
+  co.null_space_rank = -1;
   co.num_threads = 1;
   ceres::Covariance covariance(co);
   const std::vector<std::pair<const double*, const double*>> blocks = {{k.data(), k.data()}};
