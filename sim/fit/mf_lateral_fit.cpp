@@ -203,10 +203,10 @@ LateralFit fit_mf_pure_lateral(const MeasurementSet& data, const mf::MfParameter
   build(problem);
   ceres::Solver::Options so;
   so.linear_solver_type = ceres::DENSE_QR;
-  so.max_num_iterations = 200;
-  so.function_tolerance = 1e-12;
+  so.max_num_iterations = 100;
+  so.function_tolerance = 1e-9;
   so.gradient_tolerance = 1e-14;
-  so.parameter_tolerance = 1e-12;
+  so.parameter_tolerance = 1e-10;
   so.num_threads = 1;
   so.logging_type = ceres::SILENT;
   Progress callback(progress);
@@ -214,6 +214,7 @@ LateralFit fit_mf_pure_lateral(const MeasurementSet& data, const mf::MfParameter
   ceres::Solver::Summary summary;
   ceres::Solve(so, &problem, &summary);
   fit.iterations = static_cast<int>(summary.iterations.size());
+  fit.converged = summary.termination_type == ceres::CONVERGENCE;
   {
     const std::array<double*, kN> m = lateral_members(fit.params);
     for (std::size_t i = 0; i < k.size(); ++i) *m[i] = k[i];
@@ -267,7 +268,8 @@ void set_lateral_coefficients(tir::TirFile& file, const LateralFit& fit) {
 void write_lateral_report(const LateralFit& fit, const std::string& source, std::ostream& out) {
   const std::array<double, kN> v = lateral_values(fit);
   out << "# tread fit --model mf61 (pure lateral, gamma = 0)\n\nInput: `" << source << "`, "
-      << fit.points << " points, " << fit.iterations << " solver iterations. RMS " << fit.rms_n
+      << fit.points << " points, " << fit.iterations << " solver iterations ("
+      << (fit.converged ? "converged" : "stopped at the iteration limit") << "). RMS " << fit.rms_n
       << " N, R² " << fit.r2
       << ". Standard deviations from the Ceres covariance scaled by the residual variance.\n\n"
       << "| coefficient | value | standard deviation |\n|---|---|---|\n";

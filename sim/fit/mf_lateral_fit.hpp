@@ -31,6 +31,9 @@ struct LateralFit {
   double rms_n = 0.0;
   double r2 = 0.0;
   int iterations = 0;
+  /// Ceres reported convergence. False after 100 iterations: with γ = 0 data a nearly flat
+  /// direction can keep the solver creeping while the curves no longer change.
+  bool converged = false;
 };
 
 /// `progress` (may be empty) receives one line per solver iteration.
