@@ -152,8 +152,8 @@ ChannelFit fit_channel(Channel channel, double fz_n, std::vector<double> x, std:
 
   double best_cost = std::numeric_limits<double>::infinity();
   std::array<double, 7> best{};
-  for (double c0 : {1.2, 1.5, 1.9, 2.4, 2.9}) {
-    for (double e0 : {-1.0, 0.0, 0.6}) {
+  for (double c0 : {1.3, 1.9, 2.5}) {
+    for (double e0 : {-0.5, 0.5}) {
       std::array<double, 7> k = {slope / (c0 * d0), c0, d0, e0, 0.0, intercept, 0.0};
       const double cost = solve(k, x, y, inv_scale, asymmetric_e);
       if (std::isfinite(cost) && cost < best_cost) {
