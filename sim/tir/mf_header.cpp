@@ -3,30 +3,12 @@
 #include <array>
 #include <charconv>
 
+#include "tir/cpp_identifier.hpp"
 #include "tir/tir_file.hpp"
 
 namespace tread::tir {
 
 namespace {
-
-bool is_identifier(std::string_view s) {
-  if (s.empty()) return false;
-  auto start = [](char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; };
-  if (!start(s.front())) return false;
-  for (const char c : s) {
-    if (!start(c) && !(c >= '0' && c <= '9')) return false;
-  }
-  return true;
-}
-
-bool is_namespace(std::string_view s) {
-  while (true) {
-    const auto pos = s.find("::");
-    if (!is_identifier(s.substr(0, pos))) return false;
-    if (pos == std::string_view::npos) return true;
-    s.remove_prefix(pos + 2);
-  }
-}
 
 template <typename F>
 std::string literal(F v, const char* suffix) {
