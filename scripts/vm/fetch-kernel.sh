@@ -18,7 +18,12 @@ if complete; then
   exit 0
 fi
 
-pkg=$(apt-cache depends linux-image-amd64 2>/dev/null | awk '/Depends: linux-image-[0-9]/ {print $2; exit}')
+resolve() { apt-cache depends linux-image-amd64 2>/dev/null | awk '/Depends: linux-image-[0-9]/ {print $2; exit}'; }
+pkg=$(resolve)
+if [[ -z $pkg ]]; then  # no package lists yet (packages installed, lists cleaned): fetch them once
+  apt-get update -q >&2 || true
+  pkg=$(resolve)
+fi
 if [[ -z $pkg ]]; then
   echo "fetch-kernel: cannot resolve the kernel package behind linux-image-amd64 (run apt-get update?)" >&2
   exit 1
