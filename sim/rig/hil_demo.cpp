@@ -13,6 +13,7 @@
 #include "plot/gnuplot.hpp"
 #include "posix/posix_clock.hpp"
 #include "proto/rig_link.hpp"
+#include "rig/reference_model.hpp"
 #include "rig/scripted_rig.hpp"
 #include "socketcan/socketcan_bus.hpp"
 #include "stub/sim_clock.hpp"
@@ -79,14 +80,8 @@ DemoResult co_simulate(const DemoSettings& s, NodeRuntime& runtime, ClockT& cloc
     for (std::size_t i = 0; i < cfg.wheels; ++i) {
       row.in[i] = seen.wheels[i];
       row.can[i] = outputs.wheels[i];
-      mf::MfInput<double> in;
-      in.fz_n = static_cast<double>(seen.wheels[i].fz_n);
-      in.kappa = static_cast<double>(seen.wheels[i].kappa);
-      in.alpha_rad = static_cast<double>(seen.wheels[i].alpha_rad);
-      in.gamma_rad = static_cast<double>(seen.wheels[i].gamma_rad);
-      in.vx_mps = static_cast<double>(seen.wheels[i].vx_mps);
       const mf::MfOutput<double> ref =
-          mf::evaluate(runtime.tyre_parameters(), in, runtime.tyre_options());
+          reference_output(runtime.tyre_parameters(), seen.wheels[i], runtime.tyre_options());
       row.fx_ref[i] = ref.fx_n;
       row.fy_ref[i] = ref.fy_n;
       row.mz_ref[i] = ref.mz_nm;

@@ -10,6 +10,7 @@
 #include "mf/mf_parameters_from_tir.hpp"
 #include "posix/posix_clock.hpp"
 #include "proto/rig_link.hpp"
+#include "rig/reference_model.hpp"
 #include "socketcan/socketcan_bus.hpp"
 
 namespace tread::host {
@@ -51,13 +52,7 @@ RigReport run_rig(const RigSettings& s) {
   }
   std::array<mf::MfOutput<double>, proto::kMaxWheels> reference{};
   for (std::size_t i = 0; i < s.wheels; ++i) {
-    mf::MfInput<double> in;
-    in.fz_n = static_cast<double>(quantised.wheels[i].fz_n);
-    in.kappa = static_cast<double>(quantised.wheels[i].kappa);
-    in.alpha_rad = static_cast<double>(quantised.wheels[i].alpha_rad);
-    in.gamma_rad = static_cast<double>(quantised.wheels[i].gamma_rad);
-    in.vx_mps = static_cast<double>(quantised.wheels[i].vx_mps);
-    reference[i] = mf::evaluate(loaded.params, in, options);
+    reference[i] = reference_output(loaded.params, quantised.wheels[i], options);
   }
 
   RigReport r;

@@ -8,6 +8,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "fit/lateral_start.hpp"
 #include "fit/mf_lateral_fit.hpp"
 #include "golden_path.hpp"
 #include "mf/mf_evaluate.hpp"
@@ -31,21 +32,7 @@ double fy(const mf::MfParameters<double>& p, double fz, double alpha) {
 void BM_Mf61PureLateralFit5000(benchmark::State& state) {
   const auto path = tread::testing::refdata("tir/MagicFormula61_Parameters.tir");
   const mf::MfParameters<double> truth = mf::load_mf_parameters(path).params;
-  mf::MfParameters<double> start = truth;
-  const mf::MfParameters<double> book;
-  start.pcy1 = book.pcy1;
-  start.pdy1 = book.pdy1;
-  start.pdy2 = book.pdy2;
-  start.pey1 = book.pey1;
-  start.pey2 = book.pey2;
-  start.pey3 = book.pey3;
-  start.pky1 = book.pky1;
-  start.pky2 = book.pky2;
-  start.pky4 = book.pky4;
-  start.phy1 = book.phy1;
-  start.phy2 = book.phy2;
-  start.pvy1 = book.pvy1;
-  start.pvy2 = book.pvy2;
+  const mf::MfParameters<double> start = tread::testing::book_lateral_start(truth);
   std::mt19937_64 rng(5);
   std::normal_distribution<double> normal(0.0, 1.0);
   fit::MeasurementSet data;

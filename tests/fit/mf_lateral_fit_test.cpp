@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <random>
 
+#include "fit/lateral_start.hpp"
 #include "golden_path.hpp"
 #include "mf/mf_evaluate.hpp"
 #include "mf/mf_parameters_from_tir.hpp"
@@ -41,21 +42,7 @@ TEST(MfLateralFit, RecoversMf61PureLateralFromNeutralStart) {
   ASSERT_TRUE(std::filesystem::exists(path)) << path;
   const mf::MfParameters<double> truth = mf::load_mf_parameters(path).params;
   // Neutral start: the file's non-lateral data (FNOMIN, scalings), book-default lateral terms.
-  mf::MfParameters<double> start = truth;
-  const mf::MfParameters<double> book;
-  start.pcy1 = book.pcy1;
-  start.pdy1 = book.pdy1;
-  start.pdy2 = book.pdy2;
-  start.pey1 = book.pey1;
-  start.pey2 = book.pey2;
-  start.pey3 = book.pey3;
-  start.pky1 = book.pky1;
-  start.pky2 = book.pky2;
-  start.pky4 = book.pky4;
-  start.phy1 = book.phy1;
-  start.phy2 = book.phy2;
-  start.pvy1 = book.pvy1;
-  start.pvy2 = book.pvy2;
+  const mf::MfParameters<double> start = tread::testing::book_lateral_start(truth);
 
   std::mt19937_64 rng(11);
   std::normal_distribution<double> normal(0.0, 1.0);
