@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "fit/mf_stage_fit.hpp"
 #include "fit/simple_fit.hpp"
 #include "mf/mf_evaluate.hpp"
 
@@ -26,48 +27,6 @@ std::array<T*, kN> lateral_members(mf::MfParameters<T>& p) {
           &p.pky2, &p.pky4, &p.phy1, &p.phy2, &p.pvy1, &p.pvy2};
 }
 
-struct Sample {
-  double fz_n, alpha_rad, vx_mps, fy_n;
-};
-
-struct LateralResidual {
-  const mf::MfParameters<double>* base;
-  const std::vector<Sample>* samples;
-  double inv_scale;
-  mf::MfOptions options;
-  template <typename T>
-  bool operator()(const T* const k, T* residual) const {
-    mf::MfParameters<T> p = mf::convert_parameters<T>(*base);
-    const std::array<T*, kN> members = lateral_members(p);
-    for (int i = 0; i < kN; ++i) *members[static_cast<std::size_t>(i)] = k[i];
-    for (std::size_t i = 0; i < samples->size(); ++i) {
-      const Sample& s = (*samples)[i];
-      mf::MfInput<T> in;
-      in.fz_n = T(s.fz_n);
-      in.alpha_rad = T(s.alpha_rad);
-      in.vx_mps = T(s.vx_mps);
-      residual[i] = (mf::evaluate(p, in, options).fy_n - T(s.fy_n)) * T(inv_scale);
-    }
-    return true;
-  }
-};
-
-class Progress : public ceres::IterationCallback {
- public:
-  explicit Progress(const std::function<void(const std::string&)>& f) : f_(f) {}
-  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
-    if (f_) {
-      std::ostringstream line;
-      line << "iteration " << s.iteration << ": cost " << s.cost;
-      f_(line.str());
-    }
-    return ceres::SOLVER_CONTINUE;
-  }
-
- private:
-  const std::function<void(const std::string&)>& f_;
-};
-
 struct KyaResidual {
   double fz_over_fz0, kya_over_fz0;
   template <typename T>
@@ -79,25 +38,9 @@ struct KyaResidual {
   }
 };
 
-/// Least-squares line v = a + b·u; b = 0 with a single point.
-std::pair<double, double> line_fit(const std::vector<double>& u, const std::vector<double>& v) {
-  const double n = static_cast<double>(u.size());
-  double su = 0, sv = 0, suu = 0, suv = 0;
-  for (std::size_t i = 0; i < u.size(); ++i) {
-    su += u[i];
-    sv += v[i];
-    suu += u[i] * u[i];
-    suv += u[i] * v[i];
-  }
-  const double den = n * suu - su * su;
-  const double b = u.size() > 1 && std::fabs(den) > 0.0 ? (n * suv - su * sv) / den : 0.0;
-  return {(sv - b * su) / n, b};
-}
+}  // namespace
 
-/// The practitioners' first stage: basic-formula fits per load (Stage 1) give C, μ = |D|/Fz,
-/// Kya = BCD, E, SH, SV/Fz per load; lines over dfz and a small fit of Kya(Fz) turn them into
-/// starting coefficients.
-void staged_start(const MeasurementSet& data, mf::MfParameters<double>& p) {
+void lateral_staged_start(const MeasurementSet& data, mf::MfParameters<double>& p) {
   MeasurementSet lateral;
   lateral.source = data.source;
   for (const auto& m : data.points) {
@@ -126,11 +69,11 @@ void staged_start(const MeasurementSet& data, mf::MfParameters<double>& p) {
   double csum = 0.0;
   for (double v : c) csum += v;
   p.pcy1 = csum / static_cast<double>(c.size());
-  std::tie(p.pdy1, p.pdy2) = line_fit(dfz, mu);
-  std::tie(p.pey1, p.pey2) = line_fit(dfz, e);
+  std::tie(p.pdy1, p.pdy2) = fit_line(dfz, mu);
+  std::tie(p.pey1, p.pey2) = fit_line(dfz, e);
   p.pey3 = 0.0;
-  std::tie(p.phy1, p.phy2) = line_fit(dfz, sh);
-  std::tie(p.pvy1, p.pvy2) = line_fit(dfz, svfz);
+  std::tie(p.phy1, p.phy2) = fit_line(dfz, sh);
+  std::tie(p.pvy1, p.pvy2) = fit_line(dfz, svfz);
   // Kya/Fz0 = PKY1 sin(PKY4 atan(Fz/(PKY2 Fz0))): a few starts for PKY2, best kept.
   double best = std::numeric_limits<double>::infinity();
   for (double pky2 : {1.0, 2.0, 3.0, 5.0}) {
@@ -159,95 +102,74 @@ void staged_start(const MeasurementSet& data, mf::MfParameters<double>& p) {
   }
 }
 
-}  // namespace
-
 LateralFit fit_mf_pure_lateral(const MeasurementSet& data, const mf::MfParameters<double>& start,
                                const std::function<void(const std::string&)>& progress) {
-  std::vector<Sample> samples;
-  double scale = 0.0;
-  for (const auto& p : data.points) {
-    if (std::fabs(p.kappa) > 1e-3 || std::fabs(p.gamma_rad) > 1e-3 || !std::isfinite(p.fy_n)) {
-      continue;
-    }
-    samples.push_back({p.fz_n, p.alpha_rad, p.vx_mps, p.fy_n});
-    scale = std::max(scale, std::fabs(p.fy_n));
-  }
+  const std::vector<double> levels = load_levels(data);
+  const std::vector<StageSample> samples =
+      select_samples(data, levels, FitChannel::fy, [](const MeasurementPoint& m) {
+        return std::fabs(m.kappa) <= kPureTolerance && std::fabs(m.gamma_rad) <= kPureTolerance;
+      });
   if (samples.size() <= static_cast<std::size_t>(kN)) {
     throw std::runtime_error(data.source +
                              ": too few pure lateral points (|kappa|, |gamma| <= "
                              "1e-3 with Fy_N) for the MF lateral fit");
   }
-  if (!(scale > 0.0)) scale = 1.0;
   LateralFit fit;
   fit.params = start;
-  staged_start(data, fit.params);
-  std::array<double, kN> k{};
-  {
-    const std::array<double*, kN> m = lateral_members(fit.params);
-    for (std::size_t i = 0; i < k.size(); ++i) k[i] = *m[i];
-  }
-  mf::MfOptions options;
-  options.combined = false;
-  options.extras = false;
-
-  auto build = [&](ceres::Problem& problem) {
-    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<LateralResidual, ceres::DYNAMIC, kN>(
-                                 new LateralResidual{&fit.params, &samples, 1.0 / scale, options},
-                                 static_cast<int>(samples.size())),
-                             nullptr, k.data());
-    problem.SetParameterLowerBound(k.data(), 0, 1.0 + 1e-6);  // PCY1
-    problem.SetParameterUpperBound(k.data(), 0, 3.0);
-    problem.SetParameterUpperBound(k.data(), 3, 1.0);  // PEY1
-  };
-  ceres::Problem problem;
-  build(problem);
-  ceres::Solver::Options so;
-  so.linear_solver_type = ceres::DENSE_QR;
-  so.max_num_iterations = 100;
-  so.function_tolerance = 1e-9;
-  so.gradient_tolerance = 1e-14;
-  so.parameter_tolerance = 1e-10;
-  so.num_threads = 1;
-  so.logging_type = ceres::SILENT;
-  Progress callback(progress);
-  so.callbacks.push_back(&callback);
-  ceres::Solver::Summary summary;
-  ceres::Solve(so, &problem, &summary);
-  fit.iterations = static_cast<int>(summary.iterations.size());
-  fit.converged = summary.termination_type == ceres::CONVERGENCE;
-  {
-    const std::array<double*, kN> m = lateral_members(fit.params);
-    for (std::size_t i = 0; i < k.size(); ++i) *m[i] = k[i];
-  }
+  lateral_staged_start(data, fit.params);
+  StageSpec spec;
+  spec.name = "Fy0 (gamma = 0)";
+  spec.keys.assign(kLateralCoefficientNames.begin(), kLateralCoefficientNames.end());
+  const StageResult r = fit_stage(spec, samples, levels, fit.params, progress);
+  for (std::size_t i = 0; i < fit.stddev.size(); ++i) fit.stddev[i] = r.stddev[i];
+  fit.iterations = r.iterations;
+  fit.converged = r.converged;
   fit.points = samples.size();
-  const double n = static_cast<double>(samples.size());
-  fit.rms_n = std::sqrt(2.0 * summary.final_cost / n) * scale;
-  double mean = 0.0;
-  for (const auto& s : samples) mean += s.fy_n;
-  mean /= n;
-  double ss_tot = 0.0;
-  for (const auto& s : samples) ss_tot += (s.fy_n - mean) * (s.fy_n - mean);
-  fit.r2 = ss_tot > 0.0 ? 1.0 - fit.rms_n * fit.rms_n * n / ss_tot
-                        : std::numeric_limits<double>::quiet_NaN();
-
-  fit.stddev.fill(std::numeric_limits<double>::quiet_NaN());
-  ceres::Covariance::Options co;
-  co.algorithm_type = ceres::DENSE_SVD;
-  // Pure-lateral data at γ = 0 can leave a direction nearly flat (e.g. Ey at its clamp): the
-  // pseudo-inverse drops it instead of failing, so the others still get a standard deviation.
-  co.null_space_rank = -1;
-  co.num_threads = 1;
-  ceres::Covariance covariance(co);
-  const std::vector<std::pair<const double*, const double*>> blocks = {{k.data(), k.data()}};
-  std::array<double, kN * kN> c{};
-  if (covariance.Compute(blocks, &problem) &&
-      covariance.GetCovarianceBlock(k.data(), k.data(), c.data())) {
-    const double s2 = 2.0 * summary.final_cost / (n - kN);
-    for (std::size_t i = 0; i < k.size(); ++i) {
-      fit.stddev[i] = std::sqrt(std::max(0.0, c[i * kN + i] * s2));
-    }
+  double ss_res = 0.0, sum = 0.0, sum2 = 0.0;
+  for (const auto& s : samples) {
+    const double d = model_value(fit.params, s) - s.value;
+    ss_res += d * d;
+    sum += s.value;
+    sum2 += s.value * s.value;
   }
+  const double n = static_cast<double>(samples.size());
+  fit.rms_n = std::sqrt(ss_res / n);
+  const double ss_tot = sum2 - sum * sum / n;
+  fit.r2 = ss_tot > 0.0 ? 1.0 - ss_res / ss_tot : std::numeric_limits<double>::quiet_NaN();
   return fit;
+}
+
+std::vector<std::string> lateral_camber_keys(MfFitModel model) {
+  if (model == MfFitModel::mf61) {
+    return {"PDY3", "PEY4", "PEY5", "PKY3", "PKY5", "PKY6", "PKY7", "PVY3", "PVY4"};
+  }
+  return {"PDY3", "PEY4", "PKY3", "PHY3", "PVY3", "PVY4"};
+}
+
+std::vector<StageResult> fit_lateral_stages(
+    const MeasurementSet& data, const std::vector<double>& levels, MfFitModel model,
+    mf::MfParameters<double>& params, const std::function<void(const std::string&)>& progress) {
+  std::vector<StageResult> results;
+  lateral_staged_start(data, params);
+  StageSpec flat{"Fy0 (gamma = 0)", {}, 100};
+  flat.keys.assign(kLateralCoefficientNames.begin(), kLateralCoefficientNames.end());
+  results.push_back(fit_stage(flat,
+                              select_samples(data, levels, FitChannel::fy,
+                                             [](const MeasurementPoint& m) {
+                                               return std::fabs(m.kappa) <= kPureTolerance &&
+                                                      std::fabs(m.gamma_rad) <= kPureTolerance;
+                                             }),
+                              levels, params, progress));
+  const std::vector<StageSample> cambered = select_samples(
+      data, levels, FitChannel::fy,
+      [](const MeasurementPoint& m) { return std::fabs(m.kappa) <= kPureTolerance; });
+  bool any_camber = false;
+  for (const auto& s : cambered) any_camber = any_camber || std::fabs(s.gamma_rad) > kPureTolerance;
+  if (any_camber) {
+    results.push_back(fit_stage({"Fy0 (camber)", lateral_camber_keys(model), 100}, cambered, levels,
+                                params, progress));
+  }
+  return results;
 }
 
 std::array<double, kLateralCoefficientCount> lateral_values(const LateralFit& fit) {

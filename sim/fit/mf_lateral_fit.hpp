@@ -12,8 +12,10 @@
 #include <functional>
 #include <iosfwd>
 #include <string>
+#include <vector>
 
 #include "fit/measurement.hpp"
+#include "fit/mf_stage_fit.hpp"
 #include "mf/mf_parameters.hpp"
 #include "tir/tir_file.hpp"
 
@@ -35,6 +37,21 @@ struct LateralFit {
   /// direction can keep the solver creeping while the curves no longer change.
   bool converged = false;
 };
+
+/// Starting values of the 13 γ-free coefficients from Stage 1 (basic-formula fits per load of the
+/// pure lateral points at γ = 0): C, μ(dfz), E(dfz), SH(dfz), SV/Fz(dfz) lines, Kya(Fz) fitted.
+void lateral_staged_start(const MeasurementSet& data, mf::MfParameters<double>& p);
+
+/// The camber coefficients of the pure lateral force: MF 6.1 PDY3, PEY4, PEY5, PKY3, PKY5, PKY6,
+/// PKY7, PVY3, PVY4; PAC2002 / MF 5.2 PDY3, PEY4, PKY3, PHY3, PVY3, PVY4.
+std::vector<std::string> lateral_camber_keys(MfFitModel model);
+
+/// The pure lateral stages on `params`: the 13 γ-free coefficients on the points at κ = 0, γ = 0
+/// (after lateral_staged_start), then the camber coefficients on the points at κ = 0 and every
+/// camber (skipped without cambered points).
+std::vector<StageResult> fit_lateral_stages(
+    const MeasurementSet& data, const std::vector<double>& levels, MfFitModel model,
+    mf::MfParameters<double>& params, const std::function<void(const std::string&)>& progress);
 
 /// `progress` (may be empty) receives one line per solver iteration.
 LateralFit fit_mf_pure_lateral(const MeasurementSet& data, const mf::MfParameters<double>& start,

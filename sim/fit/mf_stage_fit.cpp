@@ -1,0 +1,297 @@
+#include "fit/mf_stage_fit.hpp"
+
+#include <ceres/ceres.h>
+#include <ceres/dynamic_autodiff_cost_function.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <utility>
+
+#include "fit/mf_coefficients.hpp"
+#include "mf/mf_evaluate.hpp"
+
+namespace tread::fit {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// Derivatives per Jet pass: up to 16 coefficients per stage take one pass through the core.
+constexpr int kStride = 16;
+
+template <typename T>
+T channel_value(const mf::MfOutput<T>& out, FitChannel c) {
+  switch (c) {
+    case FitChannel::fx:
+      return out.fx_n;
+    case FitChannel::fy:
+      return out.fy_n;
+    case FitChannel::mz:
+      return out.mz_nm;
+  }
+  return out.fy_n;
+}
+
+/// All samples of a stage in one cost function: one Jet pass through the core per sample.
+struct StageResidual {
+  const mf::MfParameters<double>* base;
+  const std::vector<StageSample>* samples;
+  const std::vector<int>* indices;
+  mf::MfOptions options;
+  template <typename T>
+  bool operator()(T const* const* k, T* residual) const {
+    mf::MfParameters<T> p = mf::convert_parameters<T>(*base);
+    for (std::size_t i = 0; i < indices->size(); ++i) coefficient(p, (*indices)[i]) = k[0][i];
+    for (std::size_t i = 0; i < samples->size(); ++i) {
+      const StageSample& s = (*samples)[i];
+      mf::MfInput<T> in;
+      in.fz_n = T(s.fz_n);
+      in.kappa = T(s.kappa);
+      in.alpha_rad = T(s.alpha_rad);
+      // The combined Mz takes αt,eq = atan(sqrt(tan²αt + (Kxκ/Kyα·κ)²))·sgn αt: sqrt has no
+      // derivative at 0, so a point at α = κ = 0 with SHt = 0 (the book start) gives a NaN
+      // Jacobian. Such points are evaluated 1e-9 rad off the origin (a change of ~1e-9 relative).
+      if (s.channel == FitChannel::mz && !(std::fabs(s.alpha_rad) > 0.0)) in.alpha_rad = T(1e-9);
+      in.gamma_rad = T(s.gamma_rad);
+      in.vx_mps = T(s.vx_mps);
+      residual[i] =
+          (channel_value(mf::evaluate(p, in, options), s.channel) - T(s.value)) * T(s.weight);
+    }
+    return true;
+  }
+};
+
+class Progress : public ceres::IterationCallback {
+ public:
+  Progress(std::string stage, const std::function<void(const std::string&)>& f)
+      : stage_(std::move(stage)), f_(f) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    if (f_) {
+      std::ostringstream line;
+      line << stage_ << ": iteration " << s.iteration << ", cost " << s.cost << ", |step| "
+           << s.step_norm;
+      f_(line.str());
+    }
+    return ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  std::string stage_;
+  const std::function<void(const std::string&)>& f_;
+};
+
+}  // namespace
+
+std::pair<double, double> fit_line(const std::vector<double>& u, const std::vector<double>& v) {
+  const double n = static_cast<double>(u.size());
+  double su = 0, sv = 0, suu = 0, suv = 0;
+  for (std::size_t i = 0; i < u.size(); ++i) {
+    su += u[i];
+    sv += v[i];
+    suu += u[i] * u[i];
+    suv += u[i] * v[i];
+  }
+  const double den = n * suu - su * su;
+  const double b = u.size() > 1 && std::fabs(den) > 0.0 ? (n * suv - su * sv) / den : 0.0;
+  return {(sv - b * su) / n, b};
+}
+
+const char* fit_channel_name(FitChannel c) {
+  switch (c) {
+    case FitChannel::fx:
+      return "Fx";
+    case FitChannel::fy:
+      return "Fy";
+    case FitChannel::mz:
+      return "Mz";
+  }
+  return "?";
+}
+
+const char* fit_channel_unit(FitChannel c) {
+  return c == FitChannel::mz ? "Nm" : "N";
+}
+
+mf::MfOptions fit_options() {
+  mf::MfOptions o;
+  o.use_limits = true;
+  o.combined = true;
+  o.extras = false;
+  return o;
+}
+
+double model_value(const mf::MfParameters<double>& p, const StageSample& s) {
+  mf::MfInput<double> in;
+  in.fz_n = s.fz_n;
+  in.kappa = s.kappa;
+  in.alpha_rad = s.alpha_rad;
+  in.gamma_rad = s.gamma_rad;
+  in.vx_mps = s.vx_mps;
+  return channel_value(mf::evaluate(p, in, fit_options()), s.channel);
+}
+
+std::vector<double> load_levels(const MeasurementSet& data) {
+  std::vector<double> fz;
+  for (const auto& p : data.points) fz.push_back(p.fz_n);
+  std::sort(fz.begin(), fz.end());
+  std::vector<double> levels;
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < fz.size(); ++i) {
+    if (count > 0 && fz[i] - fz[i - 1] > 0.1 * std::max(std::fabs(fz[i]), 1.0)) {
+      levels.push_back(sum / static_cast<double>(count));
+      sum = 0.0;
+      count = 0;
+    }
+    sum += fz[i];
+    ++count;
+  }
+  if (count > 0) levels.push_back(sum / static_cast<double>(count));
+  return levels;
+}
+
+std::size_t nearest_level(const std::vector<double>& levels, double fz_n) {
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < levels.size(); ++i) {
+    if (std::fabs(levels[i] - fz_n) < std::fabs(levels[best] - fz_n)) best = i;
+  }
+  return best;
+}
+
+std::vector<StageSample> select_samples(const MeasurementSet& data,
+                                        const std::vector<double>& levels, FitChannel channel,
+                                        const std::function<bool(const MeasurementPoint&)>& keep) {
+  std::vector<StageSample> out;
+  std::vector<double> peak(levels.size(), 0.0);
+  for (const auto& m : data.points) {
+    const double v =
+        channel == FitChannel::fx ? m.fx_n : (channel == FitChannel::fy ? m.fy_n : m.mz_nm);
+    if (!std::isfinite(v) || !keep(m)) continue;
+    StageSample s;
+    s.fz_n = m.fz_n;
+    s.kappa = m.kappa;
+    s.alpha_rad = m.alpha_rad;
+    s.gamma_rad = m.gamma_rad;
+    s.vx_mps = m.vx_mps;
+    s.channel = channel;
+    s.value = v;
+    s.load_level = levels.empty() ? 0 : nearest_level(levels, m.fz_n);
+    if (s.load_level < peak.size()) peak[s.load_level] = std::max(peak[s.load_level], std::fabs(v));
+    out.push_back(s);
+  }
+  for (auto& s : out) {
+    const double p = s.load_level < peak.size() ? peak[s.load_level] : 0.0;
+    s.weight = p > 0.0 ? 1.0 / p : 1.0;
+  }
+  return out;
+}
+
+std::vector<ChannelLoadStats> channel_load_stats(const mf::MfParameters<double>& params,
+                                                 const std::vector<StageSample>& samples,
+                                                 const std::vector<double>& levels) {
+  std::vector<ChannelLoadStats> stats;
+  for (FitChannel c : {FitChannel::fx, FitChannel::fy, FitChannel::mz}) {
+    for (std::size_t level = 0; level < std::max<std::size_t>(levels.size(), 1); ++level) {
+      double ss_res = 0.0, sum = 0.0, sum2 = 0.0;
+      std::size_t n = 0;
+      for (const auto& s : samples) {
+        if (s.channel != c || s.load_level != level) continue;
+        const double r = model_value(params, s) - s.value;
+        ss_res += r * r;
+        sum += s.value;
+        sum2 += s.value * s.value;
+        ++n;
+      }
+      if (n == 0) continue;
+      const double nn = static_cast<double>(n);
+      const double ss_tot = sum2 - sum * sum / nn;
+      ChannelLoadStats st;
+      st.channel = c;
+      st.fz_n = levels.empty() ? 0.0 : levels[level];
+      st.points = n;
+      st.rms = std::sqrt(ss_res / nn);
+      st.r2 = ss_tot > 0.0 ? 1.0 - ss_res / ss_tot : kNaN;
+      stats.push_back(st);
+    }
+  }
+  return stats;
+}
+
+StageResult fit_stage(const StageSpec& spec, const std::vector<StageSample>& samples,
+                      const std::vector<double>& levels, mf::MfParameters<double>& params,
+                      const std::function<void(const std::string&)>& progress) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::size_t n = spec.keys.size();
+  if (samples.size() <= n) {
+    throw std::runtime_error(spec.name + ": " + std::to_string(samples.size()) + " points for " +
+                             std::to_string(n) + " coefficients");
+  }
+  std::vector<int> indices;
+  for (const auto& key : spec.keys) indices.push_back(required_coefficient_index(key));
+  StageResult result;
+  result.name = spec.name;
+  result.keys = spec.keys;
+  result.points = samples.size();
+  std::vector<double> k(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    k[i] = coefficient(params, indices[i]);
+    // Start inside the bounds.
+    const CoefficientBounds b = coefficient_bounds(spec.keys[i]);
+    k[i] = std::min(std::max(k[i], b.lower), b.upper);
+  }
+  result.start = k;
+  const mf::MfParameters<double> base = params;
+
+  auto* cost = new ceres::DynamicAutoDiffCostFunction<StageResidual, kStride>(
+      new StageResidual{&base, &samples, &indices, fit_options()});
+  cost->AddParameterBlock(static_cast<int>(n));
+  cost->SetNumResiduals(static_cast<int>(samples.size()));
+  ceres::Problem problem;
+  problem.AddResidualBlock(cost, nullptr, k.data());
+  for (std::size_t i = 0; i < n; ++i) {
+    const CoefficientBounds b = coefficient_bounds(spec.keys[i]);
+    if (std::isfinite(b.lower))
+      problem.SetParameterLowerBound(k.data(), static_cast<int>(i), b.lower);
+    if (std::isfinite(b.upper))
+      problem.SetParameterUpperBound(k.data(), static_cast<int>(i), b.upper);
+  }
+  ceres::Solver::Options so;
+  so.linear_solver_type = ceres::DENSE_QR;
+  so.max_num_iterations = spec.max_iterations;
+  so.function_tolerance = 1e-9;
+  so.gradient_tolerance = 1e-14;
+  so.parameter_tolerance = 1e-10;
+  so.num_threads = 1;
+  so.logging_type = ceres::SILENT;
+  Progress callback(spec.name, progress);
+  so.callbacks.push_back(&callback);
+  ceres::Solver::Summary summary;
+  ceres::Solve(so, &problem, &summary);
+  result.iterations = static_cast<int>(summary.iterations.size());
+  result.converged = summary.termination_type == ceres::CONVERGENCE;
+  result.values = k;
+  for (std::size_t i = 0; i < n; ++i) coefficient(params, indices[i]) = k[i];
+
+  result.stddev.assign(n, kNaN);
+  ceres::Covariance::Options co;
+  co.algorithm_type = ceres::DENSE_SVD;
+  co.null_space_rank = -1;  // flat directions (a coefficient without effect on these points)
+  co.num_threads = 1;
+  ceres::Covariance covariance(co);
+  const std::vector<std::pair<const double*, const double*>> blocks = {{k.data(), k.data()}};
+  std::vector<double> c(n * n);
+  if (covariance.Compute(blocks, &problem) &&
+      covariance.GetCovarianceBlock(k.data(), k.data(), c.data())) {
+    // The residuals are weighted: the variance of a weighted residual scales the covariance.
+    const double s2 = 2.0 * summary.final_cost / static_cast<double>(samples.size() - n);
+    for (std::size_t i = 0; i < n; ++i)
+      result.stddev[i] = std::sqrt(std::max(0.0, c[i * n + i] * s2));
+  }
+  result.stats = channel_load_stats(params, samples, levels);
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return result;
+}
+
+}  // namespace tread::fit

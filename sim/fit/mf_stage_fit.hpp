@@ -1,0 +1,98 @@
+#pragma once
+// One stage of the staged Magic Formula fit: a separate Ceres problem over a named subset of the
+// coefficients, every other coefficient held at its current value, evaluated through the templated
+// core (tread::mf::evaluate<ceres::Jet>, combined slip on, limits on, no extras: what a rig
+// measures) — no second copy of the equations. The longitudinal, lateral, aligning and combined
+// stages (mf_longitudinal_fit.cpp, ...) only choose the coefficients and the points; this file
+// solves, bounds (coefficient_bounds), reports progress (one line per iteration), the standard
+// deviations (Ceres covariance, pseudo-inverse for flat directions, scaled by the residual
+// variance) and RMS / R² per channel and load. Host side: allocates, throws.
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "fit/measurement.hpp"
+#include "mf/mf_options.hpp"
+#include "mf/mf_parameters.hpp"
+
+namespace tread::fit {
+
+/// Which coefficient set is fitted: MF 6.1 (also for MF 6.2 files: the same force and moment
+/// equations) or PAC2002 (also MF-Tyre 5.2: the equations the core shares for both).
+enum class MfFitModel { mf61, pac2002 };
+
+/// |slip| (and |γ| in rad) up to which a point counts as pure slip / zero camber.
+inline constexpr double kPureTolerance = 1e-3;
+
+/// Least-squares line v = a + b·u as {a, b}; b = 0 with a single point.
+std::pair<double, double> fit_line(const std::vector<double>& u, const std::vector<double>& v);
+
+enum class FitChannel { fx, fy, mz };
+const char* fit_channel_name(FitChannel c);  ///< "Fx", "Fy", "Mz"
+const char* fit_channel_unit(FitChannel c);  ///< "N", "N", "Nm"
+
+/// One measured value of one channel at one operating point.
+struct StageSample {
+  double fz_n = 0.0, kappa = 0.0, alpha_rad = 0.0, gamma_rad = 0.0, vx_mps = 0.0;
+  FitChannel channel = FitChannel::fy;
+  double value = 0.0;
+  double weight = 1.0;  ///< the residual is (model − value)·weight
+  std::size_t load_level = 0;
+};
+
+/// The options every stage evaluates the core with (and the report and plots use).
+mf::MfOptions fit_options();
+/// The core's value of `channel` at the sample's inputs.
+double model_value(const mf::MfParameters<double>& p, const StageSample& s);
+
+/// Load levels: clusters of Fz (sorted values jumping by more than 10 %), their mean loads.
+std::vector<double> load_levels(const MeasurementSet& data);
+std::size_t nearest_level(const std::vector<double>& levels, double fz_n);
+
+/// The points of `data` with a finite value in `channel` for which `keep` holds, weighted by
+/// 1 / (largest |value| of that channel at that load among the kept points), so each load counts
+/// in relative terms.
+std::vector<StageSample> select_samples(const MeasurementSet& data,
+                                        const std::vector<double>& levels, FitChannel channel,
+                                        const std::function<bool(const MeasurementPoint&)>& keep);
+
+struct ChannelLoadStats {
+  FitChannel channel = FitChannel::fy;
+  double fz_n = 0.0;
+  std::size_t points = 0;
+  double rms = 0.0;  ///< N or Nm
+  double r2 = 0.0;
+};
+
+struct StageResult {
+  std::string name;
+  std::vector<std::string> keys;
+  std::vector<double> start, values, stddev;  ///< stddev NaN where not available
+  std::size_t points = 0;
+  int iterations = 0;
+  bool converged = false;  ///< Ceres reported convergence (false: iteration limit)
+  double seconds = 0.0;
+  std::vector<ChannelLoadStats> stats;
+};
+
+struct StageSpec {
+  std::string name;
+  std::vector<std::string> keys;  ///< .tir keys of the coefficients freed
+  int max_iterations = 100;
+};
+
+/// Fits spec.keys to `samples` starting from (and writing back into) `params`. Throws
+/// std::runtime_error if there are not more samples than coefficients.
+StageResult fit_stage(const StageSpec& spec, const std::vector<StageSample>& samples,
+                      const std::vector<double>& levels, mf::MfParameters<double>& params,
+                      const std::function<void(const std::string&)>& progress);
+
+/// RMS and R² per channel and load of `params` on `samples`.
+std::vector<ChannelLoadStats> channel_load_stats(const mf::MfParameters<double>& params,
+                                                 const std::vector<StageSample>& samples,
+                                                 const std::vector<double>& levels);
+
+}  // namespace tread::fit
