@@ -1,6 +1,7 @@
 #include "proto/e2e_profile1.hpp"
 
 #include <array>
+#include <cstring>
 #include <span>
 
 #include "proto/crc8_j1850.hpp"
@@ -8,11 +9,16 @@
 namespace tread::proto {
 
 std::uint8_t e2e_crc(const CanFrame& frame, std::uint16_t data_id) noexcept {
-  const std::array<std::uint8_t, 2> id{static_cast<std::uint8_t>(data_id & 0xFFU),
-                                       static_cast<std::uint8_t>(data_id >> 8U)};
-  const std::uint8_t head = crc8_sae_j1850(id);
-  const std::size_t len = frame.len > 1U ? frame.len : 1U;
-  return crc8_sae_j1850(std::span<const std::uint8_t>(frame.data.data() + 1, len - 1U), head);
+  // One pass over [data ID low, data ID high, bytes 1..n-1] (the CRC's sliced loop runs 8 bytes
+  // per step: a classic frame is one step and one byte).
+  std::array<std::uint8_t, 2U + sizeof(frame.data)> buffer;  // only [0, len + 1) is read
+  buffer[0] = static_cast<std::uint8_t>(data_id & 0xFFU);
+  buffer[1] = static_cast<std::uint8_t>(data_id >> 8U);
+  const std::size_t len = frame.len > frame.data.size() ? frame.data.size()
+                          : frame.len > 1U              ? frame.len
+                                                        : 1U;
+  std::memcpy(buffer.data() + 2, frame.data.data() + 1, len - 1U);
+  return crc8_sae_j1850(std::span<const std::uint8_t>(buffer.data(), len + 1U));
 }
 
 void e2e_protect(CanFrame& frame, std::uint16_t data_id, std::uint8_t counter) noexcept {

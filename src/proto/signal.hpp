@@ -2,6 +2,8 @@
 // One CAN signal: Intel (little-endian, DBC "@1") bit layout, scaling and limits, as a DBC defines
 // it.
 
+#include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 
@@ -123,35 +125,100 @@ struct SignalSpec {
   }
 };
 
+/// Bits not on whole bytes (the out-of-line part of put_raw / get_raw).
+void put_raw_bits(std::span<std::uint8_t> data, std::uint16_t start_bit, std::uint8_t length,
+                  std::uint64_t raw) noexcept;
+[[nodiscard]] std::uint64_t get_raw_bits(std::span<const std::uint8_t> data,
+                                         std::uint16_t start_bit, std::uint8_t length) noexcept;
+
+// The per-signal functions below are inline: the codec calls them for every signal of every frame
+// (about 90 per node cycle), and a whole-byte signal then costs a handful of instructions.
+
 /// Writes `raw` (its low `length` bits) at `start_bit`, Intel order. The caller checked the bounds.
-void put_raw(std::span<std::uint8_t> data, std::uint16_t start_bit, std::uint8_t length,
-             std::uint64_t raw) noexcept;
+inline void put_raw(std::span<std::uint8_t> data, std::uint16_t start_bit, std::uint8_t length,
+                    std::uint64_t raw) noexcept {
+  if ((start_bit % 8U) == 0U && (length % 8U) == 0U) {  // whole bytes: the common case
+    for (std::size_t i = start_bit / 8U, n = length / 8U; n > 0U; --n, ++i) {
+      data[i] = static_cast<std::uint8_t>(raw & 0xFFU);
+      raw >>= 8U;
+    }
+    return;
+  }
+  put_raw_bits(data, start_bit, length, raw);
+}
 
 /// Reads `length` bits at `start_bit`, Intel order, zero-extended.
-[[nodiscard]] std::uint64_t get_raw(std::span<const std::uint8_t> data, std::uint16_t start_bit,
-                                    std::uint8_t length) noexcept;
+[[nodiscard]] inline std::uint64_t get_raw(std::span<const std::uint8_t> data,
+                                           std::uint16_t start_bit, std::uint8_t length) noexcept {
+  if ((start_bit % 8U) == 0U && (length % 8U) == 0U) {  // whole bytes: the common case
+    std::uint64_t raw = 0;
+    for (std::size_t i = (start_bit + length) / 8U; i-- > start_bit / 8U;) {
+      raw = (raw << 8U) | data[i];
+    }
+    return raw;
+  }
+  return get_raw_bits(data, start_bit, length);
+}
+
+/// Integer signals (counters, masks, flags): the raw value saturated to the signal's range.
+/// @retval Status::out_of_range  saturated
+inline Status encode_raw_signal(const SignalSpec& spec, std::int64_t raw,
+                                std::span<std::uint8_t> data) noexcept {
+  Status status = Status::ok;
+  if (raw < spec.raw_min()) {
+    raw = spec.raw_min();
+    status = Status::out_of_range;
+  } else if (raw > spec.raw_max()) {
+    raw = spec.raw_max();
+    status = Status::out_of_range;
+  }
+  const std::uint64_t mask = (std::uint64_t{1} << spec.length) - 1U;
+  put_raw(data, spec.start_bit, spec.length, static_cast<std::uint64_t>(raw) & mask);
+  return status;
+}
+
+/// The raw value, sign-extended for signed signals.
+[[nodiscard]] inline std::int64_t decode_raw_signal(const SignalSpec& spec,
+                                                    std::span<const std::uint8_t> data) noexcept {
+  const std::uint64_t bits = get_raw(data, spec.start_bit, spec.length);
+  if (spec.is_signed && ((bits >> (spec.length - 1U)) & 1U) != 0U) {
+    return static_cast<std::int64_t>(bits) - (std::int64_t{1} << spec.length);
+  }
+  return static_cast<std::int64_t>(bits);
+}
 
 /// Encodes a physical value: rounds to the nearest raw step (halves away from zero) and saturates
 /// to the raw range. A non-finite value encodes as 0 (physical `offset`).
 /// @retval Status::ok            encoded exactly within half a step
 /// @retval Status::out_of_range  saturated, or the value was not finite
-Status encode_signal(const SignalSpec& spec, float value, std::span<std::uint8_t> data) noexcept;
+inline Status encode_signal(const SignalSpec& spec, float value,
+                            std::span<std::uint8_t> data) noexcept {
+  if (!std::isfinite(value)) {
+    static_cast<void>(encode_raw_signal(spec, 0, data));
+    return Status::out_of_range;
+  }
+  const float steps = (value - spec.offset_f) * spec.inverse_factor_f;
+  // Compare in float before converting: the float may be far outside any integer range.
+  if (steps < static_cast<float>(spec.raw_min())) {
+    static_cast<void>(encode_raw_signal(spec, spec.raw_min(), data));
+    return Status::out_of_range;
+  }
+  if (steps > static_cast<float>(spec.raw_max())) {
+    static_cast<void>(encode_raw_signal(spec, spec.raw_max(), data));
+    return Status::out_of_range;
+  }
+  // Round half away from zero (no libm call on the hot path). float(raw_max) may round up past
+  // raw_max for long signals; encode_raw_signal saturates exactly.
+  const auto raw = steps >= 0.0F ? static_cast<std::int64_t>(steps + 0.5F)
+                                 : -static_cast<std::int64_t>(0.5F - steps);
+  static_cast<void>(encode_raw_signal(spec, raw, data));
+  return Status::ok;
+}
 
 /// Decodes a physical value.
-[[nodiscard]] float decode_signal(const SignalSpec& spec,
-                                  std::span<const std::uint8_t> data) noexcept;
-
-}  // namespace tread::proto
-
-namespace tread::proto {
-
-/// Integer signals (counters, masks, flags): the raw value saturated to the signal's range.
-/// @retval Status::out_of_range  saturated
-Status encode_raw_signal(const SignalSpec& spec, std::int64_t raw,
-                         std::span<std::uint8_t> data) noexcept;
-
-/// The raw value, sign-extended for signed signals.
-[[nodiscard]] std::int64_t decode_raw_signal(const SignalSpec& spec,
-                                             std::span<const std::uint8_t> data) noexcept;
+[[nodiscard]] inline float decode_signal(const SignalSpec& spec,
+                                         std::span<const std::uint8_t> data) noexcept {
+  return static_cast<float>(decode_raw_signal(spec, data)) * spec.factor_f + spec.offset_f;
+}
 
 }  // namespace tread::proto
