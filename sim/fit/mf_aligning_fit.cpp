@@ -69,8 +69,10 @@ std::vector<StageResult> fit_aligning_stages(
   bool any_camber = false;
   for (const auto& s : cambered) any_camber = any_camber || std::fabs(s.gamma_rad) > kPureTolerance;
   if (any_camber) {
-    results.push_back(fit_stage({"Mz0 (camber)", aligning_camber_keys(model), 100}, cambered,
-                                levels, params, progress));
+    std::vector<std::string> all_keys = aligning_keys();
+    for (auto& k : aligning_camber_keys(model)) all_keys.push_back(k);
+    results.push_back(
+        fit_stage({"Mz0 (all cambers)", all_keys, 200}, cambered, levels, params, progress));
   }
   return results;
 }

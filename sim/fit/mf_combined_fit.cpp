@@ -36,12 +36,20 @@ std::vector<StageResult> fit_combined_stages(
   const std::vector<StageSample> fy = select_samples(data, levels, FitChannel::fy, combined_point);
   const std::vector<StageSample> mz = select_samples(data, levels, FitChannel::mz, combined_point);
   if (fx.size() > combined_fx_keys(model).size()) {
-    results.push_back(
-        fit_stage({"Fx (combined)", combined_fx_keys(model), 100}, fx, levels, params, progress));
+    results.push_back(fit_stage(
+        {"Fx (combined)",
+         combined_fx_keys(model),
+         100,
+         {{{"RBX1", 15.0}, {"RBX2", 15.0}}, {{"RBX1", 25.0}, {"RBX2", 25.0}, {"REX1", -1.0}}}},
+        fx, levels, params, progress));
   }
   if (fy.size() > combined_fy_keys(model).size()) {
-    results.push_back(
-        fit_stage({"Fy (combined)", combined_fy_keys(model), 100}, fy, levels, params, progress));
+    results.push_back(fit_stage(
+        {"Fy (combined)",
+         combined_fy_keys(model),
+         100,
+         {{{"RBY1", 10.0}, {"RBY2", 10.0}}, {{"RBY1", 25.0}, {"RBY2", 15.0}, {"REY1", 0.5}}}},
+        fy, levels, params, progress));
   }
   if (mz.size() > combined_mz_keys().size()) {
     results.push_back(

@@ -4,7 +4,8 @@
 // functions Gxα of Fx (RBX1, RBX2, RCX1, REX1, REX2, RHX1; MF 6.1 also RBX3) and Gyκ with the
 // κ-induced side force SVyκ of Fy (RBY1…3, RCY1, REY1, REY2, RHY1, RHY2, RVY1…6; MF 6.1 also
 // RBY4) on the points with both slips non-zero, then the Fx moment arm of Mz (SSZ1…4) on the
-// Mz of those points. Starting values: the current (book) ones. Host side.
+// Mz of those points. Starting values: the current (book) ones and, for Gxα and Gyκ, two more
+// (steeper weighting functions; the lowest cost wins). Host side.
 
 #include <functional>
 #include <string>

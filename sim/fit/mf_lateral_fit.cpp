@@ -166,8 +166,12 @@ std::vector<StageResult> fit_lateral_stages(
   bool any_camber = false;
   for (const auto& s : cambered) any_camber = any_camber || std::fabs(s.gamma_rad) > kPureTolerance;
   if (any_camber) {
-    results.push_back(fit_stage({"Fy0 (camber)", lateral_camber_keys(model), 100}, cambered, levels,
-                                params, progress));
+    // Then the camber terms together with the γ-free ones on every camber: the γ-free
+    // coefficients shape every cambered curve too, so all the points refine them.
+    std::vector<std::string> all_keys = flat.keys;
+    for (auto& k : lateral_camber_keys(model)) all_keys.push_back(k);
+    results.push_back(
+        fit_stage({"Fy0 (all cambers)", all_keys, 200}, cambered, levels, params, progress));
   }
   return results;
 }

@@ -68,10 +68,12 @@ std::vector<StageResult> fit_longitudinal_stages(
   bool any_camber = false;
   for (const auto& s : cambered) any_camber = any_camber || std::fabs(s.gamma_rad) > kPureTolerance;
   // PDX3 (μx with γ²) is the only camber term of Fx0, in both coefficient sets (PAC2002 scales
-  // γ by LGAX).
+  // γ by LGAX); it is fitted together with the γ-free terms on every camber.
   if (any_camber) {
+    std::vector<std::string> all_keys = longitudinal_keys();
+    all_keys.emplace_back("PDX3");
     results.push_back(
-        fit_stage({"Fx0 (camber)", {"PDX3"}, 100}, cambered, levels, params, progress));
+        fit_stage({"Fx0 (all cambers)", all_keys, 200}, cambered, levels, params, progress));
   }
   return results;
 }

@@ -243,20 +243,23 @@ StageResult fit_stage(const StageSpec& spec, const std::vector<StageSample>& sam
   }
   result.start = k;
   const mf::MfParameters<double> base = params;
-
-  auto* cost = new ceres::DynamicAutoDiffCostFunction<StageResidual, kStride>(
-      new StageResidual{&base, &samples, &indices, fit_options()});
-  cost->AddParameterBlock(static_cast<int>(n));
-  cost->SetNumResiduals(static_cast<int>(samples.size()));
-  ceres::Problem problem;
-  problem.AddResidualBlock(cost, nullptr, k.data());
-  for (std::size_t i = 0; i < n; ++i) {
-    const CoefficientBounds b = coefficient_bounds(spec.keys[i]);
-    if (std::isfinite(b.lower))
-      problem.SetParameterLowerBound(k.data(), static_cast<int>(i), b.lower);
-    if (std::isfinite(b.upper))
-      problem.SetParameterUpperBound(k.data(), static_cast<int>(i), b.upper);
-  }
+  const StageResidual residual{&base, &samples, &indices, fit_options()};
+  auto make_problem = [&](ceres::Problem& problem, std::vector<double>& x) {
+    auto* cost =
+        new ceres::DynamicAutoDiffCostFunction<StageResidual, kStride>(new StageResidual(residual));
+    cost->AddParameterBlock(static_cast<int>(n));
+    cost->SetNumResiduals(static_cast<int>(samples.size()));
+    problem.AddResidualBlock(cost, nullptr, x.data());
+    for (std::size_t i = 0; i < n; ++i) {
+      const CoefficientBounds b = coefficient_bounds(spec.keys[i]);
+      if (std::isfinite(b.lower)) {
+        problem.SetParameterLowerBound(x.data(), static_cast<int>(i), b.lower);
+      }
+      if (std::isfinite(b.upper)) {
+        problem.SetParameterUpperBound(x.data(), static_cast<int>(i), b.upper);
+      }
+    }
+  };
   ceres::Solver::Options so;
   so.linear_solver_type = ceres::DENSE_QR;
   so.max_num_iterations = spec.max_iterations;
@@ -267,12 +270,37 @@ StageResult fit_stage(const StageSpec& spec, const std::vector<StageSample>& sam
   so.logging_type = ceres::SILENT;
   Progress callback(spec.name, progress);
   so.callbacks.push_back(&callback);
-  ceres::Solver::Summary summary;
-  ceres::Solve(so, &problem, &summary);
-  result.iterations = static_cast<int>(summary.iterations.size());
-  result.converged = summary.termination_type == ceres::CONVERGENCE;
+
+  std::vector<std::vector<double>> starts = {k};
+  for (const auto& other : spec.other_starts) {
+    std::vector<double> x = k;
+    for (const auto& [key, v] : other) {
+      for (std::size_t i = 0; i < n; ++i) {
+        if (spec.keys[i] == key) x[i] = v;
+      }
+    }
+    starts.push_back(x);
+  }
+  double best_cost = std::numeric_limits<double>::infinity();
+  ceres::Solver::Summary best;
+  for (auto& x : starts) {
+    ceres::Problem problem;
+    make_problem(problem, x);
+    ceres::Solver::Summary summary;
+    ceres::Solve(so, &problem, &summary);
+    if (summary.IsSolutionUsable() && summary.final_cost < best_cost) {
+      best_cost = summary.final_cost;
+      best = summary;
+      k = x;
+    }
+  }
+  result.iterations = static_cast<int>(best.iterations.size());
+  result.converged = best.termination_type == ceres::CONVERGENCE;
   result.values = k;
   for (std::size_t i = 0; i < n; ++i) coefficient(params, indices[i]) = k[i];
+  ceres::Problem problem;
+  make_problem(problem, k);
+  const double final_cost = best_cost;
 
   result.stddev.assign(n, kNaN);
   ceres::Covariance::Options co;
@@ -285,7 +313,7 @@ StageResult fit_stage(const StageSpec& spec, const std::vector<StageSample>& sam
   if (covariance.Compute(blocks, &problem) &&
       covariance.GetCovarianceBlock(k.data(), k.data(), c.data())) {
     // The residuals are weighted: the variance of a weighted residual scales the covariance.
-    const double s2 = 2.0 * summary.final_cost / static_cast<double>(samples.size() - n);
+    const double s2 = 2.0 * final_cost / static_cast<double>(samples.size() - n);
     for (std::size_t i = 0; i < n; ++i)
       result.stddev[i] = std::sqrt(std::max(0.0, c[i * n + i] * s2));
   }

@@ -82,6 +82,9 @@ struct StageSpec {
   std::string name;
   std::vector<std::string> keys;  ///< .tir keys of the coefficients freed
   int max_iterations = 100;
+  /// Further starts (each: coefficients set differently from the current values); the solution
+  /// with the lowest cost is kept. Deterministic.
+  std::vector<std::vector<std::pair<std::string, double>>> other_starts = {};
 };
 
 /// Fits spec.keys to `samples` starting from (and writing back into) `params`. Throws

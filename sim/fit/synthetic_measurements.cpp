@@ -13,10 +13,17 @@
 namespace tread::fit {
 namespace {
 
-std::vector<double> sweep(double max, double step) {
+/// −max…max in `step`, and in step/4 where |x| < fine (the stiffness region).
+std::vector<double> sweep(double max, double step, double fine) {
   std::vector<double> v;
   const long n = std::lround(max / step);
-  for (long i = -n; i <= n; ++i) v.push_back(static_cast<double>(i) * step);
+  for (long i = -n; i <= n; ++i) {
+    const double x = static_cast<double>(i) * step;
+    v.push_back(x);
+    if (i < n && std::fabs(x + 0.5 * step) < fine) {
+      for (int j = 1; j < 4; ++j) v.push_back(x + 0.25 * step * j);
+    }
+  }
   return v;
 }
 
@@ -44,8 +51,9 @@ std::vector<MeasurementPoint> synthetic_inputs(const mf::MfParameters<double>& t
     m.vx_mps = grid.vx_mps;
     points.push_back(m);
   };
-  const std::vector<double> kappas = sweep(grid.kappa_max, grid.kappa_step);
-  const std::vector<double> alphas = sweep(grid.alpha_max_rad, grid.alpha_step_rad);
+  const std::vector<double> kappas = sweep(grid.kappa_max, grid.kappa_step, grid.fine_range);
+  const std::vector<double> alphas =
+      sweep(grid.alpha_max_rad, grid.alpha_step_rad, grid.fine_range);
   for (double factor : grid.load_factors) {
     const double fz = std::min(factor * truth.fnomin_n, truth.fzmax_n);
     for (double gamma : grid.cambers_rad) {

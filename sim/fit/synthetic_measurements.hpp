@@ -21,6 +21,8 @@ struct SyntheticGrid {
   std::vector<double> load_factors = {0.5, 1.0, 1.5};  ///< × FNOMIN (limited to FZMAX)
   double kappa_max = 0.3, kappa_step = 0.01;
   double alpha_max_rad = 0.3, alpha_step_rad = 0.01;
+  /// Within |κ|, |α| < fine_range the sweeps step a quarter as far (the slip stiffnesses).
+  double fine_range = 0.05;
   std::vector<double> cambers_rad = {-0.08, -0.04, 0.0, 0.04, 0.08};  ///< limited to CAMMIN/MAX
   std::vector<double> combined_alphas_rad = {-0.1, 0.04, 0.1};        ///< of the combined κ sweeps
   std::vector<double> combined_kappas = {-0.1, 0.04, 0.1};            ///< of the combined α sweeps
