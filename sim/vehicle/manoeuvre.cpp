@@ -146,7 +146,16 @@ std::vector<ManoeuvreResult> BrakingManoeuvre::results(const Trace& trace) const
   if (trace.empty()) return out;
   const double v0 = trace.front().state.vx_mps;
   const auto speed = [](const TraceSample& s) { return s.state.vx_mps; };
-  const auto distance = [](const TraceSample& s) { return s.state.x_m; };
+  // Distance travelled: the trapezoid of the speed over time (exact for a speed linear within a
+  // step; the position of the symplectic step lags it by dt·Δv/2).
+  std::vector<double> travelled(trace.size(), 0.0);
+  for (std::size_t i = 1; i < trace.size(); ++i) {
+    travelled[i] = travelled[i - 1] + 0.5 * (trace[i].state.vx_mps + trace[i - 1].state.vx_mps) *
+                                          (trace[i].t_s - trace[i - 1].t_s);
+  }
+  const auto distance = [&trace, &travelled](const TraceSample& s) {
+    return travelled[static_cast<std::size_t>(&s - trace.data())];
+  };
   const double t80 = crossing_time(trace, 0.0, 0.8 * v0, false, speed);
   const double t10 = crossing_time(trace, 0.0, 0.1 * v0, false, speed);
   const double s80 = value_at(trace, t80, distance);

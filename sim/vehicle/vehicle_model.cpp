@@ -106,10 +106,15 @@ void VehicleModel::step(const std::array<WheelForces, kWheelCount>& forces,
   const double ay = fy_sum / m;
   const double yaw_acc = mz_sum / p_.yaw_inertia_kgm2;
 
-  // Velocities (body axes rotate with r).
-  const double vx = s_.vx_mps + dt_s * (ax + s_.yaw_rate_radps * s_.vy_mps);
-  const double vy = s_.vy_mps + dt_s * (ay - s_.yaw_rate_radps * s_.vx_mps);
+  // Velocities. The body axes turn by r·dt over the step: the velocity vector is rotated exactly
+  // by −r·dt (r at the middle of the step), which keeps its magnitude (an explicit r·v term would
+  // grow it by (r·dt)²/2 per step), then the accelerations are added.
   const double r = s_.yaw_rate_radps + dt_s * yaw_acc;
+  const double turn = 0.5 * (s_.yaw_rate_radps + r) * dt_s;
+  const double ct = std::cos(turn);
+  const double st = std::sin(turn);
+  const double vx = ct * s_.vx_mps + st * s_.vy_mps + dt_s * ax;
+  const double vy = -st * s_.vx_mps + ct * s_.vy_mps + dt_s * ay;
 
   // Wheel spin: drive torque and the tyre's reaction, then the brake as a friction torque.
   for (std::size_t i = 0; i < kWheelCount; ++i) {
