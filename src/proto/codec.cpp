@@ -1,5 +1,6 @@
 #include "proto/codec.hpp"
 
+#include <array>
 #include <concepts>
 #include <type_traits>
 
@@ -14,67 +15,105 @@ std::size_t index_of(const MessageSpec& m, const SignalSpec& s, std::size_t coun
   return idx < count ? idx : count - 1U;
 }
 
-// A physical (float) field of the data model, or nullptr for integer-valued roles.
-template <typename D>
-requires std::same_as<std::remove_const_t<D>, RigData>
-auto float_field(D& d, const MessageSpec& m, const SignalSpec& s) noexcept
-    -> decltype(&d.wheels[0].kappa) {
-  auto& w = d.wheels[index_of(m, s, kMaxWheels)];
-  auto& ws = d.wheelsets[index_of(m, s, kMaxWheelsets)];
-  switch (s.role) {
+// Where each role's physical (float) value lives in the data model: a member of a wheel or of a
+// wheelset (or neither: an integer-valued role). Tables indexed by role, built at compile time, so
+// the per-signal lookup is a load instead of a switch.
+constexpr std::size_t kRoleCount = static_cast<std::size_t>(Role::node_clamp_mask) + 1U;
+
+template <typename Wheel, typename Wheelset>
+struct FloatMember {
+  float Wheel::*wheel = nullptr;
+  float Wheelset::*wheelset = nullptr;
+};
+
+using RigMember = FloatMember<WheelInput, WheelsetInput>;
+using NodeMember = FloatMember<WheelOutput, WheelsetOutput>;
+
+constexpr RigMember rig_member(Role role) noexcept {
+  switch (role) {
     case Role::kappa:
-      return &w.kappa;
+      return {&WheelInput::kappa, nullptr};
     case Role::alpha:
-      return &w.alpha_rad;
+      return {&WheelInput::alpha_rad, nullptr};
     case Role::gamma:
-      return &w.gamma_rad;
+      return {&WheelInput::gamma_rad, nullptr};
     case Role::fz:
-      return &w.fz_n;
+      return {&WheelInput::fz_n, nullptr};
     case Role::vx:
-      return &w.vx_mps;
+      return {&WheelInput::vx_mps, nullptr};
     case Role::omega:
-      return &w.omega_radps;
+      return {&WheelInput::omega_radps, nullptr};
     case Role::ws_lateral:
-      return &ws.lateral_mm;
+      return {nullptr, &WheelsetInput::lateral_mm};
     case Role::ws_yaw:
-      return &ws.yaw_rad;
+      return {nullptr, &WheelsetInput::yaw_rad};
     default:
-      return nullptr;
+      return {};
   }
 }
 
-template <typename D>
-requires std::same_as<std::remove_const_t<D>, NodeData>
-auto float_field(D& d, const MessageSpec& m, const SignalSpec& s) noexcept
-    -> decltype(&d.wheels[0].fx_n) {
-  auto& w = d.wheels[index_of(m, s, kMaxWheels)];
-  auto& ws = d.wheelsets[index_of(m, s, kMaxWheelsets)];
-  switch (s.role) {
+constexpr NodeMember node_member(Role role) noexcept {
+  switch (role) {
     case Role::fx:
-      return &w.fx_n;
+      return {&WheelOutput::fx_n, nullptr};
     case Role::fy:
-      return &w.fy_n;
+      return {&WheelOutput::fy_n, nullptr};
     case Role::mz:
-      return &w.mz_nm;
+      return {&WheelOutput::mz_nm, nullptr};
     case Role::mx:
-      return &w.mx_nm;
+      return {&WheelOutput::mx_nm, nullptr};
     case Role::my:
-      return &w.my_nm;
+      return {&WheelOutput::my_nm, nullptr};
     case Role::rl:
-      return &w.rl_m;
+      return {&WheelOutput::rl_m, nullptr};
     case Role::r_left:
-      return &ws.r_left_mm;
+      return {nullptr, &WheelsetOutput::r_left_mm};
     case Role::r_right:
-      return &ws.r_right_mm;
+      return {nullptr, &WheelsetOutput::r_right_mm};
     case Role::delta_r:
-      return &ws.delta_r_mm;
+      return {nullptr, &WheelsetOutput::delta_r_mm};
     case Role::gamma_left:
-      return &ws.gamma_left_rad;
+      return {nullptr, &WheelsetOutput::gamma_left_rad};
     case Role::gamma_right:
-      return &ws.gamma_right_rad;
+      return {nullptr, &WheelsetOutput::gamma_right_rad};
     default:
-      return nullptr;
+      return {};
   }
+}
+
+template <typename Member, Member (*member_of)(Role)>
+constexpr std::array<Member, kRoleCount> make_members() noexcept {
+  std::array<Member, kRoleCount> table{};
+  for (std::size_t r = 0; r < kRoleCount; ++r) table[r] = member_of(static_cast<Role>(r));
+  return table;
+}
+
+constexpr auto kRigMembers = make_members<RigMember, rig_member>();
+constexpr auto kNodeMembers = make_members<NodeMember, node_member>();
+
+template <typename D>
+constexpr const auto& members_for() noexcept {
+  if constexpr (std::same_as<std::remove_const_t<D>, RigData>) {
+    return kRigMembers;
+  } else {
+    return kNodeMembers;
+  }
+}
+
+// A physical (float) field of the data model, or nullptr for integer-valued roles.
+template <typename D>
+requires std::same_as<std::remove_const_t<D>, RigData> ||
+    std::same_as<std::remove_const_t<D>, NodeData>
+auto float_field(D& d, const MessageSpec& m, const SignalSpec& s) noexcept
+    -> decltype(&(d.wheels[0].*members_for<D>()[0].wheel)) {
+  const auto& member = members_for<D>()[static_cast<std::size_t>(s.role)];
+  if (member.wheel != nullptr) {
+    return &(d.wheels[index_of(m, s, kMaxWheels)].*member.wheel);
+  }
+  if (member.wheelset != nullptr) {
+    return &(d.wheelsets[index_of(m, s, kMaxWheelsets)].*member.wheelset);
+  }
+  return nullptr;
 }
 
 // Integer-valued roles: read (get) or write (set) through one accessor.

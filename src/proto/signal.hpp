@@ -93,6 +93,15 @@ struct SignalSpec {
   float factor_f;  ///< factor and offset as float for the real-time path
   float offset_f;
   float inverse_factor_f;  ///< 1 / factor, so encoding multiplies
+  // Derived once, at compile time, for the per-frame path:
+  std::int64_t raw_min_value;  ///< raw_min()
+  std::int64_t raw_max_value;  ///< raw_max()
+  float raw_min_f;             ///< raw_min() as float (exact: |raw_min| ≤ 2^31)
+  float raw_max_f;             ///< raw_max() as float (may round up for 32-bit signals)
+  std::uint64_t raw_mask;      ///< the low `length` bits
+  bool whole_bytes;            ///< starts on a byte and spans whole bytes
+  std::uint8_t first_byte;     ///< start_bit / 8
+  std::uint8_t byte_count;     ///< length / 8 when whole_bytes
 
   constexpr SignalSpec() : SignalSpec(Role::crc, "", -1, 0, 8, false, 1.0, 0.0, "") {}
   constexpr SignalSpec(Role role_, const char* name_, std::int8_t instance_, std::uint16_t start,
@@ -109,14 +118,18 @@ struct SignalSpec {
         unit(unit_),
         factor_f(static_cast<float>(factor_)),
         offset_f(static_cast<float>(offset_)),
-        inverse_factor_f(static_cast<float>(1.0 / factor_)) {}
+        inverse_factor_f(static_cast<float>(1.0 / factor_)),
+        raw_min_value(signed_ ? -(std::int64_t{1} << (len - 1U)) : 0),
+        raw_max_value(signed_ ? (std::int64_t{1} << (len - 1U)) - 1 : (std::int64_t{1} << len) - 1),
+        raw_min_f(static_cast<float>(raw_min_value)),
+        raw_max_f(static_cast<float>(raw_max_value)),
+        raw_mask((std::uint64_t{1} << len) - 1U),
+        whole_bytes((start % 8U) == 0U && (len % 8U) == 0U),
+        first_byte(static_cast<std::uint8_t>(start / 8U)),
+        byte_count(static_cast<std::uint8_t>(len / 8U)) {}
 
-  [[nodiscard]] constexpr std::int64_t raw_min() const noexcept {
-    return is_signed ? -(std::int64_t{1} << (length - 1U)) : 0;
-  }
-  [[nodiscard]] constexpr std::int64_t raw_max() const noexcept {
-    return is_signed ? (std::int64_t{1} << (length - 1U)) - 1 : (std::int64_t{1} << length) - 1;
-  }
+  [[nodiscard]] constexpr std::int64_t raw_min() const noexcept { return raw_min_value; }
+  [[nodiscard]] constexpr std::int64_t raw_max() const noexcept { return raw_max_value; }
   [[nodiscard]] constexpr double physical_min() const noexcept {
     return static_cast<double>(raw_min()) * factor + offset;
   }
@@ -172,15 +185,34 @@ inline Status encode_raw_signal(const SignalSpec& spec, std::int64_t raw,
     raw = spec.raw_max();
     status = Status::out_of_range;
   }
-  const std::uint64_t mask = (std::uint64_t{1} << spec.length) - 1U;
-  put_raw(data, spec.start_bit, spec.length, static_cast<std::uint64_t>(raw) & mask);
+  auto bits = static_cast<std::uint64_t>(raw) & spec.raw_mask;
+  if (spec.whole_bytes && spec.byte_count == 2U) {  // most signals: straight-line stores
+    data[spec.first_byte] = static_cast<std::uint8_t>(bits & 0xFFU);
+    data[spec.first_byte + 1U] = static_cast<std::uint8_t>((bits >> 8U) & 0xFFU);
+  } else if (spec.whole_bytes) {
+    for (std::size_t i = spec.first_byte, n = spec.byte_count; n > 0U; --n, ++i) {
+      data[i] = static_cast<std::uint8_t>(bits & 0xFFU);
+      bits >>= 8U;
+    }
+  } else {
+    put_raw_bits(data, spec.start_bit, spec.length, bits);
+  }
   return status;
 }
 
 /// The raw value, sign-extended for signed signals.
 [[nodiscard]] inline std::int64_t decode_raw_signal(const SignalSpec& spec,
                                                     std::span<const std::uint8_t> data) noexcept {
-  const std::uint64_t bits = get_raw(data, spec.start_bit, spec.length);
+  std::uint64_t bits = 0;
+  if (spec.whole_bytes && spec.byte_count == 2U) {
+    bits = (std::uint64_t{data[spec.first_byte + 1U]} << 8U) | data[spec.first_byte];
+  } else if (spec.whole_bytes) {
+    for (std::size_t i = spec.first_byte + spec.byte_count; i-- > spec.first_byte;) {
+      bits = (bits << 8U) | data[i];
+    }
+  } else {
+    bits = get_raw_bits(data, spec.start_bit, spec.length);
+  }
   if (spec.is_signed && ((bits >> (spec.length - 1U)) & 1U) != 0U) {
     return static_cast<std::int64_t>(bits) - (std::int64_t{1} << spec.length);
   }
@@ -199,11 +231,11 @@ inline Status encode_signal(const SignalSpec& spec, float value,
   }
   const float steps = (value - spec.offset_f) * spec.inverse_factor_f;
   // Compare in float before converting: the float may be far outside any integer range.
-  if (steps < static_cast<float>(spec.raw_min())) {
+  if (steps < spec.raw_min_f) {
     static_cast<void>(encode_raw_signal(spec, spec.raw_min(), data));
     return Status::out_of_range;
   }
-  if (steps > static_cast<float>(spec.raw_max())) {
+  if (steps > spec.raw_max_f) {
     static_cast<void>(encode_raw_signal(spec, spec.raw_max(), data));
     return Status::out_of_range;
   }
