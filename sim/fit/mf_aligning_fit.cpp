@@ -72,7 +72,7 @@ std::vector<StageResult> fit_aligning_stages(
     std::vector<std::string> all_keys = aligning_keys();
     for (auto& k : aligning_camber_keys(model)) all_keys.push_back(k);
     results.push_back(
-        fit_stage({"Mz0 (all cambers)", all_keys, 200}, cambered, levels, params, progress));
+        fit_stage({"Mz0 (all cambers)", all_keys, 100}, cambered, levels, params, progress));
   }
   return results;
 }

@@ -171,7 +171,7 @@ std::vector<StageResult> fit_lateral_stages(
     std::vector<std::string> all_keys = flat.keys;
     for (auto& k : lateral_camber_keys(model)) all_keys.push_back(k);
     results.push_back(
-        fit_stage({"Fy0 (all cambers)", all_keys, 200}, cambered, levels, params, progress));
+        fit_stage({"Fy0 (all cambers)", all_keys, 100}, cambered, levels, params, progress));
   }
   return results;
 }

@@ -73,7 +73,7 @@ std::vector<StageResult> fit_longitudinal_stages(
     std::vector<std::string> all_keys = longitudinal_keys();
     all_keys.emplace_back("PDX3");
     results.push_back(
-        fit_stage({"Fx0 (all cambers)", all_keys, 200}, cambered, levels, params, progress));
+        fit_stage({"Fx0 (all cambers)", all_keys, 100}, cambered, levels, params, progress));
   }
   return results;
 }
