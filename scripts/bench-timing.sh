@@ -32,7 +32,7 @@ awk '
 
 echo
 echo "== tread node: SCHED_FIFO 80, mlockall, 1 kHz, 4 tyres + 2 wheelsets, ${seconds} s =="
-build/host/sim/tread demo --duration-s "$seconds" --rt-priority 80 --mlock --no-plot --out build/bench-demo |
+build/host/sim/tread demo --scenario sweep --sweep-duration-s "$seconds" --rt-priority 80 --mlock --no-plot --out build/bench-demo |
   grep -E "wake latency|cycle time|overruns|cycles|scheduler|mlockall|refused"
 
 echo

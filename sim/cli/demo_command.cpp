@@ -1,4 +1,4 @@
-// `tread demo`: the README's main job — node + scripted rig on the in-process CAN bus (or --can
+// `tread demo`: the README's main job — node + rig scenarios on the in-process CAN bus (or --can
 // vcan0), summary, trace and plots.
 #include <iostream>
 
@@ -25,7 +25,14 @@ void add_demo_command(CLI::App& app) {
   demo->add_option("--clock", clock, "posix (real time) or sim (as fast as possible)")
       ->check(CLI::IsMember({"posix", "sim"}))
       ->capture_default_str();
-  demo->add_option("--duration-s", settings.duration_s, "simulated time")->capture_default_str();
+  demo->add_option(
+          "--scenario", settings.scenarios,
+          "scenarios to run, in order (default: braking, step-steer, sine-dwell with 4 "
+          "wheels; hunting with wheelsets): braking, step-steer, sine-dwell, hunting, sweep")
+      ->delimiter(',');
+  demo->add_option("--sweep-duration-s", settings.sweep_duration_s,
+                   "length of the 'sweep' scenario (tyre test machine sweeps)")
+      ->capture_default_str();
   demo->add_option("--period-us", settings.period_us, "cycle period")->capture_default_str();
   demo->add_option("--out", settings.out_dir, "directory for the trace and plots")
       ->capture_default_str();

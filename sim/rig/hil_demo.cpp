@@ -2,19 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 #include <ostream>
 #include <stdexcept>
 
+#include "contact/contact_setup.hpp"
 #include "loop/loop_runner.hpp"
-#include "mf/mf_evaluate.hpp"
 #include "node/candump_log.hpp"
-#include "plot/gnuplot.hpp"
 #include "posix/posix_clock.hpp"
-#include "proto/rig_link.hpp"
-#include "rig/reference_model.hpp"
-#include "rig/scripted_rig.hpp"
+#include "rig/scenario_catalogue.hpp"
 #include "socketcan/socketcan_bus.hpp"
 #include "stub/sim_clock.hpp"
 #include "stub/stub_can_bus.hpp"
@@ -22,21 +18,43 @@
 namespace tread::host {
 namespace {
 
-struct TraceRow {
-  double t_s;
-  proto::WheelInput in[proto::kMaxWheels];
-  proto::WheelOutput can[proto::kMaxWheels];
-  double fx_ref[proto::kMaxWheels];
-  double fy_ref[proto::kMaxWheels];
-  double mz_ref[proto::kMaxWheels];
-  float y_mm[proto::kMaxWheelsets];
-  float dr_mm[proto::kMaxWheelsets];
-};
+ScenarioContext context_of(const DemoSettings& s) {
+  ScenarioContext c;
+  c.tir = s.node.tir;
+  c.wheels = s.node.node.wheels;
+  c.wheelsets = s.node.node.wheelsets;
+  c.wheelset_profile = s.node.wheelset_profile;
+  c.wheelset_ymax_mm = s.node.wheelset_ymax_mm;
+  c.wheelset_step_mm = s.node.wheelset_step_mm;
+  c.sweep_duration_s = s.sweep_duration_s;
+  c.period_s = static_cast<double>(s.period_us) * 1e-6;
+  return c;
+}
 
 template <typename ClockT, typename NodeBus, typename RigBus>
 DemoResult co_simulate(const DemoSettings& s, NodeRuntime& runtime, ClockT& clock,
                        NodeBus& node_bus, RigBus& rig_bus) {
   const node::NodeConfig& cfg = runtime.node().config();
+  const ScenarioContext context = context_of(s);
+  const std::vector<std::string> names =
+      s.scenarios.empty() ? default_scenarios(context) : s.scenarios;
+  std::vector<std::unique_ptr<RigScenario>> scenarios;
+  for (const std::string& n : names) {
+    scenarios.push_back(make_scenario(n, context));  // all built (and checked) before the loop
+  }
+  contact::ContactTable contact_reference;
+  RigReference reference;
+  if (cfg.wheels > 0) {
+    reference.tyre = &runtime.tyre_parameters();
+    reference.options = runtime.tyre_options();
+  }
+  if (cfg.wheelsets > 0) {
+    contact_reference =
+        contact::build_contact(parse_wheelset_profile(s.node.wheelset_profile))
+            .table(-s.node.wheelset_ymax_mm, s.node.wheelset_ymax_mm, s.node.wheelset_step_mm);
+    reference.contact = &contact_reference;
+  }
+
   CandumpWriter writer;
   CandumpRecorder recorder;
   if (!s.log.empty()) {
@@ -48,143 +66,51 @@ DemoResult co_simulate(const DemoSettings& s, NodeRuntime& runtime, ClockT& cloc
   loop_config.period_ns = s.period_us * 1000;
   hal::LoopRunner loop(runtime.node(), node_bus, clock, pin, loop_config, recorder);
   proto::RigLink link(cfg.layout, cfg.wheels, cfg.wheelsets);
-  const ScriptedRig rig;
-  const auto cycles =
-      static_cast<std::uint64_t>(s.duration_s * 1e6 / static_cast<double>(s.period_us));
-  std::vector<TraceRow> trace;
-  trace.reserve(cycles);
-  DemoResult result;
-  std::array<proto::CanFrame, proto::RigLink::kMaxRigFrames> frames{};
-  proto::NodeData outputs{};
-  for (std::uint64_t c = 0; c < cycles; ++c) {
-    const double t = static_cast<double>(c) * static_cast<double>(s.period_us) * 1e-6;
-    const proto::RigData inputs = rig.inputs_at(t, static_cast<std::uint32_t>(c));
-    const std::size_t n = link.encode_cycle(inputs, frames);
-    for (std::size_t k = 0; k < n; ++k) {
-      static_cast<void>(rig_bus.send(frames[k]));
-    }
-    loop.run_periodic_cycle();
-    // The node's answer of this cycle (SocketCAN delivers within microseconds; poll briefly).
-    std::size_t got = 0;
-    const std::int64_t give_up = clock.now_ns() + 200'000;
-    proto::CanFrame f{};
-    do {
-      while (rig_bus.receive(f) == Status::ok) {
-        got += link.receive(f, outputs) == Status::ok ? 1U : 0U;
-      }
-    } while (got == 0 && clock.now_ns() < give_up && !std::is_same_v<ClockT, hal::SimClock>);
+  const double dt_s = static_cast<double>(s.period_us) * 1e-6;
+  std::filesystem::create_directories(s.out_dir);
 
-    TraceRow row{};
-    row.t_s = t;
-    const proto::RigData& seen = runtime.node().latest_inputs();
-    for (std::size_t i = 0; i < cfg.wheels; ++i) {
-      row.in[i] = seen.wheels[i];
-      row.can[i] = outputs.wheels[i];
-      const mf::MfOutput<double> ref =
-          reference_output(runtime.tyre_parameters(), seen.wheels[i], runtime.tyre_options());
-      row.fx_ref[i] = ref.fx_n;
-      row.fy_ref[i] = ref.fy_n;
-      row.mz_ref[i] = ref.mz_nm;
-      if (outputs.wheels[i].status == 0U) {
-        result.max_force_error_n =
-            std::max({result.max_force_error_n,
-                      std::abs(static_cast<double>(outputs.wheels[i].fx_n) - ref.fx_n),
-                      std::abs(static_cast<double>(outputs.wheels[i].fy_n) - ref.fy_n)});
-        result.max_moment_error_nm =
-            std::max(result.max_moment_error_nm,
-                     std::abs(static_cast<double>(outputs.wheels[i].mz_nm) - ref.mz_nm));
-        result.max_force_n = std::max({result.max_force_n, std::abs(ref.fx_n), std::abs(ref.fy_n)});
+  DemoResult result;
+  std::uint32_t rig_cycle = 0;
+  for (auto& scenario : scenarios) {
+    ScenarioRunner runner(*scenario, link, cfg.layout, cfg.wheels, cfg.wheelsets, reference);
+    while (!runner.done()) {
+      for (const proto::CanFrame& f : runner.begin_cycle(runner.time_s(), rig_cycle++)) {
+        static_cast<void>(rig_bus.send(f));
       }
+      loop.run_periodic_cycle();
+      // The node's answer of this cycle (SocketCAN delivers within microseconds; poll briefly).
+      bool answered = false;
+      const std::int64_t give_up = clock.now_ns() + 200'000;
+      proto::CanFrame f{};
+      do {
+        while (rig_bus.receive(f) == Status::ok) {
+          answered = runner.on_frame(f) || answered;
+        }
+      } while (!answered && clock.now_ns() < give_up && !std::is_same_v<ClockT, hal::SimClock>);
+      runner.end_cycle(dt_s);
     }
-    result.peak_fx_n =
-        std::max(result.peak_fx_n, static_cast<double>(std::abs(outputs.wheels[0].fx_n)));
-    result.peak_fy_n =
-        std::max(result.peak_fy_n, static_cast<double>(std::abs(outputs.wheels[1].fy_n)));
-    for (std::size_t j = 0; j < cfg.wheelsets; ++j) {
-      row.y_mm[j] = seen.wheelsets[j].lateral_mm;
-      row.dr_mm[j] = outputs.wheelsets[j].delta_r_mm;
-      const auto ref = rail::lookup(runtime.contact_table(), seen.wheelsets[j].lateral_mm);
-      result.max_delta_r_error_mm = std::max(
-          result.max_delta_r_error_mm,
-          static_cast<double>(std::abs(outputs.wheelsets[j].delta_r_mm - ref.value.delta_r_mm)));
+    ScenarioOutcome o;
+    o.name = scenario->name();
+    o.description = scenario->description();
+    o.cycles = runner.cycles();
+    o.check = runner.check();
+    o.metrics = scenario->metrics();
+    o.trace_csv = s.out_dir / (o.name + ".csv");
+    runner.write_trace(o.trace_csv);
+    if (s.plot) {
+      o.plots = scenario->plot(o.trace_csv, s.out_dir);
     }
-    trace.push_back(row);
+    result.max_force_error_n = std::max(result.max_force_error_n, o.check.max_force_error_n);
+    result.max_force_n = std::max(result.max_force_n, o.check.max_force_n);
+    result.max_moment_error_nm = std::max(result.max_moment_error_nm, o.check.max_moment_error_nm);
+    result.max_delta_r_error_mm =
+        std::max(result.max_delta_r_error_mm, o.check.max_delta_r_error_mm);
+    result.scenarios.push_back(std::move(o));
   }
   result.report.loop = loop.stats();
   result.report.counters = runtime.node().counters();
   result.rig_frames_accepted = link.accepted();
   result.rig_frames_rejected = link.rejected();
-
-  // ---- trace and plots ----
-  std::filesystem::create_directories(s.out_dir);
-  result.trace_csv = s.out_dir / "trace.csv";
-  {
-    std::ofstream out(result.trace_csv);
-    out << "t_s";
-    for (std::size_t i = 0; i < cfg.wheels; ++i) {
-      out << ",kappa_" << i << ",alpha_rad_" << i << ",Fz_N_" << i << ",Fx_N_" << i << ",Fy_N_" << i
-          << ",Mz_Nm_" << i << ",Fx_ref_N_" << i << ",Fy_ref_N_" << i << ",Mz_ref_Nm_" << i;
-    }
-    for (std::size_t j = 0; j < cfg.wheelsets; ++j) {
-      out << ",y_mm_" << j << ",delta_r_mm_" << j;
-    }
-    out << '\n' << std::setprecision(9);
-    for (const TraceRow& r : trace) {
-      out << r.t_s;
-      for (std::size_t i = 0; i < cfg.wheels; ++i) {
-        out << ',' << r.in[i].kappa << ',' << r.in[i].alpha_rad << ',' << r.in[i].fz_n << ','
-            << r.can[i].fx_n << ',' << r.can[i].fy_n << ',' << r.can[i].mz_nm << ',' << r.fx_ref[i]
-            << ',' << r.fy_ref[i] << ',' << r.mz_ref[i];
-      }
-      for (std::size_t j = 0; j < cfg.wheelsets; ++j) {
-        out << ',' << r.y_mm[j] << ',' << r.dr_mm[j];
-      }
-      out << '\n';
-    }
-    if (!out) throw std::runtime_error("cannot write " + result.trace_csv.string());
-  }
-  if (s.plot && cfg.wheels >= 2) {
-    result.plot_png = s.out_dir / "demo.png";
-    const std::string data = gnuplot_quote(result.trace_csv.string());
-    const int stride = 9;  // columns per wheel
-    const auto col = [&](std::size_t wheel, int k) {
-      return std::to_string(2 + static_cast<int>(wheel) * stride + k);
-    };
-    std::string script = gnuplot_terminal(result.plot_png.string(), 1200, 900);
-    script += "set output " + gnuplot_quote(result.plot_png.string()) + "\n";
-    script += "set datafile separator ','\nset key autotitle columnhead\nset grid\n";
-    script +=
-        "set multiplot layout 2,2 title 'tread HIL demo: node answers over CAN (points) vs the "
-        "reference model in double (line)'\n";
-    script +=
-        "set xlabel 'kappa (-)'\nset ylabel 'Fx (N)'\nset title 'wheel 0: longitudinal sweep'\n";
-    script += "plot " + data + " using " + col(0, 0) + ":" + col(0, 3) +
-              " every 20 with points pt 7 ps 0.4 title 'Fx over CAN', " + data + " using " +
-              col(0, 0) + ":" + col(0, 6) + " with lines lw 2 title 'reference'\n";
-    script += "set xlabel 'alpha (rad)'\nset ylabel 'Fy (N)'\nset title 'wheel 1: lateral sweep'\n";
-    script += "plot " + data + " using " + col(1, 1) + ":" + col(1, 4) +
-              " every 20 with points pt 7 ps 0.4 title 'Fy over CAN', " + data + " using " +
-              col(1, 1) + ":" + col(1, 7) + " with lines lw 2 title 'reference'\n";
-    script +=
-        "set xlabel 'alpha (rad)'\nset ylabel 'Mz (N m)'\nset title 'wheel 1: aligning moment'\n";
-    script += "plot " + data + " using " + col(1, 1) + ":" + col(1, 5) +
-              " every 20 with points pt 7 ps 0.4 title 'Mz over CAN', " + data + " using " +
-              col(1, 1) + ":" + col(1, 8) + " with lines lw 2 title 'reference'\n";
-    if (cfg.wheelsets > 0) {
-      const std::string ycol = std::to_string(2 + static_cast<int>(cfg.wheels) * stride);
-      const std::string drcol = std::to_string(3 + static_cast<int>(cfg.wheels) * stride);
-      script +=
-          "set xlabel 'wheelset displacement y (mm)'\nset ylabel 'delta r (mm)'\nset title "
-          "'wheelset 0: rolling radius difference'\n";
-      script += "plot " + data + " using " + ycol + ":" + drcol +
-                " every 5 with points pt 7 ps 0.4 title 'delta r over CAN'\n";
-    } else {
-      script += "set xlabel 't (s)'\nset ylabel 'Fz (N)'\nset title 'wheel 3: load sweep'\n";
-      script += "plot " + data + " using 1:" + col(3, 2) + " with lines title 'Fz'\n";
-    }
-    script += "unset multiplot\n";
-    run_gnuplot(script, result.plot_png.string());
-  }
   return result;
 }
 
@@ -226,35 +152,53 @@ DemoResult run_demo(const DemoSettings& s) {
   return result;
 }
 
-void print_demo(std::ostream& out, const DemoSettings& s, const DemoResult& r) {
-  out << "tread HIL demo — node + scripted rig on "
-      << (s.can == "stub" ? "the in-process CAN bus" : s.can) << " ("
-      << (s.node.node.layout == proto::Layout::fd ? "CAN FD" : "classic CAN") << " layout, "
-      << (s.sim_clock ? "simulated" : "real") << " clock, period " << s.period_us << " us)\n";
-  out << "tyre model        " << s.node.tir.string() << " (float on the node, double reference)\n";
-  out << "rig               4 wheels: kappa sweep, alpha sweep, combined, load sweep";
-  if (s.node.node.wheelsets > 0) {
-    out << "; " << static_cast<int>(s.node.node.wheelsets)
-        << " wheelset(s): " << s.node.wheelset_profile;
+void print_scenario_outcome(std::ostream& out, const ScenarioOutcome& o) {
+  out << "\n== " << o.name << " — " << o.description << "\n";
+  out << "   " << o.cycles << " cycles; " << o.check.answers_checked
+      << " answers checked against the reference";
+  if (o.check.stale_answers > 0) out << " (" << o.check.stale_answers << " stale)";
+  out << "\n";
+  for (const ScenarioMetric& m : o.metrics) {
+    out << "   " << std::left << std::setw(36) << m.name << std::right << std::setw(11)
+        << std::setprecision(5) << m.value << ' ' << std::left << std::setw(6) << m.unit
+        << std::right << m.note << "\n";
   }
-  out << "\n\n";
+  out << "   trace " << o.trace_csv.string();
+  for (const auto& p : o.plots) out << "   plot " << p.string();
+  out << "\n";
+}
+
+void print_demo(std::ostream& out, const DemoSettings& s, const DemoResult& r) {
+  out << "tread HIL demo — node + rig on " << (s.can == "stub" ? "the in-process CAN bus" : s.can)
+      << " (" << (s.node.node.layout == proto::Layout::fd ? "CAN FD" : "classic CAN") << " layout, "
+      << (s.sim_clock ? "simulated" : "real") << " clock, period " << s.period_us << " us)\n";
+  if (s.node.node.wheels > 0) {
+    out << "tyre model        " << s.node.tir.string()
+        << " (float on the node, double reference)\n";
+  }
+  if (s.node.node.wheelsets > 0) {
+    out << "wheelsets         " << static_cast<int>(s.node.node.wheelsets) << ": "
+        << s.node.wheelset_profile << "\n";
+  }
+  out << "\n";
   print_report(out, r.report, !s.sim_clock);
   out << "rig frames        " << r.rig_frames_accepted << " accepted, " << r.rig_frames_rejected
       << " rejected\n";
   out << std::setprecision(4);
-  out << "\nresults over CAN vs the reference model (double):\n";
-  out << "  peak |Fx| wheel 0  " << r.peak_fx_n << " N,  peak |Fy| wheel 1  " << r.peak_fy_n
-      << " N\n";
-  out << "  max |dF|           " << r.max_force_error_n << " N  ("
-      << 100.0 * r.max_force_error_n / std::max(r.max_force_n, 1.0) << " % of the largest force "
-      << r.max_force_n << " N; quantisation 0.5 N + float)\n";
-  out << "  max |dMz|          " << r.max_moment_error_nm << " N m\n";
-  if (s.node.node.wheelsets > 0) {
-    out << "  max |d delta_r|    " << r.max_delta_r_error_mm
-        << " mm (vs the table; quantisation 0.0005 mm)\n";
+  out << "answers vs the reference (double, on the inputs the node decoded):\n";
+  if (s.node.node.wheels > 0) {
+    out << "  max |dF|          " << r.max_force_error_n << " N  ("
+        << 100.0 * r.max_force_error_n / std::max(r.max_force_n, 1.0) << " % of the largest force "
+        << r.max_force_n << " N; quantisation 0.5 N + float)\n";
+    out << "  max |dMz|         " << r.max_moment_error_nm << " N m\n";
   }
-  out << "\ntrace  " << r.trace_csv.string() << "\n";
-  if (!r.plot_png.empty()) out << "plot   " << r.plot_png.string() << "\n";
+  if (s.node.node.wheelsets > 0) {
+    out << "  max |d delta_r|   " << r.max_delta_r_error_mm
+        << " mm (quantisation 0.0005 mm + float table)\n";
+  }
+  for (const ScenarioOutcome& o : r.scenarios) {
+    print_scenario_outcome(out, o);
+  }
 }
 
 }  // namespace tread::host

@@ -4,7 +4,7 @@ set -euo pipefail
 tread=$1 tir=$2 out=$3
 shift 3
 mkdir -p "$out"
-"$tread" demo --clock sim --duration-s 1 --tir "$tir" --wheelsets 2 \
+"$tread" demo --clock sim --scenario sweep --sweep-duration-s 1 --tir "$tir" --wheelsets 2 \
   --wheelset-profile wheel=S1002,rail=60E1,cant=1:40 --no-plot --out "$out" --log "$out/run.log" "$@" \
   | tee "$out/demo.txt"
 grep -q "frames rejected   0 " "$out/demo.txt"

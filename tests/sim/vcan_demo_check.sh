@@ -5,7 +5,7 @@ tread=$1
 tir=$2
 status=0
 for layout in "" "--fd"; do
-  out=$("$tread" demo --can vcan0 $layout --tir "$tir" --wheelsets 0 --duration-s 0.5 --no-plot --out /tmp/demo 2>&1)
+  out=$("$tread" demo --can vcan0 $layout --tir "$tir" --wheelsets 0 --scenario sweep --sweep-duration-s 0.5 --no-plot --out /tmp/demo 2>&1)
   rc=$?
   echo "$out"
   if [ $rc -ne 0 ]; then echo "vcan_demo_check: tread demo $layout exited $rc"; status=1; fi

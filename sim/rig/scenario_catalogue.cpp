@@ -1,0 +1,59 @@
+#include "rig/scenario_catalogue.hpp"
+
+#include <stdexcept>
+
+#include "rig/hunting_scenario.hpp"
+#include "rig/sweep_scenario.hpp"
+#include "rig/vehicle_scenario.hpp"
+
+namespace tread::host {
+
+std::vector<std::string> scenario_names() {
+  return {"braking", "step-steer", "sine-dwell", "hunting", "sweep"};
+}
+
+std::vector<std::string> default_scenarios(const ScenarioContext& context) {
+  std::vector<std::string> names;
+  if (context.wheels == 4) {
+    names = {"braking", "step-steer", "sine-dwell"};
+  }
+  if (context.wheelsets > 0) {
+    names.emplace_back("hunting");
+  }
+  if (names.empty()) {
+    names.emplace_back("sweep");
+  }
+  return names;
+}
+
+std::unique_ptr<RigScenario> make_scenario(const std::string& name,
+                                           const ScenarioContext& context) {
+  if (name == "sweep") {
+    return std::make_unique<SweepScenario>(context.wheels, context.wheelsets,
+                                           context.sweep_duration_s);
+  }
+  if (name == "braking" || name == "step-steer" || name == "sine-dwell") {
+    if (context.wheels != 4) {
+      throw std::invalid_argument("scenario '" + name + "' needs 4 road wheels (--wheels 4)");
+    }
+    return std::make_unique<VehicleScenario>(name, context.tir, context.period_s);
+  }
+  if (name == "hunting") {
+    if (context.wheelsets == 0) {
+      throw std::invalid_argument("scenario 'hunting' needs wheelsets (--wheelsets 1 or 2)");
+    }
+    HuntingSettings s;
+    s.wheelsets = context.wheelsets;
+    s.wheelset_profile = context.wheelset_profile;
+    s.ymax_mm = context.wheelset_ymax_mm;
+    s.step_mm = context.wheelset_step_mm;
+    return std::make_unique<HuntingScenario>(s);
+  }
+  std::string known;
+  for (const std::string& n : scenario_names()) {
+    known += (known.empty() ? "" : ", ") + n;
+  }
+  throw std::invalid_argument("unknown scenario '" + name + "' (known: " + known + ")");
+}
+
+}  // namespace tread::host

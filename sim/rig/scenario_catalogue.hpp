@@ -1,0 +1,30 @@
+#pragma once
+// The rig's scenarios by name, for `tread demo --scenario` and `tread rig --scenario`.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "rig/rig_scenario.hpp"
+
+namespace tread::host {
+
+struct ScenarioContext {
+  std::filesystem::path tir;  ///< the node's tyre file (road scenarios)
+  std::uint8_t wheels{4};
+  std::uint8_t wheelsets{2};
+  std::string wheelset_profile;  ///< the node's wheelset profile (rail scenarios)
+  double wheelset_ymax_mm{12.0};
+  double wheelset_step_mm{0.1};
+  double sweep_duration_s{4.0};
+  double period_s{1e-3};  ///< the rig's step
+};
+
+/// Every scenario name, in the demo's order.
+std::vector<std::string> scenario_names();
+/// The scenarios `tread demo` runs by default for this channel configuration.
+std::vector<std::string> default_scenarios(const ScenarioContext& context);
+/// Throws std::invalid_argument for an unknown name or one the channels cannot run.
+std::unique_ptr<RigScenario> make_scenario(const std::string& name, const ScenarioContext& context);
+
+}  // namespace tread::host

@@ -1,0 +1,81 @@
+#pragma once
+// The rig's side of one cycle, shared by the in-process demo and the `tread rig` process: encode
+// the scenario's inputs, take the node's answer frames, check every computed answer against the
+// reference (the tyre model in double, the contact table in double, on the inputs as the node
+// decoded them), advance the scenario and keep the trace.
+
+#include <array>
+#include <filesystem>
+#include <span>
+#include <vector>
+
+#include "contact/rigid_contact.hpp"
+#include "mf/mf_options.hpp"
+#include "mf/mf_parameters.hpp"
+#include "proto/rig_link.hpp"
+#include "rig/rig_scenario.hpp"
+
+namespace tread::host {
+
+/// What the rig checks the node's answers against. Null members are not checked.
+struct RigReference {
+  const mf::MfParameters<double>* tyre{nullptr};
+  mf::MfOptions options{};
+  const contact::ContactTable* contact{nullptr};
+};
+
+struct AnswerCheck {
+  std::uint64_t answers_checked{0};  ///< wheel and wheelset answers compared
+  std::uint64_t stale_answers{0};    ///< answers flagged stale (zeros), not compared
+  double max_force_error_n{0.0};
+  double max_moment_error_nm{0.0};
+  double max_delta_r_error_mm{0.0};
+  double max_force_n{0.0};  ///< largest |F| of the reference
+};
+
+class ScenarioRunner {
+ public:
+  /// `link` carries the E2E counters of the session: one link for every scenario of a run.
+  ScenarioRunner(RigScenario& scenario, proto::RigLink& link, proto::Layout layout,
+                 std::uint8_t wheels, std::uint8_t wheelsets, const RigReference& reference);
+
+  /// The frames of the cycle at `t_s` (the cycle frame last).
+  std::span<const proto::CanFrame> begin_cycle(double t_s, std::uint32_t rig_cycle);
+  /// One frame from the node (others are ignored). True when it completed this cycle's answer
+  /// (the NodeStatus frame, which the node sends last).
+  bool on_frame(const proto::CanFrame& frame);
+  /// Checks the answers, advances the scenario by `dt_s` and appends the trace row.
+  void end_cycle(double dt_s);
+
+  [[nodiscard]] bool done() const {
+    return t_s_ >= scenario_.duration_s() - 1e-9 || scenario_.finished();
+  }
+  [[nodiscard]] double time_s() const { return t_s_; }
+  [[nodiscard]] const AnswerCheck& check() const { return check_; }
+  [[nodiscard]] const proto::RigLink& link() const { return link_; }
+  [[nodiscard]] RigScenario& scenario() { return scenario_; }
+  [[nodiscard]] std::uint64_t cycles() const { return cycles_; }
+
+  /// Writes t_s and the scenario's columns.
+  void write_trace(const std::filesystem::path& csv) const;
+
+ private:
+  RigScenario& scenario_;
+  std::uint8_t wheels_;
+  std::uint8_t wheelsets_;
+  RigReference reference_;
+  proto::RigLink& link_;
+  proto::Layout layout_;
+  std::array<proto::CanFrame, proto::RigLink::kMaxRigFrames> frames_{};
+  std::size_t frame_count_{0};
+  proto::RigData seen_{};
+  proto::NodeData answers_{};
+  AnswerCheck check_{};
+  double t_s_{0.0};
+  std::uint64_t cycles_{0};
+  std::vector<std::string> columns_;
+  std::vector<double> trace_;  ///< rows of 1 + columns_.size() values
+  std::vector<double> row_;
+};
+
+}  // namespace tread::host
