@@ -20,7 +20,7 @@ double clamp01(double x) {
 /// Linear interpolation of `value(sample)` at time t_s over the trace (NaN outside it).
 template <typename F>
 double value_at(const Trace& trace, double t_s, F value) {
-  if (trace.empty() || t_s < trace.front().t_s || t_s > trace.back().t_s) return kNaN;
+  if (trace.empty() || !(t_s >= trace.front().t_s && t_s <= trace.back().t_s)) return kNaN;
   const auto it = std::lower_bound(trace.begin(), trace.end(), t_s,
                                    [](const TraceSample& s, double t) { return s.t_s < t; });
   if (it == trace.begin()) return value(*it);
@@ -163,9 +163,16 @@ std::vector<ManoeuvreResult> BrakingManoeuvre::results(const Trace& trace) const
   const double v80 = 0.8 * v0;
   const double v10 = 0.1 * v0;
   const double mean_decel = (v80 * v80 - v10 * v10) / (2.0 * (s10 - s80));
-  const double t_stop = crossing_time(trace, 0.0, o_.stop_speed_mps, false, speed);
+  // The end: where the speed crosses the stop speed, or the last sample if the trace ends
+  // before (e.g. a rig's trace without the final state); extrapolated to standstill at the mean
+  // deceleration.
+  double t_stop = crossing_time(trace, 0.0, o_.stop_speed_mps, false, speed);
+  double v_stop = o_.stop_speed_mps;
+  if (!std::isfinite(t_stop)) {
+    t_stop = trace.back().t_s;
+    v_stop = std::fmax(trace.back().state.vx_mps, 0.0);
+  }
   const double x_start = value_at(trace, o_.brake_start_s, distance);
-  const double v_stop = o_.stop_speed_mps;
   const double stopping_distance =
       value_at(trace, t_stop, distance) - x_start + v_stop * v_stop / (2.0 * mean_decel);
   const double stopping_time = t_stop - o_.brake_start_s + v_stop / mean_decel;

@@ -72,9 +72,10 @@ struct BrakingOptions {
 /// Straight-line braking. The tyre function is used once, at construction, for the peak friction
 /// and the ABS's peak slips.
 /// Results: initial_speed (m/s), mean_deceleration (m/s^2, between 80 % and 10 % of the initial
-/// speed over distance: (v80² − v10²)/(2·s)), stopping_distance (m, from the pedal onset to
-/// standstill: to the stop speed, then v_stop²/(2·mean_deceleration)), stopping_time (s, to the
-/// stop speed), abs_target_slip_front/rear (1), brake_torque_total (N·m).
+/// speed over distance: (v80² − v10²)/(2·s), distance as the trapezoid of the speed),
+/// stopping_distance and stopping_time (m, s: from the pedal onset to the stop speed — or the
+/// trace's last sample — then extrapolated to standstill at the mean deceleration),
+/// abs (1 or 0), abs_target_slip_front/rear (1), brake_torque_total (N·m).
 class BrakingManoeuvre final : public Manoeuvre {
  public:
   BrakingManoeuvre(const VehicleParams& params, const TyreFunction& tyre,

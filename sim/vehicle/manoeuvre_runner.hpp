@@ -11,6 +11,8 @@
 namespace tread::vehicle {
 
 struct ManoeuvreRun {
+  /// One sample per step, then the final state as a last sample (its inputs and forces are
+  /// evaluated, its controls are zero: no step is taken from it).
   Trace trace;
   std::vector<ManoeuvreResult> results;
   VehicleState final_state;
