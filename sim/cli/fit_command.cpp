@@ -1,6 +1,10 @@
-// `tread fit`: fit Magic Formula constants to measurements (CSV or TYDEX). Stage 1 (--model
-// simple): the basic formula per load for Fx(kappa), Fy(alpha), Mz(alpha); writes the constants
-// (CSV), a Markdown report and plots of measurement vs fit.
+// `tread fit`: fit Magic Formula coefficients to measurements (CSV or TYDEX).
+//  - --model simple (Stage 1): the basic formula per load for Fx(kappa), Fy(alpha), Mz(alpha);
+//    writes the constants (CSV), a Markdown report and plots of measurement vs fit.
+//  - --model mf61 | pac2002 (Stage 2): the staged fit of the MF 6.1 or PAC2002 (also MF 5.2)
+//    coefficient set (sim/fit/mf_staged_fit.hpp) into a copy of --start START.tir; report, plots.
+//  - --synthesize FROM.tir: writes synthetic measurements (the test-rig grid of
+//    sim/fit/synthetic_measurements.hpp, Gaussian noise --noise × peak, seeded by --seed) as CSV.
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -9,8 +13,9 @@
 
 #include "cli/commands.hpp"
 #include "fit/measurement.hpp"
-#include "fit/mf_lateral_fit.hpp"
+#include "fit/mf_staged_fit.hpp"
 #include "fit/simple_fit.hpp"
+#include "fit/synthetic_measurements.hpp"
 #include "mf/mf_parameters_from_tir.hpp"
 #include "tir/tir_file.hpp"
 
@@ -19,62 +24,88 @@ namespace {
 
 struct FitCliState {
   std::string model = "simple";
-  std::string input, output, report, plots, start;
+  std::string input, output, report, plots, start, synthesize;
   unsigned seed = 1;
+  double noise = 0.01;
   bool asymmetric_e = false;
+  bool neutral_start = false;
 };
 
-void run_mf61_lateral(const FitCliState& s) {
+void progress_line(const std::string& line) {
+  std::cerr << "tread fit: " << line << "\n";
+}
+
+void run_synthesize(const FitCliState& s) {
+  const mf::MfTirParameters truth = mf::load_mf_parameters(s.synthesize);
+  fit::SyntheticGrid grid;
+  grid.noise_rel = s.noise;
+  const fit::MeasurementSet data = fit::synthesize_measurements(truth.params, grid, s.seed);
+  std::ofstream out(s.output);
+  out << "# synthetic measurements from " << s.synthesize << ", noise " << s.noise
+      << " x peak per channel and load, seed " << s.seed << "\n";
+  fit::write_measurement_csv(data, out);
+  if (!out) throw std::runtime_error(s.output + ": cannot write");
+  std::cerr << "tread fit: " << data.points.size() << " synthetic points -> " << s.output << "\n";
+}
+
+void run_staged(const FitCliState& s) {
+  const fit::MfFitModel model =
+      s.model == "mf61" ? fit::MfFitModel::mf61 : fit::MfFitModel::pac2002;
   if (s.start.empty()) {
-    throw std::runtime_error(
-        "--model mf61 needs --start START.tir (FNOMIN, scalings and the "
-        "coefficients not fitted come from it)");
+    throw std::runtime_error("--model " + s.model +
+                             " needs --start START.tir (FNOMIN, R0, scalings, limits and the "
+                             "coefficients not fitted come from it)");
   }
   if (std::filesystem::path(s.output).extension() != ".tir") {
-    throw std::runtime_error("--output " + s.output + ": --model mf61 writes a .tir");
+    throw std::runtime_error("--output " + s.output + ": --model " + s.model + " writes a .tir");
   }
   tir::TirFile file = tir::read_tir(s.start);
-  const mf::MfTirParameters start = mf::mf_parameters_from_tir(file);
-  if (start.params.fit_type != mf::FitType::mf61 && start.params.fit_type != mf::FitType::mf62) {
-    throw std::runtime_error(s.start + ": --model mf61 needs an MF 6.1/6.2 (FITTYP 61/62) start");
-  }
+  mf::MfParameters<double> start = mf::mf_parameters_from_tir(file).params;
+  fit::check_model(start, model, s.start);
+  if (s.neutral_start) start = fit::neutral_start(start, model);
   const fit::MeasurementSet data = fit::load_measurements(s.input);
-  std::cerr << "tread fit: " << data.points.size() << " points from " << data.source
-            << "; MF 6.1 pure lateral (13 coefficients)\n";
-  const fit::LateralFit result = fit::fit_mf_pure_lateral(
-      data, start.params,
-      [](const std::string& line) { std::cerr << "tread fit: " << line << "\n"; });
-  fit::set_lateral_coefficients(file, result);
+  std::cerr << "tread fit: " << data.points.size() << " points from " << data.source << "; staged "
+            << s.model << " fit\n";
+  const fit::StagedFit result = fit::fit_mf_staged(data, start, model, progress_line);
+  if (result.stages.empty()) {
+    throw std::runtime_error(data.source + ": no pure-slip sweep with enough points to fit");
+  }
+  fit::set_fitted_coefficients(file, result);
   tir::write_tir(file, s.output);
-  std::cerr << "tread fit: RMS " << result.rms_n << " N, R2 " << result.r2 << " -> " << s.output
-            << "\n";
+  std::cerr << "tread fit: " << result.stages.size() << " stages in " << result.seconds << " s -> "
+            << s.output << "\n";
   if (!s.report.empty()) {
     std::ofstream out(s.report);
-    fit::write_lateral_report(result, data.source, out);
+    fit::write_staged_report(result, data, out);
     if (!out) throw std::runtime_error(s.report + ": cannot write");
+  }
+  if (!s.plots.empty()) {
+    fit::plot_staged_fit(result, data, s.plots);
+    std::cerr << "tread fit: plots in " << s.plots << "\n";
   }
 }
 
 void run_fit(const FitCliState& s) {
-  if (s.model == "mf61") {
-    run_mf61_lateral(s);
+  if (!s.synthesize.empty()) {
+    run_synthesize(s);
     return;
   }
-  if (s.model != "simple") {
-    throw std::runtime_error("--model " + s.model + ": not implemented yet");
+  if (s.input.empty()) throw std::runtime_error("--input is required (or --synthesize FROM.tir)");
+  if (s.model == "mf61" || s.model == "pac2002") {
+    run_staged(s);
+    return;
   }
   const std::string ext = std::filesystem::path(s.output).extension().string();
   if (ext != ".csv") {
     throw std::runtime_error("--output " + s.output +
                              ": --model simple writes the per-load constants as .csv (a .tir needs "
-                             "a full coefficient set, Stage 2)");
+                             "a full coefficient set: --model mf61 or pac2002)");
   }
   const fit::MeasurementSet data = fit::load_measurements(s.input);
   std::cerr << "tread fit: " << data.points.size() << " points from " << data.source << "\n";
   fit::SimpleFitSettings settings;
   settings.asymmetric_e = s.asymmetric_e;
-  const fit::SimpleFit result = fit::fit_simple(
-      data, settings, [](const std::string& line) { std::cerr << "tread fit: " << line << "\n"; });
+  const fit::SimpleFit result = fit::fit_simple(data, settings, progress_line);
   if (result.fits.empty()) {
     throw std::runtime_error(data.source + ": no pure-slip sweep with enough points to fit");
   }
@@ -95,24 +126,38 @@ void run_fit(const FitCliState& s) {
 }
 
 void add_fit_command(CLI::App& app) {
-  auto* fit = app.add_subcommand("fit", "Fit Magic Formula constants to measurements");
+  auto* fit = app.add_subcommand("fit", "Fit Magic Formula coefficients to measurements");
   static FitCliState state;
   fit->add_option("--model", state.model,
-                  "simple (Stage 1: basic formula per load) or mf61 (Stage 2: pure lateral so far)")
+                  "simple (Stage 1: basic formula per load), mf61 or pac2002 (Stage 2: staged "
+                  "pure and combined slip coefficient set; pac2002 also for MF 5.2 files)")
       ->check(CLI::IsMember({"simple", "pac2002", "mf61"}))
       ->capture_default_str();
   fit->add_option("--input", state.input, "measurements: .csv (tread mf eval columns) or .tdx")
-      ->required()
       ->check(CLI::ExistingFile);
-  fit->add_option("--output", state.output, "result: per-load constants (.csv) for simple")
+  fit->add_option("--output", state.output,
+                  "result: per-load constants (.csv) for simple, a .tir for mf61/pac2002, the "
+                  "measurements (.csv) for --synthesize")
       ->required();
   fit->add_option("--report", state.report, "Markdown report (RMS, R², standard deviations)");
   fit->add_option("--plots", state.plots, "directory for PNG plots of measurement vs fit");
   fit->add_option("--start", state.start,
-                  "starting .tir (mf61: FNOMIN, scalings, everything not fitted)");
+                  "starting .tir (mf61/pac2002: FNOMIN, R0, scalings, limits, everything not "
+                  "fitted, and the starting values)");
+  fit->add_flag("--neutral-start", state.neutral_start,
+                "mf61/pac2002: start every fitted coefficient from its book (MFeval default) value "
+                "instead of the --start file's");
+  fit->add_option("--synthesize", state.synthesize,
+                  "write synthetic measurements of this .tir (test-rig grid, Gaussian noise) to "
+                  "--output instead of fitting")
+      ->check(CLI::ExistingFile);
+  fit->add_option("--noise", state.noise,
+                  "--synthesize: noise standard deviation relative to the peak of each channel "
+                  "and load")
+      ->capture_default_str();
   fit->add_option("--seed", state.seed,
-                  "random seed (the simple model's multi-start grid is deterministic and does not "
-                  "use it)")
+                  "--synthesize: seed of the noise (same seed, same file). The fits are "
+                  "deterministic and draw no random numbers")
       ->capture_default_str();
   fit->add_flag("--asymmetric-e", state.asymmetric_e,
                 "simple: also fit EA, a curvature that differs on either side of the origin "

@@ -60,6 +60,7 @@ std::vector<StageResult> fit_aligning_stages(
       select_samples(data, levels, FitChannel::mz, [](const MeasurementPoint& m) {
         return std::fabs(m.kappa) <= kPureTolerance && std::fabs(m.gamma_rad) <= kPureTolerance;
       });
+  if (flat.size() <= aligning_keys().size()) return results;  // no Mz(α) sweep: skipped
   aligning_start(flat, levels, params);
   results.push_back(
       fit_stage({"Mz0 (gamma = 0)", aligning_keys(), 100}, flat, levels, params, progress));

@@ -5,8 +5,6 @@
 #include <cmath>
 #include <limits>
 #include <memory>
-#include <ostream>
-#include <sstream>
 #include <stdexcept>
 #include <tuple>
 #include <utility>
@@ -150,16 +148,15 @@ std::vector<StageResult> fit_lateral_stages(
     const MeasurementSet& data, const std::vector<double>& levels, MfFitModel model,
     mf::MfParameters<double>& params, const std::function<void(const std::string&)>& progress) {
   std::vector<StageResult> results;
+  const std::vector<StageSample> flat_samples =
+      select_samples(data, levels, FitChannel::fy, [](const MeasurementPoint& m) {
+        return std::fabs(m.kappa) <= kPureTolerance && std::fabs(m.gamma_rad) <= kPureTolerance;
+      });
+  if (flat_samples.size() <= kLateralCoefficientNames.size()) return results;  // skipped
   lateral_staged_start(data, params);
   StageSpec flat{"Fy0 (gamma = 0)", {}, 100};
   flat.keys.assign(kLateralCoefficientNames.begin(), kLateralCoefficientNames.end());
-  results.push_back(fit_stage(flat,
-                              select_samples(data, levels, FitChannel::fy,
-                                             [](const MeasurementPoint& m) {
-                                               return std::fabs(m.kappa) <= kPureTolerance &&
-                                                      std::fabs(m.gamma_rad) <= kPureTolerance;
-                                             }),
-                              levels, params, progress));
+  results.push_back(fit_stage(flat, flat_samples, levels, params, progress));
   const std::vector<StageSample> cambered = select_samples(
       data, levels, FitChannel::fy,
       [](const MeasurementPoint& m) { return std::fabs(m.kappa) <= kPureTolerance; });
@@ -182,26 +179,6 @@ std::array<double, kLateralCoefficientCount> lateral_values(const LateralFit& fi
   std::array<double, kN> v{};
   for (std::size_t i = 0; i < v.size(); ++i) v[i] = *m[i];
   return v;
-}
-
-void set_lateral_coefficients(tir::TirFile& file, const LateralFit& fit) {
-  const std::array<double, kN> v = lateral_values(fit);
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    file.set("LATERAL_COEFFICIENTS", kLateralCoefficientNames[i], v[i]);
-  }
-}
-
-void write_lateral_report(const LateralFit& fit, const std::string& source, std::ostream& out) {
-  const std::array<double, kN> v = lateral_values(fit);
-  out << "# tread fit --model mf61 (pure lateral, gamma = 0)\n\nInput: `" << source << "`, "
-      << fit.points << " points, " << fit.iterations << " solver iterations ("
-      << (fit.converged ? "converged" : "stopped at the iteration limit") << "). RMS " << fit.rms_n
-      << " N, R² " << fit.r2
-      << ". Standard deviations from the Ceres covariance scaled by the residual variance.\n\n"
-      << "| coefficient | value | standard deviation |\n|---|---|---|\n";
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    out << "| " << kLateralCoefficientNames[i] << " | " << v[i] << " | " << fit.stddev[i] << " |\n";
-  }
 }
 
 }  // namespace tread::fit

@@ -10,14 +10,12 @@
 
 #include <array>
 #include <functional>
-#include <iosfwd>
 #include <string>
 #include <vector>
 
 #include "fit/measurement.hpp"
 #include "fit/mf_stage_fit.hpp"
 #include "mf/mf_parameters.hpp"
-#include "tir/tir_file.hpp"
 
 namespace tread::fit {
 
@@ -59,11 +57,5 @@ LateralFit fit_mf_pure_lateral(const MeasurementSet& data, const mf::MfParameter
 
 /// The fitted values of `fit` (kLateralCoefficientNames).
 std::array<double, kLateralCoefficientCount> lateral_values(const LateralFit& fit);
-
-/// Writes the fitted coefficients into [LATERAL_COEFFICIENTS] of `file` (the starting .tir).
-void set_lateral_coefficients(tir::TirFile& file, const LateralFit& fit);
-
-/// Markdown report: coefficients ± standard deviations, RMS, R².
-void write_lateral_report(const LateralFit& fit, const std::string& source, std::ostream& out);
 
 }  // namespace tread::fit

@@ -54,14 +54,14 @@ std::vector<StageResult> fit_longitudinal_stages(
     const MeasurementSet& data, const std::vector<double>& levels, MfFitModel /*model*/,
     mf::MfParameters<double>& params, const std::function<void(const std::string&)>& progress) {
   std::vector<StageResult> results;
+  const std::vector<StageSample> flat =
+      select_samples(data, levels, FitChannel::fx, [](const MeasurementPoint& m) {
+        return std::fabs(m.alpha_rad) <= kPureTolerance && std::fabs(m.gamma_rad) <= kPureTolerance;
+      });
+  if (flat.size() <= longitudinal_keys().size()) return results;  // no Fx(κ) sweep: skipped
   longitudinal_staged_start(data, params);
-  results.push_back(fit_stage({"Fx0 (gamma = 0)", longitudinal_keys(), 100},
-                              select_samples(data, levels, FitChannel::fx,
-                                             [](const MeasurementPoint& m) {
-                                               return std::fabs(m.alpha_rad) <= kPureTolerance &&
-                                                      std::fabs(m.gamma_rad) <= kPureTolerance;
-                                             }),
-                              levels, params, progress));
+  results.push_back(
+      fit_stage({"Fx0 (gamma = 0)", longitudinal_keys(), 100}, flat, levels, params, progress));
   const std::vector<StageSample> cambered = select_samples(
       data, levels, FitChannel::fx,
       [](const MeasurementPoint& m) { return std::fabs(m.alpha_rad) <= kPureTolerance; });

@@ -70,7 +70,7 @@ class Progress : public ceres::IterationCallback {
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
     if (f_) {
       std::ostringstream line;
-      line << stage_ << ": iteration " << s.iteration << ", cost " << s.cost << ", |step| "
+      line << stage_ << ": iteration " << s.iteration << ": cost " << s.cost << ", |step| "
            << s.step_norm;
       f_(line.str());
     }
