@@ -313,6 +313,53 @@ TEST(StepSteer, TransientMetricsArePlausible) {
   EXPECT_LT(steer, 2.0 * kinematic);
 }
 
+TEST(StepSteer, InTheLinearRangeTheSteadyStateIsTheSingleTrackModels) {
+  // At 1 m/s² the tyres are linear: the steady state of the 4-wheel model must be the linear
+  // single-track model's, with the axle cornering stiffnesses C and pneumatic trails t of the tyre
+  // at the static loads (central differences of Fy(α) and Mz(α) here). The aligning moments
+  // move the axle forces back by t: force balance Fy_f + Fy_r = m·ay, moment balance
+  // (a − t_f)·Fy_f = (b + t_r)·Fy_r, and δ = L/R + Fy_f/C_f − Fy_r/C_r with R = v²/ay.
+  assert_refdata();
+  const VehicleParams& p = setup().params;
+  const double v = 80.0 / 3.6;
+  const double ay = 1.0;
+  struct Axle {
+    double stiffness_nprad, trail_m;
+  };
+  const auto axle = [&](double fz) {
+    WheelKinematics k;
+    k.fz_n = fz;
+    k.vx_mps = v;
+    k.alpha_rad = 1e-3;
+    const WheelForces plus = setup().tyre(0, k);
+    k.alpha_rad = -1e-3;
+    const WheelForces minus = setup().tyre(0, k);
+    const double dfy = plus.fy_n - minus.fy_n;
+    return Axle{2.0 * std::fabs(dfy) / 2e-3, -(plus.mz_nm - minus.mz_nm) / dfy};
+  };
+  const double l = p.wheelbase_m();
+  const Axle front = axle(p.static_front_wheel_load_n());
+  const Axle rear = axle(p.static_rear_wheel_load_n());
+  const double arm_front = p.cg_to_front_axle_m - front.trail_m;
+  const double arm_rear = p.cg_to_rear_axle_m + rear.trail_m;
+  const double fy_front = p.mass_kg * ay * arm_rear / (arm_front + arm_rear);
+  const double fy_rear = p.mass_kg * ay * arm_front / (arm_front + arm_rear);
+  const double delta =
+      l * ay / (v * v) + fy_front / front.stiffness_nprad - fy_rear / rear.stiffness_nprad;
+  std::printf("  axle C front %.0f N/rad, rear %.0f N/rad; trail front %.4f m, rear %.4f m\n",
+              front.stiffness_nprad, rear.stiffness_nprad, front.trail_m, rear.trail_m);
+  StepSteerOptions o;
+  o.steer_wheel_rad = delta * p.steering_ratio;
+  StepSteerManoeuvre m(p, setup().tyre, o);
+  const ManoeuvreRun run = run_manoeuvre(m, p, setup().tyre, kDt);
+  const double ay_model = result_value(run.results, "ay_steady");
+  const double r_model = result_value(run.results, "yaw_rate_steady");
+  std::printf("  single track: steer %.5f rad for 1 m/s^2; model ay %.4f m/s^2, r %.5f rad/s\n",
+              o.steer_wheel_rad, ay_model, r_model);
+  EXPECT_NEAR(ay_model, ay, 0.01 * ay);
+  EXPECT_NEAR(r_model, ay / v, 0.01 * ay / v);
+}
+
 // ---------------------------------------------------------------------------------------------
 // Sine with dwell
 
