@@ -1,6 +1,8 @@
 // End-to-end test of `tread fit` (sim/cli/fit_command.cpp): runs the built CLI on noise-free
 // measurements of a basic Magic Formula with known constants (CSV and TYDEX), checks the written
 // constants, report and plots; bad input must fail with file:line and a non-zero exit status.
+// Stage 2: --model mf61 on pure lateral data, --synthesize (deterministic per --seed) and the
+// staged --model pac2002 fit of synthesized data read back as a .tir.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -242,6 +244,108 @@ TEST(FitCommand, Mf61PureLateralWritesTir) {
     }
     EXPECT_LT(std::sqrt(ss / n), 1e-3 * peak) << fz;  // noise-free data: a near-exact fit
   }
+}
+
+// --synthesize writes the same file for the same --seed and a different one for another seed.
+TEST(FitCommand, SynthesizeIsDeterministicPerSeed) {
+  const auto tir = tread::testing::refdata("tir/chrono_Sedan_Pac02Tire.tir");
+  ASSERT_TRUE(std::filesystem::exists(tir)) << tir;
+  const auto dir = tmp_dir();
+  const auto err = dir / "stderr_synth.txt";
+  for (const char* name : {"synth_a.csv", "synth_b.csv"}) {
+    ASSERT_EQ(
+        run("fit --synthesize " + tir.string() + " --seed 42 --output " + (dir / name).string(),
+            err),
+        0)
+        << slurp(err);
+  }
+  ASSERT_EQ(run("fit --synthesize " + tir.string() + " --seed 43 --output " +
+                    (dir / "synth_c.csv").string(),
+                err),
+            0)
+      << slurp(err);
+  const std::string a = slurp(dir / "synth_a.csv");
+  EXPECT_GT(a.size(), 100000u);
+  EXPECT_EQ(a, slurp(dir / "synth_b.csv"));
+  EXPECT_NE(a.substr(a.find('\n')), slurp(dir / "synth_c.csv").substr(a.find('\n')));
+}
+
+double value_of(const tread::mf::MfParameters<double>& p, double fz, double kappa, double alpha,
+                int channel) {
+  tread::mf::MfInput<double> in;
+  in.fz_n = fz;
+  in.kappa = kappa;
+  in.alpha_rad = alpha;
+  in.vx_mps = 16.7;
+  const auto out = tread::mf::evaluate(p, in, tread::mf::MfOptions{});
+  return channel == 0 ? out.fx_n : out.fy_n;
+}
+
+// Stage 2 end to end, PAC2002: --synthesize, then --model pac2002 --neutral-start from the same
+// file; the written .tir is read back by the reader `tread mf eval` uses (and by `tread mf eval`
+// itself); report, plots and progress lines are written.
+TEST(FitCommand, Pac2002StagedFitFromSynthesizedData) {
+  const auto tir = tread::testing::refdata("tir/chrono_Sedan_Pac02Tire.tir");
+  ASSERT_TRUE(std::filesystem::exists(tir)) << tir;
+  const auto dir = tmp_dir();
+  const auto data = dir / "pac2002_data.csv";
+  const auto out_tir = dir / "pac2002_fit.tir";
+  const auto report = dir / "pac2002_report.md";
+  const auto plots = dir / "pac2002_plots";
+  const auto err = dir / "stderr_pac2002.txt";
+  std::filesystem::remove_all(plots);
+  ASSERT_EQ(run("fit --synthesize " + tir.string() + " --seed 7 --output " + data.string(), err), 0)
+      << slurp(err);
+  ASSERT_EQ(run("fit --model pac2002 --neutral-start --start " + tir.string() + " --input " +
+                    data.string() + " --output " + out_tir.string() + " --report " +
+                    report.string() + " --plots " + plots.string(),
+                err),
+            0)
+      << slurp(err);
+  EXPECT_NE(slurp(err).find("Fy0 (gamma = 0): iteration 1:"), std::string::npos);
+  const std::string r = slurp(report);
+  for (const char* stage :
+       {"## Fx0 (gamma = 0)", "## Fy0 (all cambers)", "## Mz0 (all cambers)", "## Fx (combined)",
+        "## Fy (combined)", "## Mz (combined)", "| QDZ8 |", "| RVY1 |", "| SSZ1 |"}) {
+    EXPECT_NE(r.find(stage), std::string::npos) << stage;
+  }
+  for (const char* png : {"Fx_Fz4850N.png", "Fy_Fz2425N.png", "Mz_Fz7275N.png"}) {
+    EXPECT_TRUE(std::filesystem::exists(plots / png)) << png;
+  }
+  const tread::mf::MfParameters<double> truth = tread::mf::load_mf_parameters(tir).params;
+  const tread::mf::MfParameters<double> fitted = tread::mf::load_mf_parameters(out_tir).params;
+  EXPECT_EQ(fitted.fit_type, tread::mf::FitType::pac2002);
+  for (double fz : {2425.0, 4850.0, 7275.0}) {
+    for (int channel : {0, 1}) {
+      double ss = 0.0, peak = 0.0;
+      int n = 0;
+      for (int i = -300; i <= 300; ++i, ++n) {
+        const double x = i * 1e-3;
+        const double t = channel == 0 ? value_of(truth, fz, x, 0, 0) : value_of(truth, fz, 0, x, 1);
+        const double f =
+            channel == 0 ? value_of(fitted, fz, x, 0, 0) : value_of(fitted, fz, 0, x, 1);
+        ss += (f - t) * (f - t);
+        peak = std::max(peak, std::fabs(t));
+      }
+      EXPECT_LT(std::sqrt(ss / n), 0.01 * peak) << fz << " channel " << channel;
+    }
+  }
+  const auto in_csv = dir / "pac2002_eval_in.csv";
+  {
+    std::ofstream in(in_csv);
+    in << "Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps\n4850,0.05,0.03,0.02,16.7\n";
+  }
+  EXPECT_EQ(run("mf eval --tir " + out_tir.string() + " --input " + in_csv.string() + " --output " +
+                    (dir / "pac2002_eval_out.csv").string(),
+                err),
+            0)
+      << slurp(err);
+  // The wrong model for the start file is refused with a message.
+  EXPECT_NE(run("fit --model mf61 --start " + tir.string() + " --input " + data.string() +
+                    " --output " + (dir / "wrong.tir").string(),
+                err),
+            0);
+  EXPECT_NE(slurp(err).find("--model mf61 needs an MF 6.1/6.2"), std::string::npos) << slurp(err);
 }
 
 }  // namespace
