@@ -110,6 +110,7 @@ VehicleState BrakingManoeuvre::initial_state() const {
 
 void BrakingManoeuvre::reset() {
   abs_integral_nm_.fill(0.0);
+  abs_output_nm_.fill(0.0);
 }
 
 Controls BrakingManoeuvre::controls(double t_s, double dt_s, const VehicleState& state) {
@@ -124,15 +125,20 @@ Controls BrakingManoeuvre::controls(double t_s, double dt_s, const VehicleState&
       c.brake_torque_nm[i] = pedal_torque;
       continue;
     }
-    // Wheel-slip controller on the slip from wheel speed and vehicle speed (straight line).
+    if (state.vx_mps < o_.abs_min_speed_mps) {
+      c.brake_torque_nm[i] = std::fmin(abs_output_nm_[i], pedal_torque);
+      continue;
+    }
+    // Wheel-slip controller on the slip speed from wheel speed and vehicle speed (straight
+    // line), PI with the integrator clamped to the pedal's torque.
     const double target = front ? o_.abs_target_slip_front : o_.abs_target_slip_rear;
-    const double reference_speed = std::fmax(state.vx_mps, 0.1);
-    const double slip = (state.omega_radps[i] * p_.wheel_radius_m - state.vx_mps) / reference_speed;
-    const double error = slip - target;  // < 0: more slip than the target → release
+    const double slip_speed = state.omega_radps[i] * p_.wheel_radius_m - state.vx_mps;
+    const double error = slip_speed - target * state.vx_mps;  // < 0: too much slip → release
     abs_integral_nm_[i] =
-        std::clamp(abs_integral_nm_[i] + o_.abs_ki_nmps * error * dt_s, 0.0, pedal_torque);
+        std::clamp(abs_integral_nm_[i] + o_.abs_ki_nm * error * dt_s, 0.0, pedal_torque);
     c.brake_torque_nm[i] =
-        std::clamp(abs_integral_nm_[i] + o_.abs_kp_nm * error, 0.0, pedal_torque);
+        std::clamp(abs_integral_nm_[i] + o_.abs_kp_nms * error, 0.0, pedal_torque);
+    abs_output_nm_[i] = c.brake_torque_nm[i];
   }
   return c;
 }

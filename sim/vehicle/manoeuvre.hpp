@@ -63,9 +63,14 @@ struct BrakingOptions {
   /// ABS slip targets per axle; 0: the tyre's peak-Fx slip at the expected braking loads.
   double abs_target_slip_front{0.0};
   double abs_target_slip_rear{0.0};
-  double abs_kp_nm{20000.0};     ///< proportional gain, N·m per unit slip error
-  double abs_ki_nmps{400000.0};  ///< integral gain, N·m/s per unit slip error
-  double stop_speed_mps{1.0};    ///< the run ends below this speed
+  /// The ABS works on the slip speed error (ω·R − vx) − κ_target·vx, so its loop gain does not
+  /// grow as the car slows down (on the slip ratio it would, as 1/vx).
+  double abs_kp_nms{1000.0};  ///< proportional gain, N·m per m/s of slip-speed error
+  double abs_ki_nm{20000.0};  ///< integral gain, N·m/s per m/s of slip-speed error
+  /// Below this speed the ABS stops regulating and holds each wheel's last torque (real ABS
+  /// hands over near standstill; the tyre's relaxation is barely damped there).
+  double abs_min_speed_mps{3.0};
+  double stop_speed_mps{1.0};  ///< the run ends below this speed
   double time_limit_s{6.0};
 };
 
@@ -93,6 +98,7 @@ class BrakingManoeuvre final : public Manoeuvre {
   VehicleParams p_;
   BrakingOptions o_;
   std::array<double, kWheelCount> abs_integral_nm_{};
+  std::array<double, kWheelCount> abs_output_nm_{};
 };
 
 // ----------------------------------------------------------------------------------------------
