@@ -280,7 +280,7 @@ double SineDwellManoeuvre::end_of_steer_s() const {
 }
 
 double SineDwellManoeuvre::duration_s() const {
-  return end_of_steer_s() + 2.0;
+  return end_of_steer_s() + 1.8;  // just past the last metric (1.75 s)
 }
 
 VehicleState SineDwellManoeuvre::initial_state() const {

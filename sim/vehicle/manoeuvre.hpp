@@ -157,6 +157,10 @@ struct SineDwellOptions {
 /// the first peak after the steering reversal), yaw_rate_ratio_1_00 and _1_75 (%, r at 1.00 s /
 /// 1.75 s after the end of steer over the peak), lateral_displacement_1_07 (m, of the CG
 /// perpendicular to the initial heading, 1.07 s after the start of steer), end_of_steer (s).
+/// The run ends 1.8 s after the end of steer (4.2 s). With the default vehicle and
+/// MagicFormula61_Parameters.tir the car (no ESC) spins at 6.5 × δ0.3g: yaw-rate ratios near
+/// 100 %, rear slip angles up to 0.74 rad from 3.9 s on (beyond the CAN α range of ±0.655 rad,
+/// which saturates); at 1.5 × δ0.3g it settles (ratios ≈ 0 %).
 class SineDwellManoeuvre final : public Manoeuvre {
  public:
   /// `tyre` is used only when options.amplitude_rad is 0 (to find δ0.3g).
