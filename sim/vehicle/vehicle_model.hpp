@@ -21,8 +21,11 @@
 // so ΣFz = m·g (a wheel load below 0 is taken as 0: lifted wheel).
 //
 // Integration: semi-implicit (symplectic) Euler at the rig's period, forces held over the step:
-// body and wheel velocities first (a brake is a friction torque: it stops a wheel and holds it at
-// ω = 0, never reverses it), then the transient slips and the position from the new velocities.
+// body and wheel velocities first (the body-axis velocity turned exactly by −r·dt, then ΣF/m·dt
+// added; a brake is a friction torque: it stops a wheel and holds it at ω = 0, never reverses
+// it), then the transient slips (their decay implicit) and the position from the new velocities.
+// The forces must be the answers to this state's wheel_inputs(): answers one cycle late make the
+// wheel spin loop unstable at 1 ms (see delay_compensation.hpp).
 // The model never divides by a speed: it stays finite down to and through standstill (the
 // manoeuvres stop below about 1 m/s, where the tyre model's own low-speed reduction takes over).
 // Wheel order and axes: vehicle_params.hpp. Host code (double); step() never allocates.
