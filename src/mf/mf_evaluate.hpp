@@ -114,6 +114,20 @@ struct Basic {
 template <typename T>
 struct Fy0Result {
   T fy0, muy, kya, kyg0, shy, svy, by, cy, zeta2;
+  T dy, ba, ey;  // Fy0 = Dy·sin(Cy·atan(Ba − Ey·(Ba − atan Ba))) + SVy (fy0_finish)
+};
+
+/// Fx0 before its core: Fx0 = Dx·sin(Cx·atan(Bk − Ex·(Bk − atan Bk))) + SVx (fx0_finish).
+template <typename T>
+struct Fx0Args {
+  T dx, cx, bk, ex, svx;
+};
+
+/// A combining factor (Gxa, Gyk) before its two cores: G = cos-core(s1) / cos-core(s0), the
+/// denominator 1 where s0 = 0.
+template <typename T>
+struct CombinedArgs {
+  T c, e, s0, s1;
 };
 
 /// calculateRe: Re by MFeval's fixed-point iteration on omega = (κ·Vx + Vx)/Re (unlimited κ, Fz,
@@ -277,10 +291,10 @@ Basic<T> basic(const MfParameters<T>& p, const Prepared<T>& in, const MfOptions&
   return b;
 }
 
-/// calculateFx0. Returns Fx0; writes mux and Kxk.
+/// calculateFx0 up to its core; writes mux and Kxk.
 template <typename T>
-T fx0(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>& b, const MfOptions& options,
-      T& mux, T& kxk) {
+Fx0Args<T> fx0_args(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>& b,
+                    const MfOptions& options, T& mux, T& kxk) {
   const T dfz = b.dfz;
   const T dpi = b.dpi;
   const T fz = in.fz;
@@ -307,15 +321,22 @@ T fx0(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>& b, const 
   T ex = (p.pex1 + p.pex2 * dfz + p.pex3 * dfz * dfz) * (T(1) - p.pex4 * sgn(kappax)) * p.lex;
   if (options.use_limits && ex > T(1)) ex = T(1);
   const T bk = bx * kappax;
-  T f = dx * mf_sin(cx * mf_atan(bk - ex * (bk - mf_atan(bk)))) + svx;
+  return {dx, cx, bk, ex, svx};
+}
+
+/// Fx0 from its core sin(Cx·atan(Bk − Ex·(Bk − atan Bk))).
+template <typename T>
+T fx0_finish(const Prepared<T>& in, const Fx0Args<T>& a, const T& core) {
+  T f = a.dx * core + a.svx;
   if (in.vx < T(0)) f = -f;
   return f;
 }
 
-/// calculateFy0 with the given γ (and γ*) and turn slip switch (Mz evaluates it again at γ = 0).
+/// calculateFy0 up to its core (everything but fy0), with the given γ (and γ*) and turn slip switch
+/// (Mz evaluates it again at γ = 0).
 template <typename T>
-Fy0Result<T> fy0(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>& b,
-                 const MfOptions& options, const T& gamma_star, bool turn_slip) {
+Fy0Result<T> fy0_args(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>& b,
+                      const MfOptions& options, const T& gamma_star, bool turn_slip) {
   Fy0Result<T> r;
   const T dfz = b.dfz;
   const T dpi = b.dpi;
@@ -390,17 +411,33 @@ Fy0Result<T> fy0(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>
          (T(1) + p.pey5 * gs2 - (p.pey3 + p.pey4 * gamma_star) * sgn_nz(alphay)) * p.ley;
   if (options.use_limits && ey > T(1)) ey = T(1);
   r.by = div_or(r.kya, r.cy * dy + eps * sgn_nz(dy), T(0));
-  const T ba = r.by * alphay;
-  r.fy0 = dy * mf_sin(r.cy * mf_atan(ba - ey * (ba - mf_atan(ba)))) + r.svy;
-  if (options.use_alpha_star && vcx < T(0)) r.fy0 = -r.fy0;
+  r.dy = dy;
+  r.ba = r.by * alphay;
+  r.ey = ey;
   if (is_zero(fz)) r.muy = T(0);
   return r;
 }
 
-/// calculateFy (combined): returns Gyk; writes SVyk (after the low-speed reduction).
+/// Fy0 from its core sin(Cy·atan(Ba − Ey·(Ba − atan Ba))).
 template <typename T>
-T gyk_svyk(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>& b,
-           const MfOptions& options, const T& muy, const T& zeta2, T& svyk) {
+void fy0_finish(const Prepared<T>& in, const MfOptions& options, const T& core, Fy0Result<T>& r) {
+  r.fy0 = r.dy * core + r.svy;
+  if (options.use_alpha_star && in.vx < T(0)) r.fy0 = -r.fy0;
+}
+
+/// calculateFy0 in one go (the paths that do not batch their cores).
+template <typename T>
+Fy0Result<T> fy0(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>& b,
+                 const MfOptions& options, const T& gamma_star, bool turn_slip) {
+  Fy0Result<T> r = fy0_args(p, in, b, options, gamma_star, turn_slip);
+  fy0_finish(in, options, mf_sin(r.cy * mf_atan(r.ba - r.ey * (r.ba - mf_atan(r.ba)))), r);
+  return r;
+}
+
+/// calculateFy (combined) up to Gyk's cores; writes SVyk (after the low-speed reduction).
+template <typename T>
+CombinedArgs<T> gyk_args(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>& b,
+                         const MfOptions& options, const T& muy, const T& zeta2, T& svyk) {
   const T dfz = b.dfz;
   const T dvyk = muy * in.fz * (p.rvy1 + p.rvy2 * dfz + p.rvy3 * b.gamma_star) *
                  cos_atan(p.rvy4 * b.alpha_star) * zeta2;
@@ -412,18 +449,21 @@ T gyk_svyk(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>& b,
   const T byk = (p.rby1 + p.rby4 * b.gamma_star * b.gamma_star) *
                 cos_atan(p.rby2 * (b.alpha_star - p.rby3)) * p.lyka;
   const T kappas = in.kappa + shyk;
-  const T s0 = byk * shyk;
-  const T gyk0 = is_zero(s0) ? T(1) : mf_cos(cyk * mf_atan(s0 - eyk * (s0 - mf_atan(s0))));
-  const T s1 = byk * kappas;
-  const T gyk = div_or(mf_cos(cyk * mf_atan(s1 - eyk * (s1 - mf_atan(s1)))), gyk0, T(1));
   if (in.is_low_speed) svyk = svyk * in.reduction_smooth;
-  return gyk;
+  return {cyk, eyk, byk * shyk, byk * kappas};
 }
 
-/// calculateFx (combined): Gxa.
+/// Gxa or Gyk from its two cores cos(C·atan(s − E·(s − atan s))) at s0 and s1.
 template <typename T>
-T gxa(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>& b,
-      const MfOptions& options) {
+T combined_finish(const CombinedArgs<T>& a, const T& core0, const T& core1) {
+  const T g0 = is_zero(a.s0) ? T(1) : core0;
+  return div_or(core1, g0, T(1));
+}
+
+/// calculateFx (combined): Gxa up to its cores.
+template <typename T>
+CombinedArgs<T> gxa_args(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>& b,
+                         const MfOptions& options) {
   const T cxa = p.rcx1;
   T exa = p.rex1 + p.rex2 * b.dfz;
   if (options.use_limits && exa > T(1)) exa = T(1);
@@ -431,10 +471,7 @@ T gxa(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>& b,
   const T bxa =
       (p.rbx1 + p.rbx3 * b.gamma_star_x * b.gamma_star_x) * cos_atan(p.rbx2 * in.kappa) * p.lxal;
   const T alphas = b.alpha_star + shxa;
-  const T s0 = bxa * shxa;
-  const T gxa0 = is_zero(s0) ? T(1) : mf_cos(cxa * mf_atan(s0 - exa * (s0 - mf_atan(s0))));
-  const T s1 = bxa * alphas;
-  return div_or(mf_cos(cxa * mf_atan(s1 - exa * (s1 - mf_atan(s1)))), gxa0, T(1));
+  return {cxa, exa, bxa * shxa, bxa * alphas};
 }
 
 /// calculateMx.
@@ -547,16 +584,30 @@ MfOutput<T> evaluate(const MfParameters<T>& params, const MfInput<T>& input,
 
   T mux = T(0);
   T kxk = T(0);
-  const T fx_pure = fx0(p, in, b, options, mux, kxk);
-  const Fy0Result<T> y0 = fy0(p, in, b, options, b.gamma_star, options.use_turn_slip);
+  const Fx0Args<T> x0 = fx0_args(p, in, b, options, mux, kxk);
+  Fy0Result<T> y0 = fy0_args(p, in, b, options, b.gamma_star, options.use_turn_slip);
 
-  // Combined slip (or, with options.combined off, the pure-slip forces).
+  // Combined slip (or, with options.combined off, the pure-slip forces). The Magic Formula cores
+  // are evaluated four at a time (mf_cores: one pass of four lanes in float, one by one otherwise):
+  // here Fx0, Fy0 and Gyk's two; Gxa's two, the trail's and Fy0(γ = 0)'s with Mz below.
   T svyk = T(0);
   T gyk = T(1);
-  if (options.combined || options.use_turn_slip) {
-    gyk = gyk_svyk(p, in, b, options, y0.muy, y0.zeta2, svyk);
+  Cores<T> cores;
+  const int lane_fx0 = cores.add(x0.cx, x0.bk, x0.ex, false);
+  const int lane_fy0 = cores.add(y0.cy, y0.ba, y0.ey, false);
+  const bool with_gyk = options.combined || options.use_turn_slip;
+  CombinedArgs<T> gyk_a{};
+  if (with_gyk) {
+    gyk_a = gyk_args(p, in, b, options, y0.muy, y0.zeta2, svyk);
+    static_cast<void>(cores.add(gyk_a.c, gyk_a.s0, gyk_a.e, true));
+    static_cast<void>(cores.add(gyk_a.c, gyk_a.s1, gyk_a.e, true));
   }
-  const T fx = options.combined ? gxa(p, in, b, options) * fx_pure : fx_pure;
+  T core_out[4];
+  mf_cores(cores, core_out);
+  const T fx_pure = fx0_finish(in, x0, core_out[lane_fx0]);
+  fy0_finish(in, options, core_out[lane_fy0], y0);
+  if (with_gyk) gyk = combined_finish(gyk_a, core_out[2], core_out[3]);
+  T fx = fx_pure;  // combined: Gxa·Fx0, with Mz's cores below
   const T fy = options.combined ? gyk * y0.fy0 + svyk : y0.fy0;
 
   // Aligning moment: calculateMz0's trail and residual-moment coefficients.
@@ -638,18 +689,33 @@ MfOutput<T> evaluate(const MfParameters<T>& params, const MfInput<T>& input,
     const T s = r0 * (p.ssz1 + p.ssz2 * (fy / p.fnomin_n) + (p.ssz3 + p.ssz4 * dfz) * g) * p.ls;
     mzr = dr * mf_cos(cr * mf_atan(br * alphar_eq));
     const T bta = bt * alphat_eq;
-    t = dt * mf_cos(ct * mf_atan(bta - et * (bta - mf_atan(bta)))) * b.cos_alpha_prime;
+    // Cores: the trail, Gxa's two and (MF 6.x) Fy0 at γ = 0 for Fy' (turn slip as in the main
+    // evaluation; MFeval evaluates Gyk again at γ = 0 but with the original γ* (its starVar),
+    // which is the same Gyk).
+    const bool mf5x = p.fit_type == FitType::mf52 || p.fit_type == FitType::pac2002;
+    const CombinedArgs<T> gxa_a = gxa_args(p, in, b, options);
+    Fy0Result<T> y00{};
+    Cores<T> mz_cores;
+    static_cast<void>(mz_cores.add(ct, bta, et, true));
+    static_cast<void>(mz_cores.add(gxa_a.c, gxa_a.s0, gxa_a.e, true));
+    static_cast<void>(mz_cores.add(gxa_a.c, gxa_a.s1, gxa_a.e, true));
+    if (!mf5x) {
+      y00 = fy0_args(p, in, b, options, T(0), options.use_turn_slip);
+      static_cast<void>(mz_cores.add(y00.cy, y00.ba, y00.ey, false));
+    }
+    T mz_out[4];
+    mf_cores(mz_cores, mz_out);
+    fx = combined_finish(gxa_a, mz_out[1], mz_out[2]) * fx_pure;
+    t = dt * mz_out[0] * b.cos_alpha_prime;
     t = t * p.lfzo;
     if (in.is_low_speed) {
       t = t * in.reduction_smooth;
       mzr = mzr * in.reduction_smooth;
     }
-    if (p.fit_type == FitType::mf52 || p.fit_type == FitType::pac2002) {
+    if (mf5x) {
       mz = -t * (fy - svyk) + mzr + s * fx;
     } else {
-      // Fy' = Gyk·Fy0(γ = 0), turn slip as in the main evaluation. MFeval evaluates Gyk again at
-      // γ = 0 but with the original γ* (its starVar), which is the same Gyk.
-      const Fy0Result<T> y00 = fy0(p, in, b, options, T(0), options.use_turn_slip);
+      fy0_finish(in, options, mz_out[3], y00);  // Fy' = Gyk·Fy0(γ = 0)
       mz = -t * (gyk * y00.fy0) + mzr + s * fx;
     }
   }

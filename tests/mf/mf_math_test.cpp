@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
 
@@ -76,6 +77,105 @@ TEST(MfMath, OutsideTheFastRangesStillFinite) {
   // Beyond the reduction's range tan is libm's.
   EXPECT_EQ(fast::tan(1e20f), std::tan(1e20f));
   EXPECT_EQ(fast::tan(0.0f), 0.0f);
+}
+
+// The four-lane float functions behind mf_cores: fast::atan4 (same bound as fast::atan) over
+// |x| ≤ 1e7, fast::sin_cos4 over the whole range it is used on, |y| ≤ kTrigMax.
+TEST(MfMath, FourLaneAtanAbsoluteErrorBelow2em7) {
+  double worst = 0.0;
+  for (double hi : {20.0, 1e7}) {
+    const int n = 400000;
+    for (int i = 0; i <= n; i += 4) {
+      fast::F4 x;
+      for (int lane = 0; lane < 4; ++lane) {
+        x[lane] = static_cast<float>(-hi + 2.0 * hi * (i + lane) / n);
+      }
+      const fast::F4 got = fast::atan4(x);
+      for (int lane = 0; lane < 4; ++lane) {
+        const double err =
+            std::fabs(static_cast<double>(got[lane]) - std::atan(static_cast<double>(x[lane])));
+        worst = std::max(worst, err);
+      }
+    }
+  }
+  std::printf("[ max err  ] atan4 %.3g (absolute)\n", worst);
+  EXPECT_LT(worst, 2e-7);
+}
+
+TEST(MfMath, FourLaneSinCosAbsoluteErrorBelow2em7UpToAFewTurnsAnd1em6Beyond) {
+  // The reduction's rounding grows with |y| (k·π/2 in three parts): a few turns, as the Magic
+  // Formula's C·atan(...) gives (|y| ≤ |C|·π/2), stay at the polynomials' error.
+  double worst_small = 0.0;
+  double worst_large = 0.0;
+  for (double hi : {10.0, static_cast<double>(fast::kTrigMax)}) {
+    const int n = 1000000;
+    for (int i = 0; i <= n; i += 4) {
+      fast::F4 y;
+      for (int lane = 0; lane < 4; ++lane) {
+        y[lane] = static_cast<float>(-hi + 2.0 * hi * (i + lane) / n);
+      }
+      const fast::F4 s = fast::sin_cos4(y, fast::I4{});
+      const fast::F4 c = fast::sin_cos4(y, fast::I4{} + 1);
+      for (int lane = 0; lane < 4; ++lane) {
+        const double yd = static_cast<double>(y[lane]);
+        const double err = std::max(std::fabs(static_cast<double>(s[lane]) - std::sin(yd)),
+                                    std::fabs(static_cast<double>(c[lane]) - std::cos(yd)));
+        (hi <= 10.0 ? worst_small : worst_large) =
+            std::max(hi <= 10.0 ? worst_small : worst_large, err);
+      }
+    }
+  }
+  std::printf("[ max err  ] sin/cos four lanes %.3g on |y| <= 10, %.3g on |y| <= %g (absolute)\n",
+              worst_small, worst_large, static_cast<double>(fast::kTrigMax));
+  EXPECT_LT(worst_small, 2e-7);
+  EXPECT_LT(worst_large, 1e-6);
+}
+
+// The core itself against the same formula in scalar float (fast::atan, libm sin/cos) for the
+// Magic Formula's ranges: C in [0.5, 2.5], E in [−3, 1], |x| ≤ 20, sin and cos lanes mixed.
+TEST(MfMath, FourLaneCoreMatchesTheScalarFloatFormulaWithin5em7) {
+  double worst = 0.0;
+  std::uint32_t state = 2024U;
+  const auto uniform = [&state](double lo, double hi) {
+    state = state * 1664525U + 1013904223U;
+    return lo + (hi - lo) * static_cast<double>(state >> 8U) / 16777216.0;
+  };
+  for (int n = 0; n < 200000; ++n) {
+    Cores<float> cores;
+    for (int lane = 0; lane < 4; ++lane) {
+      cores.add(static_cast<float>(uniform(0.5, 2.5)), static_cast<float>(uniform(-20.0, 20.0)),
+                static_cast<float>(uniform(-3.0, 1.0)), (n + lane) % 2 == 0);
+    }
+    float out[4];
+    mf_cores(cores, out);
+    for (int lane = 0; lane < 4; ++lane) {
+      const float x = cores.x[lane];
+      const float y = cores.c[lane] * fast::atan(x - cores.e[lane] * (x - fast::atan(x)));
+      const float want = cores.cosine[lane] ? std::cos(y) : std::sin(y);
+      worst = std::max(worst, static_cast<double>(std::fabs(out[lane] - want)));
+    }
+  }
+  std::printf("[ max err  ] four-lane core vs scalar float %.3g (absolute)\n", worst);
+  EXPECT_LT(worst, 5e-7);
+}
+
+TEST(MfMath, FourLaneCoreMatchesTheScalarFormulaLaneByLane) {
+  // Fewer than four lanes, huge angles (libm fallback), infinite and huge x: each lane is what the
+  // scalar float functions give within the four-lane error, and finite wherever they are.
+  Cores<float> cores;
+  cores.add(1.6f, 3.0f, -0.5f, false);
+  cores.add(4.0e4f, 10.0f, 0.2f, true);  // |C·atan| > kTrigMax: libm
+  cores.add(1.3f, std::numeric_limits<float>::max(), 0.0f, false);
+  float out[4];
+  mf_cores(cores, out);
+  for (int lane = 0; lane < 3; ++lane) {
+    const float x = cores.x[lane];
+    const float y = cores.c[lane] * fast::atan(x - cores.e[lane] * (x - fast::atan(x)));
+    const float want = cores.cosine[lane] ? std::cos(y) : std::sin(y);
+    EXPECT_TRUE(std::isfinite(out[lane])) << lane;
+    EXPECT_NEAR(out[lane], want, 5e-6f) << lane;
+  }
+  EXPECT_EQ(out[3], 0.0f);  // unused lane: C = 0
 }
 
 }  // namespace
