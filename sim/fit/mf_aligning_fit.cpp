@@ -78,4 +78,23 @@ std::vector<StageResult> fit_aligning_stages(
   return results;
 }
 
+std::vector<StageResult> refit_aligning_pure(
+    const MeasurementSet& data, const std::vector<double>& levels, MfFitModel model,
+    mf::MfParameters<double>& params, const std::function<void(const std::string&)>& progress) {
+  std::vector<StageResult> results;
+  const std::vector<StageSample> pure = select_samples(
+      data, levels, FitChannel::mz,
+      [](const MeasurementPoint& m) { return std::fabs(m.kappa) <= kPureTolerance; });
+  std::vector<std::string> keys = aligning_keys();
+  bool any_camber = false;
+  for (const auto& s : pure) any_camber = any_camber || std::fabs(s.gamma_rad) > kPureTolerance;
+  if (any_camber) {
+    for (auto& k : aligning_camber_keys(model)) keys.push_back(k);
+  }
+  if (pure.size() <= keys.size()) return results;
+  results.push_back(
+      fit_stage({"Mz0 (pass 2, with s Fx)", keys, 100}, pure, levels, params, progress));
+  return results;
+}
+
 }  // namespace tread::fit

@@ -25,4 +25,12 @@ std::vector<StageResult> fit_aligning_stages(
     const MeasurementSet& data, const std::vector<double>& levels, MfFitModel model,
     mf::MfParameters<double>& params, const std::function<void(const std::string&)>& progress);
 
+/// The second pass after the combined stages: the pure-slip Mz points also carry s·Fx (Fx0 at
+/// κ = 0 is SVx plus the SHx slope), which the first pass had to absorb into the trail and residual
+/// terms while SSZ was still 0. With SSZ fitted, all the aligning coefficients of the first pass
+/// are fitted again on the points at κ = 0 (every camber).
+std::vector<StageResult> refit_aligning_pure(
+    const MeasurementSet& data, const std::vector<double>& levels, MfFitModel model,
+    mf::MfParameters<double>& params, const std::function<void(const std::string&)>& progress);
+
 }  // namespace tread::fit

@@ -1,6 +1,7 @@
 #include "fit/mf_combined_fit.hpp"
 
 #include <cmath>
+#include <utility>
 
 namespace tread::fit {
 namespace {
@@ -34,7 +35,6 @@ std::vector<StageResult> fit_combined_stages(
   std::vector<StageResult> results;
   const std::vector<StageSample> fx = select_samples(data, levels, FitChannel::fx, combined_point);
   const std::vector<StageSample> fy = select_samples(data, levels, FitChannel::fy, combined_point);
-  const std::vector<StageSample> mz = select_samples(data, levels, FitChannel::mz, combined_point);
   if (fx.size() > combined_fx_keys(model).size()) {
     results.push_back(fit_stage(
         {"Fx (combined)",
@@ -51,9 +51,31 @@ std::vector<StageResult> fit_combined_stages(
          {{{"RBY1", 10.0}, {"RBY2", 10.0}}, {{"RBY1", 25.0}, {"RBY2", 15.0}, {"REY1", 0.5}}}},
         fy, levels, params, progress));
   }
-  if (mz.size() > combined_mz_keys().size()) {
-    results.push_back(
-        fit_stage({"Mz (combined)", combined_mz_keys(), 100}, mz, levels, params, progress));
+  if (!fx.empty()) {
+    for (auto& r : fit_combined_mz(data, levels, params, progress, "Mz (combined)")) {
+      results.push_back(std::move(r));
+    }
+  }
+  return results;
+}
+
+std::vector<StageResult> fit_combined_mz(const MeasurementSet& data,
+                                         const std::vector<double>& levels,
+                                         mf::MfParameters<double>& params,
+                                         const std::function<void(const std::string&)>& progress,
+                                         const std::string& name) {
+  std::vector<StageResult> results;
+  // The Fx arm s·Fx of Mz also acts at κ = 0 (Fx0(0) = SVx and the SHx slope): the SSZ stage
+  // sees every Mz point.
+  const std::vector<StageSample> mz =
+      select_samples(data, levels, FitChannel::mz, [](const MeasurementPoint&) { return true; });
+  bool any_combined = false;
+  for (const auto& s : mz) {
+    any_combined = any_combined ||
+                   (std::fabs(s.kappa) > kPureTolerance && std::fabs(s.alpha_rad) > kPureTolerance);
+  }
+  if (any_combined && mz.size() > combined_mz_keys().size()) {
+    results.push_back(fit_stage({name, combined_mz_keys(), 100}, mz, levels, params, progress));
   }
   return results;
 }

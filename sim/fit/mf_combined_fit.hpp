@@ -3,9 +3,9 @@
 // (mf_stage_fit.hpp), after the pure-slip stages (their coefficients held): the weighting
 // functions Gxα of Fx (RBX1, RBX2, RCX1, REX1, REX2, RHX1; MF 6.1 also RBX3) and Gyκ with the
 // κ-induced side force SVyκ of Fy (RBY1…3, RCY1, REY1, REY2, RHY1, RHY2, RVY1…6; MF 6.1 also
-// RBY4) on the points with both slips non-zero, then the Fx moment arm of Mz (SSZ1…4) on the
-// Mz of those points. Starting values: the current (book) ones and, for Gxα and Gyκ, two more
-// (steeper weighting functions; the lowest cost wins). Host side.
+// RBY4) on the points with both slips non-zero, then the Fx moment arm of Mz (SSZ1…4) on every
+// Mz point (s·Fx acts at κ = 0 too). Starting values: the current (book) ones and, for Gxα and Gyκ,
+// two more (steeper weighting functions; the lowest cost wins). Host side.
 
 #include <functional>
 #include <string>
@@ -25,5 +25,12 @@ std::vector<std::string> combined_mz_keys();
 std::vector<StageResult> fit_combined_stages(
     const MeasurementSet& data, const std::vector<double>& levels, MfFitModel model,
     mf::MfParameters<double>& params, const std::function<void(const std::string&)>& progress);
+
+/// The SSZ stage alone (on every Mz point, needs combined points), named `name`.
+std::vector<StageResult> fit_combined_mz(const MeasurementSet& data,
+                                         const std::vector<double>& levels,
+                                         mf::MfParameters<double>& params,
+                                         const std::function<void(const std::string&)>& progress,
+                                         const std::string& name);
 
 }  // namespace tread::fit

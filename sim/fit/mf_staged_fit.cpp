@@ -93,6 +93,13 @@ StagedFit fit_mf_staged(const MeasurementSet& data, const mf::MfParameters<doubl
   run(fit_lateral_stages(data, fit.levels, model, fit.params, progress));
   run(fit_aligning_stages(data, fit.levels, model, fit.params, progress));
   run(fit_combined_stages(data, fit.levels, model, fit.params, progress));
+  // Second pass of Mz: s·Fx acts on the pure-slip points too (see refit_aligning_pure).
+  bool ssz_fitted = false;
+  for (const auto& s : fit.stages) ssz_fitted = ssz_fitted || s.name == "Mz (combined)";
+  if (ssz_fitted) {
+    run(refit_aligning_pure(data, fit.levels, model, fit.params, progress));
+    run(fit_combined_mz(data, fit.levels, fit.params, progress, "Mz (combined, pass 2)"));
+  }
   fit.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return fit;
 }
