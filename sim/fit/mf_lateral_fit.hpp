@@ -1,12 +1,14 @@
 #pragma once
-// Stage 2 of `tread fit`, first step: MF 6.1 / PAC2002 pure lateral force Fy0(α, Fz) at γ = 0,
-// fitted through the templated core (tread::mf::evaluate<ceres::Jet>, uncombined, no extras) —
-// no second copy of the equations. The coefficients fitted are the γ-free ones of the lateral
-// section: PCY1, PDY1, PDY2, PEY1, PEY2, PEY3, PKY1, PKY2, PKY4, PHY1, PHY2, PVY1, PVY2; every
-// other coefficient (FNOMIN, scaling factors, ...) comes from the starting set. Bounds: 1 < PCY1 <
-// 3, PEY1 < 1. Points used: |κ| and |γ| ≤ 1e-3 with a measured Fy. Staged as practitioners do:
-// Stage 1 basic-formula fits per load give the starting coefficients (C, μ(dfz), E(dfz), SH, SV/Fz
-// lines, a small fit of Kya(Fz)), then all 13 are fitted together. Host side: allocates, throws.
+// Stage 2 of `tread fit`, pure lateral force Fy0(α, Fz, γ) of MF 6.1 / PAC2002, through the
+// staged engine (mf_stage_fit.hpp: tread::mf::evaluate<ceres::Jet>, combined slip, limits on) —
+// no second copy of the equations. First the γ-free coefficients of the lateral section (PCY1,
+// PDY1, PDY2, PEY1, PEY2, PEY3, PKY1, PKY2, PKY4, PHY1, PHY2, PVY1, PVY2) on the points with
+// |κ|, |γ| ≤ 1e-3, then those with the camber terms on every camber; every other coefficient
+// (FNOMIN, scaling factors, ...) comes from the starting set. Bounds: 1 < PCY1 < 3, PEY1 < 1,
+// 0.1 < PKY4 < 3. Staged as practitioners do: Stage 1 basic-formula fits per load give the
+// starting coefficients (C, μ(dfz), E(dfz), SH, SV/Fz lines, a small fit of Kya(Fz)).
+// fit_mf_pure_lateral is the γ = 0 stage alone (the benchmark). Host side: allocates,
+// throws.
 
 #include <array>
 #include <functional>
