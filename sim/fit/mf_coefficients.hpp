@@ -41,7 +41,8 @@ const T& coefficient(const mf::MfParameters<T>& p, int index) {
 
 /// Lower and upper bound of a fitted coefficient (±infinity where free). The seed's 1 < C < 3 for
 /// the force shape factors, curvatures E ≤ 1, positive shape and slope factors of the trail and
-/// of the combined-slip weighting functions.
+/// of the combined-slip weighting functions, a finite range for the residual torque's Br (QBZ9,
+/// QBZ10).
 struct CoefficientBounds {
   double lower, upper;
 };

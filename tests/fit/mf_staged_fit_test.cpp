@@ -10,8 +10,9 @@
 //   - the force curves within 1 % RMS of the true curves, relative to the true peak force at that
 //     load: Fx(κ) and Fy(α) at every camber of the grid, and combined Fx and Fy along every
 //     combined sweep of the grid.
-// The aligning moment is printed (same measure) but not asserted: the criterion is for the
-// forces. Excluded files: chrono_feda_335_65R22_5_G275MSA_60psi.tir (FITTYP 5, an MF 5.0 truck
+//   - the aligning moment Mz(α) the same way (1 % of the true peak |Mz| at that load), pure and
+//     combined. Excluded files: chrono_feda_335_65R22_5_G275MSA_60psi.tir (FITTYP 5, an MF 5.0
+//     truck
 // tyre: the core does not evaluate it) and chrono_HMMWV_Pac89Tire.json (PAC89: another model, not
 // an MF 5.2/6.1/PAC2002 coefficient set).
 #include "fit/mf_staged_fit.hpp"
@@ -139,6 +140,7 @@ TEST_P(MfStagedFit, RecoversStiffnessFrictionAndCurvesFromNeutralStart) {
                         mz_peak;
       EXPECT_LT(rx, 0.01) << c.file << " Fx(kappa) Fz " << fz << " gamma " << g;
       EXPECT_LT(ry, 0.01) << c.file << " Fy(alpha) Fz " << fz << " gamma " << g;
+      EXPECT_LT(rz, 0.01) << c.file << " Mz(alpha) Fz " << fz << " gamma " << g;
       worst_fx = std::max(worst_fx, rx);
       worst_fy = std::max(worst_fy, ry);
       worst_mz = std::max(worst_mz, rz);
@@ -157,6 +159,7 @@ TEST_P(MfStagedFit, RecoversStiffnessFrictionAndCurvesFromNeutralStart) {
                           mz_peak;
         EXPECT_LT(rx, 0.01) << c.file << " combined Fx(kappa) alpha " << a << " Fz " << fz;
         EXPECT_LT(ry, 0.01) << c.file << " combined Fy(kappa) alpha " << a << " Fz " << fz;
+        EXPECT_LT(rz, 0.01) << c.file << " combined Mz(kappa) alpha " << a << " Fz " << fz;
         worst_cfx = std::max(worst_cfx, rx);
         worst_cfy = std::max(worst_cfy, ry);
         worst_cmz = std::max(worst_cmz, rz);
@@ -173,6 +176,7 @@ TEST_P(MfStagedFit, RecoversStiffnessFrictionAndCurvesFromNeutralStart) {
                           mz_peak;
         EXPECT_LT(rx, 0.01) << c.file << " combined Fx(alpha) kappa " << k << " Fz " << fz;
         EXPECT_LT(ry, 0.01) << c.file << " combined Fy(alpha) kappa " << k << " Fz " << fz;
+        EXPECT_LT(rz, 0.01) << c.file << " combined Mz(alpha) kappa " << k << " Fz " << fz;
         worst_cfx = std::max(worst_cfx, rx);
         worst_cfy = std::max(worst_cfy, ry);
         worst_cmz = std::max(worst_cmz, rz);
