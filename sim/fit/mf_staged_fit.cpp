@@ -1,5 +1,6 @@
 #include "fit/mf_staged_fit.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -138,6 +139,32 @@ void write_staged_report(const StagedFit& fit, const MeasurementSet& data, std::
           << st.points << " | " << number(st.rms, 4) << ' ' << fit_channel_unit(st.channel) << " | "
           << number(st.r2, 6) << " |\n";
     }
+  }
+  out << "\n## Characteristics of the fitted set (gamma = 0, Vx of the data)\n\n"
+      << "| Fz (N) | Kx = dFx/dkappa (N) | Kalpha = dFy/dalpha (N/rad) | mux = max abs(Fx)/Fz "
+         "(abs(kappa) <= 0.3) | muy = max abs(Fy)/Fz (abs(alpha) <= 0.3 rad) "
+         "|\n|---|---|---|---|---|\n";
+  const double vx = data.points.empty() ? 16.7 : data.points.front().vx_mps;
+  for (double fz : fit.levels) {
+    StageSample q;
+    q.fz_n = fz;
+    q.vx_mps = vx;
+    auto at = [&](FitChannel c, double kappa, double alpha) {
+      q.channel = c;
+      q.kappa = kappa;
+      q.alpha_rad = alpha;
+      return model_value(fit.params, q);
+    };
+    const double h = 1e-5;
+    const double kx = (at(FitChannel::fx, h, 0) - at(FitChannel::fx, -h, 0)) / (2 * h);
+    const double ky = (at(FitChannel::fy, 0, h) - at(FitChannel::fy, 0, -h)) / (2 * h);
+    double fx_peak = 0.0, fy_peak = 0.0;
+    for (int i = -300; i <= 300; ++i) {
+      fx_peak = std::max(fx_peak, std::fabs(at(FitChannel::fx, i * 1e-3, 0)));
+      fy_peak = std::max(fy_peak, std::fabs(at(FitChannel::fy, 0, i * 1e-3)));
+    }
+    out << "| " << number(fz, 6) << " | " << number(kx) << " | " << number(ky) << " | "
+        << number(fx_peak / fz, 4) << " | " << number(fy_peak / fz, 4) << " |\n";
   }
   out << "\n## Final coefficient set on every point\n\n| channel | Fz (N) | points | RMS | R² |\n"
       << "|---|---|---|---|---|\n";

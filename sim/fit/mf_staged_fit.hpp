@@ -48,7 +48,8 @@ StagedFit fit_mf_staged(const MeasurementSet& data, const mf::MfParameters<doubl
 void set_fitted_coefficients(tir::TirFile& file, const StagedFit& fit);
 
 /// Markdown report: per stage the coefficients ± standard deviations, iterations, time, and RMS /
-/// R² per channel and load; then RMS / R² of the final set on every point.
+/// R² per channel and load; the fitted set's slip stiffnesses and peak friction per load; then
+/// RMS / R² of the final set on every point.
 void write_staged_report(const StagedFit& fit, const MeasurementSet& data, std::ostream& out);
 
 /// PNG plots in `dir` (created), one per load and channel: measured Fx(κ) at α = 0, Fy(α) and
