@@ -798,7 +798,7 @@ MfOutput<T> evaluate(const MfParameters<T>& params, const MfInput<T>& input,
     }
 
     // calculateContactPatch.
-    {
+    if (!options.extras_loaded_radius_only) {
       const T ncz = p.vertical_stiffness_npm * (T(1) + p.pfz1 * dpi);
       T fz = in.ufz;
       const T rl_approx = r0 - fz / ncz;
@@ -826,7 +826,7 @@ MfOutput<T> evaluate(const MfParameters<T>& params, const MfInput<T>& input,
     }
 
     // calculateRelax.
-    {
+    if (!options.extras_loaded_radius_only) {
       const T dfz_r = (in.fz - b.fz0_prime) / b.fz0_prime;
       out.cx_npm = p.longitudinal_stiffness_npm *
                    (T(1) + p.pcfx1 * dfz_r + p.pcfx2 * dfz_r * dfz_r) * (T(1) + p.pcfx3 * dpi);

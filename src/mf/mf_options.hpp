@@ -29,6 +29,9 @@ struct MfOptions {
   /// Also compute Re, Rl, rho, contact patch, Cx/Cy/Cz and relaxation lengths. Forces and moments
   /// do not need them (except the turn-slip spin, which needs the rolling speed from Re).
   bool extras = true;
+  /// With extras: only what the loaded radius needs (Re, ω, Rl, ρ, Cz); the contact patch, Cx/Cy
+  /// and the relaxation lengths stay 0. For a real-time caller that sends Rl alone.
+  bool extras_loaded_radius_only = false;
 };
 
 /// MFeval's useMode (111…222). Status::invalid_argument for any other number.

@@ -12,8 +12,11 @@ class MfTyreChannel {
  public:
   MfTyreChannel() = default;
   /// `params` must outlive the channel.
+  /// The node sends Rl alone of the extras: the contact patch and relaxation lengths are skipped.
   MfTyreChannel(const mf::MfParameters<float>& params, const mf::MfOptions& options) noexcept
-      : params_(&params), options_(options) {}
+      : params_(&params), options_(options) {
+    options_.extras_loaded_radius_only = true;
+  }
 
   TyreResult evaluate(const proto::WheelInput& in, float /*dt_s*/) noexcept {
     TyreResult result;

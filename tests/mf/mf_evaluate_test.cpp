@@ -181,6 +181,48 @@ TEST(MfEvaluate, EnvelopeFlagsAbsurdInputs) {
   EXPECT_EQ(evaluate(p, make_input(4000.0, 0.1, 0.1, 0.0, 1e5), o).status, Status::out_of_range);
 }
 
+TEST(MfEvaluate, LoadedRadiusOnlyExtrasGiveTheSameRadiiAndSkipTheRest) {
+  // MfOptions::extras_loaded_radius_only (the node's Rl): forces, moments, Re, Rl, rho and Cz as
+  // with all extras, bit for bit (float and double); contact patch and relaxation lengths 0.
+  const auto check = [](auto scalar) {
+    using T = decltype(scalar);
+    for (const FitType fit : {FitType::mf61, FitType::mf62, FitType::mf52}) {
+      MfParameters<T> p;
+      p.fit_type = fit;
+      MfOptions all;
+      MfOptions rl_only;
+      rl_only.extras_loaded_radius_only = true;
+      MfInput<T> in;
+      in.fz_n = T(4200);
+      in.kappa = T(0.05);
+      in.alpha_rad = T(-0.04);
+      in.gamma_rad = T(0.02);
+      in.vx_mps = T(16.7);
+      const MfOutput<T> a = evaluate(p, in, all);
+      const MfOutput<T> b = evaluate(p, in, rl_only);
+      EXPECT_EQ(a.fx_n, b.fx_n);
+      EXPECT_EQ(a.fy_n, b.fy_n);
+      EXPECT_EQ(a.mz_nm, b.mz_nm);
+      EXPECT_EQ(a.mx_nm, b.mx_nm);
+      EXPECT_EQ(a.my_nm, b.my_nm);
+      EXPECT_EQ(a.re_m, b.re_m);
+      EXPECT_EQ(a.rl_m, b.rl_m);
+      EXPECT_EQ(a.rho_m, b.rho_m);
+      EXPECT_EQ(a.cz_npm, b.cz_npm);
+      EXPECT_GT(a.rl_m, T(0.25));
+      EXPECT_GT(a.contact_length_m, T(0));
+      EXPECT_GT(a.cx_npm, T(0));
+      EXPECT_EQ(b.contact_length_m, T(0));
+      EXPECT_EQ(b.contact_width_m, T(0));
+      EXPECT_EQ(b.cx_npm, T(0));
+      EXPECT_EQ(b.sigmax_m, T(0));
+      EXPECT_EQ(b.sigmay_m, T(0));
+    }
+  };
+  check(0.0);
+  check(0.0f);
+}
+
 TEST(MfEvaluate, FloatFollowsDouble) {
   const MfParameters<double> pd;
   const MfParameters<float> pf = convert_parameters<float>(pd);
