@@ -93,15 +93,13 @@ struct SignalSpec {
   float factor_f;  ///< factor and offset as float for the real-time path
   float offset_f;
   float inverse_factor_f;  ///< 1 / factor, so encoding multiplies
-  // Derived once, at compile time, for the per-frame path:
-  std::int64_t raw_min_value;  ///< raw_min()
-  std::int64_t raw_max_value;  ///< raw_max()
-  float raw_min_f;             ///< raw_min() as float (exact: |raw_min| ≤ 2^31)
-  float raw_max_f;             ///< raw_max() as float (may round up for 32-bit signals)
-  std::uint64_t raw_mask;      ///< the low `length` bits
-  bool whole_bytes;            ///< starts on a byte and spans whole bytes
-  std::uint8_t first_byte;     ///< start_bit / 8
-  std::uint8_t byte_count;     ///< length / 8 when whole_bytes
+  // Derived once, at compile time, for the per-frame path (12 bytes a signal: the tables may live
+  // in RAM on a microcontroller):
+  float raw_min_f;          ///< raw_min() as float (exact: |raw_min| ≤ 2^31)
+  float raw_max_f;          ///< raw_max() as float (may round up for 32-bit signals)
+  bool whole_bytes;         ///< starts on a byte and spans whole bytes
+  std::uint8_t first_byte;  ///< start_bit / 8
+  std::uint8_t byte_count;  ///< length / 8 when whole_bytes
 
   constexpr SignalSpec() : SignalSpec(Role::crc, "", -1, 0, 8, false, 1.0, 0.0, "") {}
   constexpr SignalSpec(Role role_, const char* name_, std::int8_t instance_, std::uint16_t start,
@@ -119,17 +117,18 @@ struct SignalSpec {
         factor_f(static_cast<float>(factor_)),
         offset_f(static_cast<float>(offset_)),
         inverse_factor_f(static_cast<float>(1.0 / factor_)),
-        raw_min_value(signed_ ? -(std::int64_t{1} << (len - 1U)) : 0),
-        raw_max_value(signed_ ? (std::int64_t{1} << (len - 1U)) - 1 : (std::int64_t{1} << len) - 1),
-        raw_min_f(static_cast<float>(raw_min_value)),
-        raw_max_f(static_cast<float>(raw_max_value)),
-        raw_mask((std::uint64_t{1} << len) - 1U),
+        raw_min_f(static_cast<float>(raw_min())),
+        raw_max_f(static_cast<float>(raw_max())),
         whole_bytes((start % 8U) == 0U && (len % 8U) == 0U),
         first_byte(static_cast<std::uint8_t>(start / 8U)),
         byte_count(static_cast<std::uint8_t>(len / 8U)) {}
 
-  [[nodiscard]] constexpr std::int64_t raw_min() const noexcept { return raw_min_value; }
-  [[nodiscard]] constexpr std::int64_t raw_max() const noexcept { return raw_max_value; }
+  [[nodiscard]] constexpr std::int64_t raw_min() const noexcept {
+    return is_signed ? -(std::int64_t{1} << (length - 1U)) : 0;
+  }
+  [[nodiscard]] constexpr std::int64_t raw_max() const noexcept {
+    return is_signed ? (std::int64_t{1} << (length - 1U)) - 1 : (std::int64_t{1} << length) - 1;
+  }
   [[nodiscard]] constexpr double physical_min() const noexcept {
     return static_cast<double>(raw_min()) * factor + offset;
   }
@@ -185,7 +184,7 @@ inline Status encode_raw_signal(const SignalSpec& spec, std::int64_t raw,
     raw = spec.raw_max();
     status = Status::out_of_range;
   }
-  auto bits = static_cast<std::uint64_t>(raw) & spec.raw_mask;
+  auto bits = static_cast<std::uint64_t>(raw) & ((std::uint64_t{1} << spec.length) - 1U);
   if (spec.whole_bytes && spec.byte_count == 2U) {  // most signals: straight-line stores
     data[spec.first_byte] = static_cast<std::uint8_t>(bits & 0xFFU);
     data[spec.first_byte + 1U] = static_cast<std::uint8_t>((bits >> 8U) & 0xFFU);
