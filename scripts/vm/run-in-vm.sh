@@ -56,6 +56,8 @@ copy_with_libs() {
   mkdir -p "$(dirname "$root$dest")"
   cp "$bin" "$root$dest"
   chmod +x "$root$dest"
+  # Debug info is of no use in the guest and would swell the RAM-backed root file system.
+  strip --strip-debug "$root$dest" 2>/dev/null || true
   { ldd "$bin" 2>/dev/null || true; } | { grep -oE '/[^ ]+' || true; } | while read -r lib; do
     if [[ -f $lib && ! -e $root$lib ]]; then
       mkdir -p "$(dirname "$root$lib")"
@@ -112,7 +114,7 @@ chmod +x "$root/init"
 
 console=$work/console.log
 set +e
-timeout "$timeout_s" qemu-system-x86_64 -accel tcg -m 256 -smp 1 -nographic -no-reboot \
+timeout "$timeout_s" qemu-system-x86_64 -accel tcg -m 512 -smp 1 -nographic -no-reboot \
   -kernel "$vm_dir/vmlinuz" -initrd "$work/initrd.gz" \
   -append "console=ttyS0 panic=-1 quiet loglevel=3" </dev/null >"$console" 2>&1
 qemu_rc=$?

@@ -21,8 +21,12 @@ native_can() {
 }
 
 if [[ $mode == native || ($mode == auto && $(native_can && echo yes) == yes) ]]; then
-  opts=()
-  while (($#)) && [[ $1 != -- ]]; do opts+=("$1"); shift; done
+  # Options for the VM are not needed natively (the program reads and writes host paths directly;
+  # a --workdir is where it writes its results: TREAD_OUT_DIR tells it).
+  while (($#)) && [[ $1 != -- ]]; do
+    [[ $1 == --workdir ]] && export TREAD_OUT_DIR=$2
+    shift
+  done
   [[ ${1:-} == -- ]] && shift
   echo "run-vcan-test: native SocketCAN" >&2
   exec "$@"

@@ -71,8 +71,12 @@ DemoResult co_simulate(const DemoSettings& s, NodeRuntime& runtime, ClockT& cloc
 
   DemoResult result;
   std::uint32_t rig_cycle = 0;
+  // Outcomes (results, reference runs, traces, plots) after the last cycle, as `tread rig` does.
+  std::vector<std::unique_ptr<ScenarioRunner>> runners;
   for (auto& scenario : scenarios) {
-    ScenarioRunner runner(*scenario, link, cfg.layout, cfg.wheels, cfg.wheelsets, reference);
+    runners.push_back(std::make_unique<ScenarioRunner>(*scenario, link, cfg.layout, cfg.wheels,
+                                                       cfg.wheelsets, reference));
+    ScenarioRunner& runner = *runners.back();
     while (!runner.done()) {
       for (const proto::CanFrame& f : runner.begin_cycle(runner.time_s(), rig_cycle++)) {
         static_cast<void>(rig_bus.send(f));
@@ -89,17 +93,9 @@ DemoResult co_simulate(const DemoSettings& s, NodeRuntime& runtime, ClockT& cloc
       } while (!answered && clock.now_ns() < give_up && !std::is_same_v<ClockT, hal::SimClock>);
       runner.end_cycle(dt_s);
     }
-    ScenarioOutcome o;
-    o.name = scenario->name();
-    o.description = scenario->description();
-    o.cycles = runner.cycles();
-    o.check = runner.check();
-    o.metrics = scenario->metrics();
-    o.trace_csv = s.out_dir / (o.name + ".csv");
-    runner.write_trace(o.trace_csv);
-    if (s.plot) {
-      o.plots = scenario->plot(o.trace_csv, s.out_dir);
-    }
+  }
+  for (auto& runner : runners) {
+    ScenarioOutcome o = finish_scenario(*runner, s.out_dir, s.plot);
     result.max_force_error_n = std::max(result.max_force_error_n, o.check.max_force_error_n);
     result.max_force_n = std::max(result.max_force_n, o.check.max_force_n);
     result.max_moment_error_nm = std::max(result.max_moment_error_nm, o.check.max_moment_error_nm);
@@ -150,22 +146,6 @@ DemoResult run_demo(const DemoSettings& s) {
   result.report.notes =
       rt.messages + (runtime.tir_warning().empty() ? "" : "note: " + runtime.tir_warning() + "\n");
   return result;
-}
-
-void print_scenario_outcome(std::ostream& out, const ScenarioOutcome& o) {
-  out << "\n== " << o.name << " — " << o.description << "\n";
-  out << "   " << o.cycles << " cycles; " << o.check.answers_checked
-      << " answers checked against the reference";
-  if (o.check.stale_answers > 0) out << " (" << o.check.stale_answers << " stale)";
-  out << "\n";
-  for (const ScenarioMetric& m : o.metrics) {
-    out << "   " << std::left << std::setw(36) << m.name << std::right << std::setw(11)
-        << std::setprecision(5) << m.value << ' ' << std::left << std::setw(6) << m.unit
-        << std::right << m.note << "\n";
-  }
-  out << "   trace " << o.trace_csv.string();
-  for (const auto& p : o.plots) out << "   plot " << p.string();
-  out << "\n";
 }
 
 void print_demo(std::ostream& out, const DemoSettings& s, const DemoResult& r) {

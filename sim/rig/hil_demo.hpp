@@ -29,16 +29,6 @@ struct DemoSettings {
   hal::RealtimeRequest realtime{};  ///< SCHED_FIFO / mlockall / CPU affinity for the loop
 };
 
-struct ScenarioOutcome {
-  std::string name;
-  std::string description;
-  std::uint64_t cycles{0};
-  AnswerCheck check;
-  std::vector<ScenarioMetric> metrics;
-  std::filesystem::path trace_csv;
-  std::vector<std::filesystem::path> plots;
-};
-
 struct DemoResult {
   SessionReport report;
   std::uint64_t rig_frames_accepted{0};

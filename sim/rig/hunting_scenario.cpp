@@ -1,5 +1,6 @@
 #include "rig/hunting_scenario.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -25,6 +26,16 @@ HuntingScenario::HuntingScenario(const HuntingSettings& settings) : settings_(se
   p.r0_mm = setup.r0_mm;
   // The motion is centred on the root of delta r (an asymmetric pair need not be centred on 0).
   centre_mm_ = contact::equivalent_conicity(reference_, settings_.amplitude_mm[0]).centre_y_mm;
+  // Long enough for at least four periods of the slowest wheelset (low conicity: long waves).
+  for (std::size_t j = 0; j < settings_.wheelsets; ++j) {
+    contact::ConicityOptions o;
+    o.r0_mm = p.r0_mm;
+    o.e0_mm = p.e0_mm;
+    const double wavelength_m =
+        contact::equivalent_conicity(reference_, settings_.amplitude_mm[j], o).wavelength_mm /
+        1000.0;
+    settings_.duration_s = std::max(settings_.duration_s, 4.5 * wavelength_m / p.speed_mps);
+  }
   for (std::size_t j = 0; j < settings_.wheelsets; ++j) {
     wheelsets_[j] = WheelsetHunting(p, centre_mm_ + settings_.amplitude_mm[j]);
     const auto n = static_cast<std::size_t>(settings_.duration_s * 1000.0) + 1;

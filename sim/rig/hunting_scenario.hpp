@@ -18,7 +18,7 @@ namespace tread::host {
 struct HuntingSettings {
   std::uint8_t wheelsets{2};
   double speed_mps{30.0};
-  double duration_s{3.0};
+  double duration_s{3.0};  ///< at least; longer if 4.5 periods need more
   /// Initial lateral displacement from the centre of the motion, per wheelset (mm).
   std::array<double, proto::kMaxWheelsets> amplitude_mm{3.0, 5.0};
   std::string wheelset_profile;  ///< the node's --wheelset-profile (the reference)

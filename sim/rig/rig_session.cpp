@@ -1,133 +1,148 @@
 #include "rig/rig_session.hpp"
 
 #include <algorithm>
-#include <array>
-#include <cmath>
 #include <ostream>
 #include <stdexcept>
 
-#include "mf/mf_evaluate.hpp"
+#include "contact/contact_setup.hpp"
 #include "mf/mf_parameters_from_tir.hpp"
+#include "node/node_runtime.hpp"
 #include "posix/posix_clock.hpp"
-#include "proto/rig_link.hpp"
-#include "rig/reference_model.hpp"
+#include "rig/scenario_catalogue.hpp"
 #include "socketcan/socketcan_bus.hpp"
 
 namespace tread::host {
-namespace {
-
-/// One operating point per wheel: braking, cornering, combined, light load.
-proto::RigData operating_points(std::uint32_t cycle) {
-  proto::RigData d;
-  d.wheels[0] = {-0.08F, 0.0F, 0.0F, 4000.0F, 16.7F, 0.0F, false};
-  d.wheels[1] = {0.0F, 0.06F, 0.01F, 4500.0F, 16.7F, 0.0F, false};
-  d.wheels[2] = {0.05F, -0.04F, 0.0F, 3500.0F, 16.7F, 0.0F, false};
-  d.wheels[3] = {0.02F, 0.02F, -0.01F, 2000.0F, 16.7F, 0.0F, false};
-  d.rig_cycle = cycle;
-  return d;
-}
-
-}  // namespace
 
 RigReport run_rig(const RigSettings& s) {
-  const mf::MfTirParameters loaded = mf::load_mf_parameters(s.tir);
-  const mf::MfOptions options{};
+  ScenarioContext context;
+  context.tir = s.tir;
+  context.wheels = s.wheels;
+  context.wheelsets = s.wheelsets;
+  context.wheelset_profile = s.wheelset_profile;
+  context.wheelset_ymax_mm = s.wheelset_ymax_mm;
+  context.wheelset_step_mm = s.wheelset_step_mm;
+  context.sweep_duration_s = s.sweep_duration_s;
+  context.period_s = static_cast<double>(s.period_us) * 1e-6;
+  const std::vector<std::string> names =
+      s.scenarios.empty() ? default_scenarios(context) : s.scenarios;
+  std::vector<std::unique_ptr<RigScenario>> scenarios;
+  for (const std::string& n : names) {
+    scenarios.push_back(make_scenario(n, context));
+  }
+  mf::MfParameters<double> tyre{};
+  contact::ContactTable contact_table;
+  RigReference reference;
+  if (s.wheels > 0) {
+    tyre = mf::load_mf_parameters(s.tir).params;
+    reference.tyre = &tyre;
+  }
+  if (s.wheelsets > 0) {
+    contact_table = contact::build_contact(parse_wheelset_profile(s.wheelset_profile))
+                        .table(-s.wheelset_ymax_mm, s.wheelset_ymax_mm, s.wheelset_step_mm);
+    reference.contact = &contact_table;
+  }
+
   hal::SocketCanBus bus;
   const Status opened = bus.open(s.can, s.layout == proto::Layout::fd);
   if (opened != Status::ok) {
     throw std::runtime_error("cannot open CAN interface '" + s.can + "' (" + to_string(opened) +
                              ", errno " + std::to_string(bus.last_errno()) + ")");
   }
-  // What the node sees after quantisation: decode the rig's own frames.
-  proto::RigLink link(s.layout, s.wheels, 0);
-  std::array<proto::CanFrame, proto::RigLink::kMaxRigFrames> frames{};
-  proto::RigData quantised{};
-  {
-    proto::RigLink probe(s.layout, s.wheels, 0);
-    const std::size_t n = probe.encode_cycle(operating_points(0), frames);
-    for (std::size_t k = 0; k < n; ++k) {
-      static_cast<void>(
-          proto::decode(*proto::find_message(s.layout, frames[k].id), frames[k], quantised));
-    }
-  }
-  std::array<mf::MfOutput<double>, proto::kMaxWheels> reference{};
-  for (std::size_t i = 0; i < s.wheels; ++i) {
-    reference[i] = reference_output(loaded.params, quantised.wheels[i], options);
-  }
-
   RigReport r;
+  proto::RigLink link(s.layout, s.wheels, s.wheelsets);
   hal::PosixClock clock;
   const std::int64_t period_ns = s.period_us * 1000;
-  const auto cycles =
-      static_cast<std::uint64_t>(s.duration_s * 1e9 / static_cast<double>(period_ns));
-  std::int64_t deadline = clock.now_ns() + period_ns;
-  proto::NodeData outputs{};
-  for (std::uint64_t c = 0; c < cycles; ++c) {
-    const std::size_t n =
-        link.encode_cycle(operating_points(static_cast<std::uint32_t>(c)), frames);
-    for (std::size_t k = 0; k < n; ++k) {
-      if (bus.send(frames[k]) == Status::ok) {
-        ++r.frames_sent;
-      } else {
-        ++r.send_refused;
-      }
+  const auto timeout_ns = static_cast<std::int64_t>(s.answer_timeout_ms * 1e6);
+  const double dt_s = static_cast<double>(s.period_us) * 1e-6;
+  std::uint32_t rig_cycle = 0;
+  std::int64_t deadline = clock.now_ns();
+  proto::NodeData status_view{};
+  // Sorts one received frame: error frames and foreign traffic are counted; node outputs go through
+  // the runner (E2E check, decode). True when it completed the cycle's answer.
+  const auto take = [&](ScenarioRunner& runner, const proto::CanFrame& f) {
+    if (f.error) {
+      ++r.error_frames;
+      return false;
     }
-    ++r.cycles;
-    static_cast<void>(clock.sleep_until_ns(deadline));
-    deadline += period_ns;
-    proto::CanFrame f{};
-    while (bus.receive(f) == Status::ok) {
-      if (f.error) {
-        ++r.error_frames;
-        continue;
+    const proto::MessageSpec* m = proto::find_message(s.layout, f.id);
+    if (f.extended || m == nullptr || m->direction != proto::Direction::node_to_rig) {
+      ++r.foreign_frames;
+      return false;
+    }
+    const std::uint64_t rejected_before = link.rejected();
+    const std::uint64_t accepted_before = link.accepted();
+    const bool complete = runner.on_frame(f);
+    r.node_frames_rejected += link.rejected() - rejected_before;
+    r.node_frames_accepted += link.accepted() - accepted_before;
+    if (m->id == proto::kNodeStatusId && link.accepted() > accepted_before) {
+      static_cast<void>(proto::decode(*m, f, status_view));
+    }
+    return complete;
+  };
+  // Runners are kept to the end: their outcomes (results, reference runs, traces, plots) are
+  // worked out after the last cycle, so the node never waits for the rig between scenarios.
+  std::vector<std::unique_ptr<ScenarioRunner>> runners;
+  for (auto& scenario : scenarios) {
+    runners.push_back(std::make_unique<ScenarioRunner>(*scenario, link, s.layout, s.wheels,
+                                                       s.wheelsets, reference));
+    ScenarioRunner& runner = *runners.back();
+    while (!runner.done()) {
+      // Anything that arrived between cycles is not this cycle's answer (e.g. the node's
+      // input-timeout computation while the rig was held up): take it out of the way first.
+      proto::CanFrame f{};
+      while (bus.receive(f) == Status::ok) {
+        static_cast<void>(take(runner, f));
+        ++r.stray_frames;
       }
-      const proto::MessageSpec* m = proto::find_message(s.layout, f.id);
-      if (f.extended || m == nullptr || m->direction != proto::Direction::node_to_rig) {
-        ++r.foreign_frames;
-        continue;
-      }
-      const std::uint64_t rejected_before = link.rejected();
-      if (link.receive(f, outputs) != Status::ok) {
-        r.node_frames_rejected += link.rejected() - rejected_before;
-        continue;
-      }
-      ++r.node_frames_accepted;
-      if (m->id == proto::kNodeStatusId) {
-        r.node_overruns = outputs.status.overruns;
-        r.node_rejected = outputs.status.rejected;
-        r.node_cycle = outputs.status.cycle;
-        continue;
-      }
-      // Check the wheels whose forces this frame carries (the status says whether they are computed
-      // values); other wheels' fields may still be from before their first frame.
-      for (std::size_t i = 0; i < s.wheels; ++i) {
-        bool carried = false;
-        for (const proto::SignalSpec& sig : m->signals) {
-          carried = carried || (sig.role == proto::Role::fx &&
-                                m->instance_of(sig) == static_cast<std::int8_t>(i));
+      for (const proto::CanFrame& out : runner.begin_cycle(runner.time_s(), rig_cycle++)) {
+        if (bus.send(out) == Status::ok) {
+          ++r.frames_sent;
+        } else {
+          ++r.send_refused;
         }
-        if (!carried) {
-          continue;
+      }
+      ++r.cycles;
+      bool answered = false;
+      const std::int64_t give_up = clock.now_ns() + timeout_ns;
+      while (!answered && clock.now_ns() < give_up) {
+        bool any = false;
+        while (!answered && bus.receive(f) == Status::ok) {
+          any = true;
+          answered = take(runner, f);
         }
-        const proto::WheelOutput& w = outputs.wheels[i];
-        if (w.status != 0U) {
-          r.stale_answers += (w.status & proto::kStatusStale) != 0U ? 1U : 0U;
-          continue;
+        if (!any) {
+          static_cast<void>(clock.sleep_until_ns(clock.now_ns() + 20'000));
         }
-        ++r.answers_checked;
-        r.max_force_error_n = std::max({r.max_force_error_n,
-                                        std::abs(static_cast<double>(w.fx_n) - reference[i].fx_n),
-                                        std::abs(static_cast<double>(w.fy_n) - reference[i].fy_n)});
-        r.max_moment_error_nm = std::max(
-            r.max_moment_error_nm, std::abs(static_cast<double>(w.mz_nm) - reference[i].mz_nm));
+      }
+      r.late_cycles += answered ? 0U : 1U;
+      runner.end_cycle(dt_s);
+      deadline += period_ns;
+      const std::int64_t now = clock.now_ns();
+      if (deadline > now) {
+        static_cast<void>(clock.sleep_until_ns(deadline));
+      } else {
+        deadline = now;  // behind (slow node or machine): carry on from now, lockstep keeps order
       }
     }
   }
+  for (auto& runner : runners) {
+    ScenarioOutcome o = finish_scenario(*runner, s.out_dir, s.plot);
+    r.answers_checked += o.check.answers_checked;
+    r.stale_answers += o.check.stale_answers;
+    r.max_force_error_n = std::max(r.max_force_error_n, o.check.max_force_error_n);
+    r.max_moment_error_nm = std::max(r.max_moment_error_nm, o.check.max_moment_error_nm);
+    r.max_delta_r_error_mm = std::max(r.max_delta_r_error_mm, o.check.max_delta_r_error_mm);
+    r.scenarios.push_back(std::move(o));
+  }
+  r.node_overruns = status_view.status.overruns;
+  r.node_rejected = status_view.status.rejected;
+  r.node_cycle = status_view.status.cycle;
   return r;
 }
 
 void print_rig_report(std::ostream& out, const RigReport& r) {
-  out << "rig cycles           " << r.cycles << "\n";
+  out << "rig cycles           " << r.cycles << " (late answers " << r.late_cycles
+      << ", frames between cycles " << r.stray_frames << ")\n";
   out << "rig frames sent      " << r.frames_sent << " (refused " << r.send_refused << ")\n";
   out << "node frames          " << r.node_frames_accepted << " accepted, "
       << r.node_frames_rejected << " rejected\n";
@@ -135,9 +150,13 @@ void print_rig_report(std::ostream& out, const RigReport& r) {
       << " error frames\n";
   out << "answers checked      " << r.answers_checked << " (stale " << r.stale_answers << ")\n";
   out << "max |dF|             " << r.max_force_error_n << " N, max |dMz| " << r.max_moment_error_nm
-      << " N m (vs the reference in double; quantisation 0.5 N / 0.025 N m)\n";
+      << " N m, max |d delta_r| " << r.max_delta_r_error_mm
+      << " mm (vs the reference in double; quantisation 0.5 N / 0.025 N m / 0.0005 mm)\n";
   out << "node status          cycle " << r.node_cycle << ", overruns " << r.node_overruns
       << ", rejected " << r.node_rejected << "\n";
+  for (const ScenarioOutcome& o : r.scenarios) {
+    print_scenario_outcome(out, o);
+  }
 }
 
 }  // namespace tread::host

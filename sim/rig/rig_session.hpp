@@ -1,15 +1,20 @@
 #pragma once
-// `tread rig`: the rig side as its own process, talking to a tread node only through CAN frames. It
-// holds one operating point per channel (so every answer of the node can be checked exactly against
-// the reference model, whatever the timing between the two processes), sends a cycle every period
-// and checks every frame that comes back (E2E, reference values, status).
+// `tread rig`: the rig side as its own process, talking to a tread node only through CAN frames.
+// It runs the same scenarios as `tread demo` in lockstep with the node: each cycle it sends the
+// inputs (the cycle frame last), waits for the node's answer (its NodeStatus frame comes last),
+// checks every answer against the reference model, advances the scenario, and sleeps to the next
+// period. With the node in sync mode (`tread node --mode sync`) the trace is the same, value for
+// value, as the in-process run's (`tread demo --clock sim`), whatever the timing of the two
+// processes. Other traffic (floods, error frames, malformed frames) is counted and ignored.
 
 #include <cstdint>
 #include <filesystem>
 #include <iosfwd>
 #include <string>
+#include <vector>
 
 #include "proto/messages.hpp"
+#include "rig/scenario_runner.hpp"
 
 namespace tread::host {
 
@@ -17,9 +22,17 @@ struct RigSettings {
   std::string can{"vcan0"};
   proto::Layout layout{proto::Layout::classic};
   std::uint8_t wheels{4};
-  std::filesystem::path tir;  ///< the reference model (the node's tyre file)
-  double duration_s{2.0};
+  std::uint8_t wheelsets{0};
+  std::filesystem::path tir;      ///< the node's tyre file (the reference)
+  std::string wheelset_profile;   ///< the node's wheelset profile (the reference)
+  double wheelset_ymax_mm{12.0};  ///< the node's contact table range and step
+  double wheelset_step_mm{0.1};
+  std::vector<std::string> scenarios;  ///< empty: the defaults for the channels
+  double sweep_duration_s{4.0};
   std::int64_t period_us{1000};
+  double answer_timeout_ms{100.0};  ///< wait for the node's answer of a cycle at most this long
+  std::filesystem::path out_dir{"tread-rig"};
+  bool plot{false};
 };
 
 struct RigReport {
@@ -30,17 +43,20 @@ struct RigReport {
   std::uint64_t node_frames_rejected{0};
   std::uint64_t foreign_frames{0};  ///< frames that are not node outputs (floods, other traffic)
   std::uint64_t error_frames{0};
-  std::uint64_t answers_checked{0};  ///< wheel outputs compared with the reference
-  std::uint64_t stale_answers{0};    ///< wheel outputs flagged stale (zeros), not compared
+  std::uint64_t late_cycles{0};   ///< cycles whose answer did not come within the timeout
+  std::uint64_t stray_frames{0};  ///< frames that arrived between cycles (not an answer)
+  std::uint64_t answers_checked{0};
+  std::uint64_t stale_answers{0};
   double max_force_error_n{0.0};
   double max_moment_error_nm{0.0};
+  double max_delta_r_error_mm{0.0};
   std::uint32_t node_overruns{0};  ///< from the last NodeStatus
   std::uint32_t node_rejected{0};
   std::uint32_t node_cycle{0};
+  std::vector<ScenarioOutcome> scenarios;
 };
 
-/// Runs the rig over SocketCAN for the duration. Throws std::runtime_error when the link cannot be
-/// used.
+/// Runs the scenarios over SocketCAN. Throws std::runtime_error when the link cannot be used.
 RigReport run_rig(const RigSettings& settings);
 void print_rig_report(std::ostream& out, const RigReport& report);
 

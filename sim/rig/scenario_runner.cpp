@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <ostream>
 #include <stdexcept>
 
 #include "contact/equivalent_conicity.hpp"
@@ -21,6 +22,28 @@ ScenarioRunner::ScenarioRunner(RigScenario& scenario, proto::RigLink& link, prot
       link_(link),
       layout_(layout),
       columns_(scenario.trace_columns()) {
+  // The node's output messages of one cycle: its status and every message carrying a configured
+  // channel (as the node chooses them).
+  const auto all = proto::messages(layout);
+  for (std::size_t m = 0; m < all.size(); ++m) {
+    if (all[m].direction != proto::Direction::node_to_rig) {
+      continue;
+    }
+    bool sent = all[m].id == proto::kNodeStatusId;
+    for (const proto::SignalSpec& sig : all[m].signals) {
+      const auto role = static_cast<unsigned>(sig.role);
+      const int channel = all[m].instance_of(sig);
+      const bool wheel = role >= static_cast<unsigned>(proto::Role::fx) &&
+                         role <= static_cast<unsigned>(proto::Role::wheel_status);
+      const bool wheelset = role >= static_cast<unsigned>(proto::Role::r_left) &&
+                            role <= static_cast<unsigned>(proto::Role::ws_status);
+      sent = sent || (wheel && channel >= 0 && channel < wheels) ||
+             (wheelset && channel >= 0 && channel < wheelsets);
+    }
+    if (sent) {
+      expected_mask_ |= std::uint64_t{1} << m;
+    }
+  }
   const auto rows = static_cast<std::size_t>(scenario.duration_s() * 1000.0) + 2;
   trace_.reserve(rows * (columns_.size() + 1));
   row_.reserve(columns_.size());
@@ -31,6 +54,7 @@ std::span<const proto::CanFrame> ScenarioRunner::begin_cycle(double t_s, std::ui
   scenario_.inputs(t_s, d);
   d.rig_cycle = rig_cycle;
   frame_count_ = link_.encode_cycle(d, frames_);
+  received_mask_ = 0;
   // The inputs as the node decodes them (after quantisation): the reference is evaluated on these.
   for (std::size_t k = 0; k < frame_count_; ++k) {
     const proto::MessageSpec* m = proto::find_message(layout_, frames_[k].id);
@@ -45,7 +69,12 @@ bool ScenarioRunner::on_frame(const proto::CanFrame& frame) {
   if (frame.error || frame.extended) {
     return false;
   }
-  return link_.receive(frame, answers_) == Status::ok && frame.id == proto::kNodeStatusId;
+  if (link_.receive(frame, answers_) != Status::ok) {
+    return false;
+  }
+  const proto::MessageSpec* m = proto::find_message(layout_, frame.id);
+  received_mask_ |= std::uint64_t{1} << proto::message_index(layout_, *m);
+  return (received_mask_ & expected_mask_) == expected_mask_;
 }
 
 void ScenarioRunner::end_cycle(double dt_s) {
@@ -107,6 +136,40 @@ void ScenarioRunner::write_trace(const std::filesystem::path& csv) const {
   if (!out) {
     throw std::runtime_error("cannot write " + csv.string());
   }
+}
+
+ScenarioOutcome finish_scenario(ScenarioRunner& runner, const std::filesystem::path& out_dir,
+                                bool plot) {
+  RigScenario& scenario = runner.scenario();
+  ScenarioOutcome o;
+  o.name = scenario.name();
+  o.description = scenario.description();
+  o.cycles = runner.cycles();
+  o.check = runner.check();
+  o.metrics = scenario.metrics();
+  std::filesystem::create_directories(out_dir);
+  o.trace_csv = out_dir / (o.name + ".csv");
+  runner.write_trace(o.trace_csv);
+  if (plot) {
+    o.plots = scenario.plot(o.trace_csv, out_dir);
+  }
+  return o;
+}
+
+void print_scenario_outcome(std::ostream& out, const ScenarioOutcome& o) {
+  out << "\n== " << o.name << " — " << o.description << "\n";
+  out << "   " << o.cycles << " cycles; " << o.check.answers_checked
+      << " answers checked against the reference";
+  if (o.check.stale_answers > 0) out << " (" << o.check.stale_answers << " stale)";
+  out << "\n";
+  for (const ScenarioMetric& m : o.metrics) {
+    out << "   " << std::left << std::setw(36) << m.name << std::right << std::setw(11)
+        << std::setprecision(5) << m.value << ' ' << std::left << std::setw(6) << m.unit
+        << std::right << m.note << "\n";
+  }
+  out << "   trace " << o.trace_csv.string();
+  for (const auto& p : o.plots) out << "   plot " << p.string();
+  out << "\n";
 }
 
 }  // namespace tread::host

@@ -6,7 +6,9 @@
 
 #include <array>
 #include <filesystem>
+#include <iosfwd>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "contact/rigid_contact.hpp"
@@ -41,8 +43,9 @@ class ScenarioRunner {
 
   /// The frames of the cycle at `t_s` (the cycle frame last).
   std::span<const proto::CanFrame> begin_cycle(double t_s, std::uint32_t rig_cycle);
-  /// One frame from the node (others are ignored). True when it completed this cycle's answer
-  /// (the NodeStatus frame, which the node sends last).
+  /// One frame from the node (others are ignored). True when it completed this cycle's answer:
+  /// every output message the node sends for the configured channels has arrived since
+  /// begin_cycle().
   bool on_frame(const proto::CanFrame& frame);
   /// Checks the answers, advances the scenario by `dt_s` and appends the trace row.
   void end_cycle(double dt_s);
@@ -68,6 +71,8 @@ class ScenarioRunner {
   proto::Layout layout_;
   std::array<proto::CanFrame, proto::RigLink::kMaxRigFrames> frames_{};
   std::size_t frame_count_{0};
+  std::uint64_t expected_mask_{0};  ///< node output messages of a cycle (by message index)
+  std::uint64_t received_mask_{0};
   proto::RigData seen_{};
   proto::NodeData answers_{};
   AnswerCheck check_{};
@@ -77,5 +82,20 @@ class ScenarioRunner {
   std::vector<double> trace_;  ///< rows of 1 + columns_.size() values
   std::vector<double> row_;
 };
+
+struct ScenarioOutcome {
+  std::string name;
+  std::string description;
+  std::uint64_t cycles{0};
+  AnswerCheck check;
+  std::vector<ScenarioMetric> metrics;
+  std::filesystem::path trace_csv;
+  std::vector<std::filesystem::path> plots;
+};
+
+/// After the run: the outcome, the trace written to out_dir/<name>.csv and (if `plot`) the plots.
+ScenarioOutcome finish_scenario(ScenarioRunner& runner, const std::filesystem::path& out_dir,
+                                bool plot);
+void print_scenario_outcome(std::ostream& out, const ScenarioOutcome& outcome);
 
 }  // namespace tread::host
