@@ -2,28 +2,57 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "cli/node_options.hpp"
 #include "rig/rig_session.hpp"
 
 namespace tread::cli {
 namespace {
 
 void add_rig_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("rig", "Run the rig side against a tread node over SocketCAN");
+  auto* cmd = app.add_subcommand(
+      "rig", "Run the rig side against a tread node over SocketCAN (node: tread node --mode sync)");
   static host::RigSettings settings;
   static bool fd = false;
   static int wheels = 4;
+  static int wheelsets = 0;
   cmd->add_option("--can", settings.can, "SocketCAN interface")->capture_default_str();
   cmd->add_flag("--fd", fd, "CAN FD layout");
-  cmd->add_option("--tir", settings.tir, "the node's tyre property file (the reference)")
-      ->required();
-  cmd->add_option("--wheels", wheels, "road wheels (1..4)")
-      ->check(CLI::Range(1, 4))
+  cmd->add_option("--tir", settings.tir, "the node's tyre property file (the reference)");
+  cmd->add_option("--wheels", wheels, "road wheels (0..4)")
+      ->check(CLI::Range(0, 4))
       ->capture_default_str();
-  cmd->add_option("--duration-s", settings.duration_s, "how long to run")->capture_default_str();
-  cmd->add_option("--period-us", settings.period_us, "cycle period")->capture_default_str();
+  cmd->add_option("--wheelsets", wheelsets, "rail wheelsets (0..2)")
+      ->check(CLI::Range(0, 2))
+      ->capture_default_str();
+  cmd->add_option("--wheelset-profile", settings.wheelset_profile,
+                  "the node's wheelset profile (the reference), as for tread node");
+  cmd->add_option("--scenario", settings.scenarios,
+                  "scenarios, in order: braking, step-steer, sine-dwell, hunting, sweep")
+      ->delimiter(',');
+  cmd->add_option("--sweep-duration-s", settings.sweep_duration_s, "length of 'sweep'")
+      ->capture_default_str();
+  cmd->add_option("--period-us", settings.period_us, "cycle period (the simulated step)")
+      ->capture_default_str();
+  cmd->add_option("--pace-us", settings.pace_us,
+                  "wall-clock time per cycle (0: the period; longer runs the lockstep slower than "
+                  "real time, same trace)")
+      ->capture_default_str();
+  cmd->add_option("--answer-timeout-ms", settings.answer_timeout_ms,
+                  "wait this long for the node's answer of a cycle")
+      ->capture_default_str();
+  cmd->add_option("--out", settings.out_dir, "directory for the traces (and plots)")
+      ->capture_default_str();
+  cmd->add_flag("--plot", settings.plot, "draw the scenarios' plots");
   cmd->callback([] {
     settings.layout = fd ? proto::Layout::fd : proto::Layout::classic;
     settings.wheels = static_cast<std::uint8_t>(wheels);
+    settings.wheelsets = static_cast<std::uint8_t>(wheelsets);
+    if (settings.wheels > 0 && settings.tir.empty()) {
+      throw CLI::ValidationError("--tir", "road wheels need the node's tyre file");
+    }
+    if (settings.wheelsets > 0 && settings.wheelset_profile.empty()) {
+      settings.wheelset_profile = "wheel=S1002,rail=60E1,cant=1:40";
+    }
     host::print_rig_report(std::cout, host::run_rig(settings));
   });
 }

@@ -48,10 +48,21 @@ RigReport run_rig(const RigSettings& s) {
     throw std::runtime_error("cannot open CAN interface '" + s.can + "' (" + to_string(opened) +
                              ", errno " + std::to_string(bus.last_errno()) + ")");
   }
+  // Only the node's outputs (and error frames) reach the rig: other traffic is dropped by the
+  // kernel, as on the node's side.
+  std::vector<hal::CanIdFilter> filters;
+  for (const proto::MessageSpec& m : proto::messages(s.layout)) {
+    if (m.direction == proto::Direction::node_to_rig) {
+      filters.push_back({m.id, 0x7FF, false});
+    }
+  }
+  if (bus.set_filters(filters) != Status::ok) {
+    throw std::runtime_error("cannot install CAN ID filters on " + s.can);
+  }
   RigReport r;
   proto::RigLink link(s.layout, s.wheels, s.wheelsets);
   hal::PosixClock clock;
-  const std::int64_t period_ns = s.period_us * 1000;
+  const std::int64_t period_ns = (s.pace_us > 0 ? s.pace_us : s.period_us) * 1000;
   const auto timeout_ns = static_cast<std::int64_t>(s.answer_timeout_ms * 1e6);
   const double dt_s = static_cast<double>(s.period_us) * 1e-6;
   std::uint32_t rig_cycle = 0;

@@ -3,9 +3,10 @@
 // It runs the same scenarios as `tread demo` in lockstep with the node: each cycle it sends the
 // inputs (the cycle frame last), waits for the node's answer (its NodeStatus frame comes last),
 // checks every answer against the reference model, advances the scenario, and sleeps to the next
-// period. With the node in sync mode (`tread node --mode sync`) the trace is the same, value for
-// value, as the in-process run's (`tread demo --clock sim`), whatever the timing of the two
-// processes. Other traffic (floods, error frames, malformed frames) is counted and ignored.
+// period. Kernel ID filters pass only the node's output IDs and error frames. With the node in sync
+// mode (`tread node --mode sync`) the trace is the same, value for value, as the in-process run's
+// (`tread demo --clock sim`), whatever the timing of the two processes. Other traffic (floods,
+// error frames, malformed frames) is counted and ignored.
 
 #include <cstdint>
 #include <filesystem>
@@ -29,7 +30,10 @@ struct RigSettings {
   double wheelset_step_mm{0.1};
   std::vector<std::string> scenarios;  ///< empty: the defaults for the channels
   double sweep_duration_s{4.0};
-  std::int64_t period_us{1000};
+  std::int64_t period_us{1000};  ///< the simulated step (the node's period)
+  /// Wall-clock time per cycle; 0: the period (real time). Longer paces a lockstep run slower than
+  /// real time (same trace: the simulated step stays period_us).
+  std::int64_t pace_us{0};
   double answer_timeout_ms{100.0};  ///< wait for the node's answer of a cycle at most this long
   std::filesystem::path out_dir{"tread-rig"};
   bool plot{false};
@@ -41,7 +45,9 @@ struct RigReport {
   std::uint64_t send_refused{0};
   std::uint64_t node_frames_accepted{0};
   std::uint64_t node_frames_rejected{0};
-  std::uint64_t foreign_frames{0};  ///< frames that are not node outputs (floods, other traffic)
+  /// Frames that are not node outputs (the kernel filter passes only the node's IDs, so these are
+  /// standard frames on them that fail to be a node output, e.g. a flood's).
+  std::uint64_t foreign_frames{0};
   std::uint64_t error_frames{0};
   std::uint64_t late_cycles{0};   ///< cycles whose answer did not come within the timeout
   std::uint64_t stray_frames{0};  ///< frames that arrived between cycles (not an answer)
