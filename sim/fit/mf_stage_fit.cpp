@@ -18,7 +18,9 @@ namespace tread::fit {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-// Derivatives per Jet pass: up to 16 coefficients per stage take one pass through the core.
+// Derivatives per Jet pass: stages of up to 8 coefficients take one pass of Jet<8>, larger ones
+// passes of Jet<16> (one pass up to 16 coefficients).
+constexpr int kSmallStride = 8;
 constexpr int kStride = 16;
 
 template <typename T>
@@ -245,10 +247,20 @@ StageResult fit_stage(const StageSpec& spec, const std::vector<StageSample>& sam
   const mf::MfParameters<double> base = params;
   const StageResidual residual{&base, &samples, &indices, fit_options()};
   auto make_problem = [&](ceres::Problem& problem, std::vector<double>& x) {
-    auto* cost =
-        new ceres::DynamicAutoDiffCostFunction<StageResidual, kStride>(new StageResidual(residual));
-    cost->AddParameterBlock(static_cast<int>(n));
-    cost->SetNumResiduals(static_cast<int>(samples.size()));
+    ceres::CostFunction* cost = nullptr;
+    if (n <= static_cast<std::size_t>(kSmallStride)) {
+      auto* c = new ceres::DynamicAutoDiffCostFunction<StageResidual, kSmallStride>(
+          new StageResidual(residual));
+      c->AddParameterBlock(static_cast<int>(n));
+      c->SetNumResiduals(static_cast<int>(samples.size()));
+      cost = c;
+    } else {
+      auto* c = new ceres::DynamicAutoDiffCostFunction<StageResidual, kStride>(
+          new StageResidual(residual));
+      c->AddParameterBlock(static_cast<int>(n));
+      c->SetNumResiduals(static_cast<int>(samples.size()));
+      cost = c;
+    }
     problem.AddResidualBlock(cost, nullptr, x.data());
     for (std::size_t i = 0; i < n; ++i) {
       const CoefficientBounds b = coefficient_bounds(spec.keys[i]);
@@ -281,19 +293,32 @@ StageResult fit_stage(const StageSpec& spec, const std::vector<StageSample>& sam
     }
     starts.push_back(x);
   }
-  double best_cost = std::numeric_limits<double>::infinity();
-  ceres::Solver::Summary best;
-  for (auto& x : starts) {
-    ceres::Problem problem;
-    make_problem(problem, x);
-    ceres::Solver::Summary summary;
-    ceres::Solve(so, &problem, &summary);
-    if (summary.IsSolutionUsable() && summary.final_cost < best_cost) {
-      best_cost = summary.final_cost;
-      best = summary;
-      k = x;
+  // Several starts: each is screened with a few iterations, the best one is solved to the end.
+  if (starts.size() > 1) {
+    ceres::Solver::Options screen = so;
+    screen.max_num_iterations = 10;
+    screen.callbacks.clear();
+    double screen_cost = std::numeric_limits<double>::infinity();
+    std::vector<double> chosen = k;
+    for (auto& x : starts) {
+      ceres::Problem problem;
+      make_problem(problem, x);
+      ceres::Solver::Summary summary;
+      ceres::Solve(screen, &problem, &summary);
+      if (summary.IsSolutionUsable() && summary.final_cost < screen_cost) {
+        screen_cost = summary.final_cost;
+        chosen = x;
+      }
     }
+    k = chosen;
   }
+  ceres::Solver::Summary best;
+  {
+    ceres::Problem problem;
+    make_problem(problem, k);
+    ceres::Solve(so, &problem, &best);
+  }
+  const double best_cost = best.final_cost;
   result.iterations = static_cast<int>(best.iterations.size());
   result.converged = best.termination_type == ceres::CONVERGENCE;
   result.values = k;

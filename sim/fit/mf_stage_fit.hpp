@@ -82,8 +82,8 @@ struct StageSpec {
   std::string name;
   std::vector<std::string> keys;  ///< .tir keys of the coefficients freed
   int max_iterations = 100;
-  /// Further starts (each: coefficients set differently from the current values); the solution
-  /// with the lowest cost is kept. Deterministic.
+  /// Further starts (each: coefficients set differently from the current values). Every start
+  /// gets 10 iterations; the one with the lowest cost then is solved to convergence. Deterministic.
   std::vector<std::vector<std::pair<std::string, double>>> other_starts = {};
 };
 
