@@ -313,19 +313,14 @@ StageResult fit_stage(const StageSpec& spec, const std::vector<StageSample>& sam
     k = chosen;
   }
   ceres::Solver::Summary best;
-  {
-    ceres::Problem problem;
-    make_problem(problem, k);
-    ceres::Solve(so, &problem, &best);
-  }
-  const double best_cost = best.final_cost;
+  ceres::Problem problem;
+  make_problem(problem, k);
+  ceres::Solve(so, &problem, &best);
+  const double final_cost = best.final_cost;
   result.iterations = static_cast<int>(best.iterations.size());
   result.converged = best.termination_type == ceres::CONVERGENCE;
   result.values = k;
   for (std::size_t i = 0; i < n; ++i) coefficient(params, indices[i]) = k[i];
-  ceres::Problem problem;
-  make_problem(problem, k);
-  const double final_cost = best_cost;
 
   result.stddev.assign(n, kNaN);
   ceres::Covariance::Options co;
