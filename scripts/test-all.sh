@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Every test, from a fresh clone: installs the Debian packages, then builds and tests every preset —
 # host (unit, golden, vcan through the VM harness), asan, aarch64 and armhf (under qemu-user),
-# the cortex-m4f firmware link — and checks formatting. Exits non-zero if anything fails.
+# the cortex-m4f firmware link — runs the main job (scripts/demo.sh) and checks formatting. Exits
+# non-zero if anything fails.
 set -uo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -35,6 +36,19 @@ start=$(date +%s)
 for preset in host asan aarch64 armhf cortex-m4f; do
   run_workflow "$preset"
 done
+
+echo "=== main job: bash scripts/demo.sh (simulated clock) ==="
+# The README's first command, as a new user runs it (here on the simulated clock: the same scenarios
+# and results; the real clock only adds timing figures). It must finish and draw every plot.
+if bash scripts/demo.sh --clock sim --out build/demo-check >"$log_dir/demo.log" 2>&1 &&
+  [[ -s build/demo-check/braking.png && -s build/demo-check/hunting.png ]]; then
+  grep -E "mean_deceleration|ay_steady|wavelength vs Klingel" "$log_dir/demo.log"
+  total_passed=$((total_passed + 1))
+else
+  tail -20 "$log_dir/demo.log"
+  failed_steps+=("demo")
+  total_failed=$((total_failed + 1))
+fi
 
 echo "=== format check ==="
 if ! cmake --build --preset host --target format-check; then failed_steps+=("format-check"); fi
