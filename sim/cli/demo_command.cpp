@@ -32,8 +32,11 @@ void add_demo_command(CLI::App& app) {
       ->delimiter(',');
   demo->add_option("--sweep-duration-s", settings.sweep_duration_s,
                    "length of the 'sweep' scenario (tyre test machine sweeps)")
+      ->check(CLI::Range(0.001, 3600.0))
       ->capture_default_str();
-  demo->add_option("--period-us", settings.period_us, "cycle period")->capture_default_str();
+  demo->add_option("--period-us", settings.period_us, "cycle period")
+      ->check(CLI::Range(50, 1'000'000))
+      ->capture_default_str();
   demo->add_option("--out", settings.out_dir, "directory for the trace and plots")
       ->capture_default_str();
   demo->add_option("--rt-priority", settings.realtime.fifo_priority,

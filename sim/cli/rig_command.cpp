@@ -30,15 +30,19 @@ void add_rig_command(CLI::App& app) {
                   "scenarios, in order: braking, step-steer, sine-dwell, hunting, sweep")
       ->delimiter(',');
   cmd->add_option("--sweep-duration-s", settings.sweep_duration_s, "length of 'sweep'")
+      ->check(CLI::Range(0.001, 3600.0))
       ->capture_default_str();
   cmd->add_option("--period-us", settings.period_us, "cycle period (the simulated step)")
+      ->check(CLI::Range(50, 1'000'000))
       ->capture_default_str();
   cmd->add_option("--pace-us", settings.pace_us,
                   "wall-clock time per cycle (0: the period; longer runs the lockstep slower than "
                   "real time, same trace)")
+      ->check(CLI::Range(0, 10'000'000))
       ->capture_default_str();
   cmd->add_option("--answer-timeout-ms", settings.answer_timeout_ms,
                   "wait this long for the node's answer of a cycle")
+      ->check(CLI::Range(0.0, 60'000.0))
       ->capture_default_str();
   cmd->add_option("--out", settings.out_dir, "directory for the traces (and plots)")
       ->capture_default_str();

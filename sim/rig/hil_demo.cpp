@@ -91,6 +91,7 @@ DemoResult co_simulate(const DemoSettings& s, NodeRuntime& runtime, ClockT& cloc
           answered = runner.on_frame(f) || answered;
         }
       } while (!answered && clock.now_ns() < give_up && !std::is_same_v<ClockT, hal::SimClock>);
+      result.unanswered_cycles += answered ? 0U : 1U;
       runner.end_cycle(dt_s);
     }
   }
@@ -163,7 +164,7 @@ void print_demo(std::ostream& out, const DemoSettings& s, const DemoResult& r) {
   out << "\n";
   print_report(out, r.report, !s.sim_clock);
   out << "rig frames        " << r.rig_frames_accepted << " accepted, " << r.rig_frames_rejected
-      << " rejected\n";
+      << " rejected; cycles without a complete answer " << r.unanswered_cycles << "\n";
   out << std::setprecision(4);
   out << "answers vs the reference (double, on the inputs the node decoded):\n";
   if (s.node.node.wheels > 0) {

@@ -33,6 +33,7 @@ struct DemoResult {
   SessionReport report;
   std::uint64_t rig_frames_accepted{0};
   std::uint64_t rig_frames_rejected{0};
+  std::uint64_t unanswered_cycles{0};  ///< no complete answer within 200 us (SocketCAN)
   std::vector<ScenarioOutcome> scenarios;
   /// Over all scenarios.
   double max_force_error_n{0.0};

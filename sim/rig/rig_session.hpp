@@ -1,12 +1,14 @@
 #pragma once
 // `tread rig`: the rig side as its own process, talking to a tread node only through CAN frames.
 // It runs the same scenarios as `tread demo` in lockstep with the node: each cycle it sends the
-// inputs (the cycle frame last), waits for the node's answer (its NodeStatus frame comes last),
-// checks every answer against the reference model, advances the scenario, and sleeps to the next
-// period. Kernel ID filters pass only the node's output IDs and error frames. With the node in sync
-// mode (`tread node --mode sync`) the trace is the same, value for value, as the in-process run's
-// (`tread demo --clock sim`), whatever the timing of the two processes. Other traffic (floods,
-// error frames, malformed frames) is counted and ignored.
+// inputs (the cycle frame last), waits for the node's answer (NodeStatus first, then every output
+// message of the configured channels), checks every answer against the reference model, advances
+// the scenario, and sleeps to the next period. Kernel ID filters pass only the node's output IDs
+// and error frames. With the node in sync mode (`tread node --mode sync`, its --timeout-ms longer
+// than the rig's pace, so that it never computes on its own between the rig's cycles) the trace is
+// the same, value for value, as the in-process run's (`tread demo --clock sim`), whatever the
+// timing of the two processes. Other traffic (floods, error frames, malformed frames) is counted
+// and ignored.
 
 #include <cstdint>
 #include <filesystem>

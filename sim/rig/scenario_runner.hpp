@@ -44,8 +44,8 @@ class ScenarioRunner {
   /// The frames of the cycle at `t_s` (the cycle frame last).
   std::span<const proto::CanFrame> begin_cycle(double t_s, std::uint32_t rig_cycle);
   /// One frame from the node (others are ignored). True when it completed this cycle's answer:
-  /// every output message the node sends for the configured channels has arrived since
-  /// begin_cycle().
+  /// every output message the node sends for the configured channels has arrived since the last
+  /// NodeStatus (which the node sends first) after begin_cycle().
   bool on_frame(const proto::CanFrame& frame);
   /// Checks the answers, advances the scenario by `dt_s` and appends the trace row.
   void end_cycle(double dt_s);

@@ -25,9 +25,14 @@ for layout in classic fd; do
   node_pid=$!
   sleep 0.5
   "$tread" rig --can vcan0 $flag --tir "$tir" --wheelsets 2 --wheelset-profile "$profile" \
-    --scenario "$scenarios" --out "$out/rig_$layout" >"$out/rig_$layout.txt" 2>&1 || fail "rig exited with an error ($layout)"
-  sleep 0.2
+    --scenario "$scenarios" --answer-timeout-ms 3000 --out "$out/rig_$layout" >"$out/rig_$layout.txt" 2>&1 ||
+    fail "rig exited with an error ($layout)"
   kill -TERM $node_pid; wait $node_pid || fail "node exited with an error ($layout)"
+  # Let candump (sharing the VM's one CPU) write out what it has queued before stopping it.
+  lines=-1
+  while [ "$lines" != "$(wc -l <"$out/capture_$layout.log")" ]; do
+    lines=$(wc -l <"$out/capture_$layout.log"); sleep 0.5
+  done
   kill -TERM $dump_pid; wait $dump_pid 2>/dev/null
   cat "$out/node_$layout.txt" "$out/rig_$layout.txt"
   grep -q "frames rejected   0 " "$out/node_$layout.txt" || fail "node rejected frames ($layout)"
