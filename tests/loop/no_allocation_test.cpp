@@ -17,70 +17,10 @@
 #include "stub/sim_clock.hpp"
 #include "stub/stub_can_bus.hpp"
 
-namespace {
-std::atomic<bool> g_counting{false};
-std::atomic<std::uint64_t> g_allocations{0};
-void note_allocation() {
-  if (g_counting.load(std::memory_order_relaxed)) {
-    g_allocations.fetch_add(1, std::memory_order_relaxed);
-  }
-}
-}  // namespace
+#include "allocation_counter.hpp"
 
-// ---- counting replacements
-// -------------------------------------------------------------------------
-void* operator new(std::size_t size) {
-  note_allocation();
-  if (void* p = std::malloc(size == 0 ? 1 : size)) {
-    return p;
-  }
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) {
-  return operator new(size);
-}
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
-  note_allocation();
-  return std::malloc(size == 0 ? 1 : size);
-}
-void* operator new[](std::size_t size, const std::nothrow_t& tag) noexcept {
-  return operator new(size, tag);
-}
-void operator delete(void* p) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-  std::free(p);
-}
-
-#if !defined(__SANITIZE_ADDRESS__)
-// glibc: interpose the C allocator too (operator new above calls malloc, counted once there only
-// when not also counted here: malloc counts, operator new's call is then a second count — fine, any
-// count above zero fails).
-extern "C" {
-void* __libc_malloc(std::size_t);
-void* __libc_calloc(std::size_t, std::size_t);
-void* __libc_realloc(void*, std::size_t);
-void* malloc(std::size_t size) {
-  note_allocation();
-  return __libc_malloc(size);
-}
-void* calloc(std::size_t n, std::size_t size) {
-  note_allocation();
-  return __libc_calloc(n, size);
-}
-void* realloc(void* p, std::size_t size) {
-  note_allocation();
-  return __libc_realloc(p, size);
-}
-}
-#endif
+using tread::testing::g_allocations;
+using tread::testing::g_counting;
 
 namespace tread {
 namespace {
@@ -96,7 +36,8 @@ TEST(NoAllocation, TheCounterSeesNewAndMalloc) {  // the measurement itself is n
   std::free(raw);
   delete boxed;
 #if defined(__SANITIZE_ADDRESS__)
-  EXPECT_GE(g_allocations.load(), 1U);  // under ASan only operator new is counted (see above)
+  EXPECT_GE(g_allocations.load(),
+            1U);  // under ASan only operator new is counted (allocation_counter.hpp)
 #else
   EXPECT_GE(g_allocations.load(), 2U);
 #endif

@@ -21,20 +21,9 @@ import tempfile
 
 logging.disable(logging.CRITICAL)
 import canmatrix.formats  # noqa: E402
+from e2e_crc import e2e_crc  # noqa: E402  (next to this script)
 
 D = decimal.Decimal
-
-
-def crc8_sae_j1850(data, crc=0xFF):
-    for byte in data:
-        crc ^= byte
-        for _ in range(8):
-            crc = ((crc << 1) ^ 0x1D) & 0xFF if crc & 0x80 else (crc << 1) & 0xFF
-    return crc ^ 0xFF
-
-
-def e2e_crc(frame_id, payload):
-    return crc8_sae_j1850(bytes([frame_id & 0xFF, frame_id >> 8]) + bytes(payload[1:]))
 
 
 def main():

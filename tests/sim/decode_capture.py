@@ -17,6 +17,7 @@ Prints 'decode_capture: ...' and exits non-zero on any mismatch.
 """
 import csv
 import logging
+import os
 import re
 import sys
 
@@ -24,13 +25,8 @@ logging.disable(logging.CRITICAL)
 import canmatrix  # noqa: E402
 import canmatrix.formats  # noqa: E402
 
-
-def crc8_sae_j1850(data, crc=0xFF):
-    for byte in data:
-        crc ^= byte
-        for _ in range(8):
-            crc = ((crc << 1) ^ 0x1D) & 0xFF if crc & 0x80 else (crc << 1) & 0xFF
-    return crc ^ 0xFF
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "proto"))
+from e2e_crc import e2e_crc  # noqa: E402  (tests/proto/e2e_crc.py)
 
 
 LINE = re.compile(r"^\((\d+\.\d+)\)\s+(\S+)\s+([0-9A-Fa-f]+)(##[0-9A-Fa-f]|#)([0-9A-Fa-f]*)")
@@ -82,7 +78,7 @@ def main():
         if frame.size != len(payload) or bool(frame.is_fd) != fd:
             failures.append(f"line {n}: {frame.name} has {len(payload)} bytes (fd {fd}), DBC {frame.size}")
             continue
-        if payload[0] != crc8_sae_j1850(bytes([fid & 0xFF, fid >> 8]) + payload[1:]):
+        if payload[0] != e2e_crc(fid, payload):
             failures.append(f"line {n}: {frame.name}: bad E2E CRC")
         decoded = {key(frame, name): float(v.phys_value) for name, v in frame.decode(payload).items()}
         for sig in frame.signals:

@@ -49,7 +49,7 @@ for layout in classic fd; do
   fi
   # A frame with a valid E2E CRC but an invalid counter (15: never sent in profile 1, so out of
   # sequence whatever the receiver's state). CRC-8/SAE-J1850 over the data ID and payload, computed
-  # offline (tests/proto/dbc_crosscheck.py has the same function).
+  # offline (tests/proto/e2e_crc.py).
   if [ $layout = classic ]; then
     cansend vcan0 100#7F0F000000000000
   else

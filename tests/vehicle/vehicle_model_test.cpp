@@ -13,33 +13,12 @@
 #include "mf/mf_parameters_from_tir.hpp"
 #include "vehicle/tyre_function.hpp"
 
-// Every operator new of this test program is counted while g_counting is set (the rig's step path
+// Every allocation of this test program is counted while g_counting is set (the rig's step path
 // must not allocate).
-namespace {
-std::atomic<bool> g_counting{false};
-std::atomic<long> g_allocations{0};
-}  // namespace
+#include "allocation_counter.hpp"
 
-void* operator new(std::size_t size) {
-  if (g_counting.load(std::memory_order_relaxed)) g_allocations.fetch_add(1);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) {
-  return operator new(size);
-}
-void operator delete(void* p) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-  std::free(p);
-}
+using tread::testing::g_allocations;
+using tread::testing::g_counting;
 
 namespace tread::vehicle {
 namespace {
@@ -330,7 +309,7 @@ TEST_F(VehicleModelMf, StepPathDoesNotAllocate) {
   g_counting = true;
   ::operator delete(::operator new(8));  // a call, not a new-expression: never elided
   g_counting = false;
-  ASSERT_EQ(g_allocations.load(), 1);
+  ASSERT_GE(g_allocations.load(), 1U);
   // wheel_inputs → tyre (the in-process Magic Formula) → step, 30 000 cycles of a gentle weave.
   VehicleModel model(p_, straight_running_state(p_, 20.0));
   Controls c;
@@ -345,7 +324,7 @@ TEST_F(VehicleModelMf, StepPathDoesNotAllocate) {
     model.step(f, c, kDt);
   }
   g_counting = false;
-  EXPECT_EQ(g_allocations.load(), 0);
+  EXPECT_EQ(g_allocations.load(), 0U);
   EXPECT_TRUE(std::isfinite(model.state().x_m));
 }
 
