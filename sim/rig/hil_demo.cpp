@@ -6,7 +6,6 @@
 #include <ostream>
 #include <stdexcept>
 
-#include "contact/contact_setup.hpp"
 #include "loop/loop_runner.hpp"
 #include "node/candump_log.hpp"
 #include "posix/posix_clock.hpp"
@@ -36,12 +35,7 @@ DemoResult co_simulate(const DemoSettings& s, NodeRuntime& runtime, ClockT& cloc
                        NodeBus& node_bus, RigBus& rig_bus) {
   const node::NodeConfig& cfg = runtime.node().config();
   const ScenarioContext context = context_of(s);
-  const std::vector<std::string> names =
-      s.scenarios.empty() ? default_scenarios(context) : s.scenarios;
-  std::vector<std::unique_ptr<RigScenario>> scenarios;
-  for (const std::string& n : names) {
-    scenarios.push_back(make_scenario(n, context));  // all built (and checked) before the loop
-  }
+  const std::vector<std::unique_ptr<RigScenario>> scenarios = make_scenarios(s.scenarios, context);
   contact::ContactTable contact_reference;
   RigReference reference;
   if (cfg.wheels > 0) {
@@ -49,9 +43,7 @@ DemoResult co_simulate(const DemoSettings& s, NodeRuntime& runtime, ClockT& cloc
     reference.options = runtime.tyre_options();
   }
   if (cfg.wheelsets > 0) {
-    contact_reference =
-        contact::build_contact(parse_wheelset_profile(s.node.wheelset_profile))
-            .table(-s.node.wheelset_ymax_mm, s.node.wheelset_ymax_mm, s.node.wheelset_step_mm);
+    contact_reference = reference_contact_table(context);
     reference.contact = &contact_reference;
   }
 
@@ -97,11 +89,7 @@ DemoResult co_simulate(const DemoSettings& s, NodeRuntime& runtime, ClockT& cloc
   }
   for (auto& runner : runners) {
     ScenarioOutcome o = finish_scenario(*runner, s.out_dir, s.plot);
-    result.max_force_error_n = std::max(result.max_force_error_n, o.check.max_force_error_n);
-    result.max_force_n = std::max(result.max_force_n, o.check.max_force_n);
-    result.max_moment_error_nm = std::max(result.max_moment_error_nm, o.check.max_moment_error_nm);
-    result.max_delta_r_error_mm =
-        std::max(result.max_delta_r_error_mm, o.check.max_delta_r_error_mm);
+    result.answers.add(o.check);
     result.scenarios.push_back(std::move(o));
   }
   result.report.loop = loop.stats();
@@ -168,13 +156,14 @@ void print_demo(std::ostream& out, const DemoSettings& s, const DemoResult& r) {
   out << std::setprecision(4);
   out << "answers vs the reference (double, on the inputs the node decoded):\n";
   if (s.node.node.wheels > 0) {
-    out << "  max |dF|          " << r.max_force_error_n << " N  ("
-        << 100.0 * r.max_force_error_n / std::max(r.max_force_n, 1.0) << " % of the largest force "
-        << r.max_force_n << " N; quantisation 0.5 N + float)\n";
-    out << "  max |dMz|         " << r.max_moment_error_nm << " N m\n";
+    out << "  max |dF|          " << r.answers.max_force_error_n << " N  ("
+        << 100.0 * r.answers.max_force_error_n / std::max(r.answers.max_force_n, 1.0)
+        << " % of the largest force " << r.answers.max_force_n
+        << " N; quantisation 0.5 N + float)\n";
+    out << "  max |dMz|         " << r.answers.max_moment_error_nm << " N m\n";
   }
   if (s.node.node.wheelsets > 0) {
-    out << "  max |d delta_r|   " << r.max_delta_r_error_mm
+    out << "  max |d delta_r|   " << r.answers.max_delta_r_error_mm
         << " mm (quantisation 0.0005 mm + float table)\n";
   }
   for (const ScenarioOutcome& o : r.scenarios) {

@@ -35,11 +35,7 @@ struct DemoResult {
   std::uint64_t rig_frames_rejected{0};
   std::uint64_t unanswered_cycles{0};  ///< no complete answer within 200 us (SocketCAN)
   std::vector<ScenarioOutcome> scenarios;
-  /// Over all scenarios.
-  double max_force_error_n{0.0};
-  double max_force_n{0.0};
-  double max_moment_error_nm{0.0};
-  double max_delta_r_error_mm{0.0};
+  AnswerCheck answers;  ///< over all scenarios
 };
 
 DemoResult run_demo(const DemoSettings& settings);

@@ -4,9 +4,7 @@
 #include <ostream>
 #include <stdexcept>
 
-#include "contact/contact_setup.hpp"
 #include "mf/mf_parameters_from_tir.hpp"
-#include "node/node_runtime.hpp"
 #include "posix/posix_clock.hpp"
 #include "rig/scenario_catalogue.hpp"
 #include "socketcan/socketcan_bus.hpp"
@@ -23,12 +21,7 @@ RigReport run_rig(const RigSettings& s) {
   context.wheelset_step_mm = s.wheelset_step_mm;
   context.sweep_duration_s = s.sweep_duration_s;
   context.period_s = static_cast<double>(s.period_us) * 1e-6;
-  const std::vector<std::string> names =
-      s.scenarios.empty() ? default_scenarios(context) : s.scenarios;
-  std::vector<std::unique_ptr<RigScenario>> scenarios;
-  for (const std::string& n : names) {
-    scenarios.push_back(make_scenario(n, context));
-  }
+  const std::vector<std::unique_ptr<RigScenario>> scenarios = make_scenarios(s.scenarios, context);
   mf::MfParameters<double> tyre{};
   contact::ContactTable contact_table;
   RigReference reference;
@@ -37,8 +30,7 @@ RigReport run_rig(const RigSettings& s) {
     reference.tyre = &tyre;
   }
   if (s.wheelsets > 0) {
-    contact_table = contact::build_contact(parse_wheelset_profile(s.wheelset_profile))
-                        .table(-s.wheelset_ymax_mm, s.wheelset_ymax_mm, s.wheelset_step_mm);
+    contact_table = reference_contact_table(context);
     reference.contact = &contact_table;
   }
 
@@ -138,11 +130,7 @@ RigReport run_rig(const RigSettings& s) {
   }
   for (auto& runner : runners) {
     ScenarioOutcome o = finish_scenario(*runner, s.out_dir, s.plot);
-    r.answers_checked += o.check.answers_checked;
-    r.stale_answers += o.check.stale_answers;
-    r.max_force_error_n = std::max(r.max_force_error_n, o.check.max_force_error_n);
-    r.max_moment_error_nm = std::max(r.max_moment_error_nm, o.check.max_moment_error_nm);
-    r.max_delta_r_error_mm = std::max(r.max_delta_r_error_mm, o.check.max_delta_r_error_mm);
+    r.answers.add(o.check);
     r.scenarios.push_back(std::move(o));
   }
   r.node_overruns = status_view.status.overruns;
@@ -159,9 +147,10 @@ void print_rig_report(std::ostream& out, const RigReport& r) {
       << r.node_frames_rejected << " rejected\n";
   out << "other traffic        " << r.foreign_frames << " foreign frames, " << r.error_frames
       << " error frames\n";
-  out << "answers checked      " << r.answers_checked << " (stale " << r.stale_answers << ")\n";
-  out << "max |dF|             " << r.max_force_error_n << " N, max |dMz| " << r.max_moment_error_nm
-      << " N m, max |d delta_r| " << r.max_delta_r_error_mm
+  out << "answers checked      " << r.answers.answers_checked << " (stale "
+      << r.answers.stale_answers << ")\n";
+  out << "max |dF|             " << r.answers.max_force_error_n << " N, max |dMz| "
+      << r.answers.max_moment_error_nm << " N m, max |d delta_r| " << r.answers.max_delta_r_error_mm
       << " mm (vs the reference in double; quantisation 0.5 N / 0.025 N m / 0.0005 mm)\n";
   out << "node status          cycle " << r.node_cycle << ", overruns " << r.node_overruns
       << ", rejected " << r.node_rejected << "\n";

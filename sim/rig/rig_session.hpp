@@ -51,13 +51,9 @@ struct RigReport {
   /// standard frames on them that fail to be a node output, e.g. a flood's).
   std::uint64_t foreign_frames{0};
   std::uint64_t error_frames{0};
-  std::uint64_t late_cycles{0};   ///< cycles whose answer did not come within the timeout
-  std::uint64_t stray_frames{0};  ///< frames that arrived between cycles (not an answer)
-  std::uint64_t answers_checked{0};
-  std::uint64_t stale_answers{0};
-  double max_force_error_n{0.0};
-  double max_moment_error_nm{0.0};
-  double max_delta_r_error_mm{0.0};
+  std::uint64_t late_cycles{0};    ///< cycles whose answer did not come within the timeout
+  std::uint64_t stray_frames{0};   ///< frames that arrived between cycles (not an answer)
+  AnswerCheck answers;             ///< over all scenarios
   std::uint32_t node_overruns{0};  ///< from the last NodeStatus
   std::uint32_t node_rejected{0};
   std::uint32_t node_cycle{0};

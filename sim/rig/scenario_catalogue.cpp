@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "contact/contact_setup.hpp"
+#include "node/node_runtime.hpp"
 #include "rig/hunting_scenario.hpp"
 #include "rig/sweep_scenario.hpp"
 #include "rig/vehicle_scenario.hpp"
@@ -54,6 +56,20 @@ std::unique_ptr<RigScenario> make_scenario(const std::string& name,
     known += (known.empty() ? "" : ", ") + n;
   }
   throw std::invalid_argument("unknown scenario '" + name + "' (known: " + known + ")");
+}
+
+std::vector<std::unique_ptr<RigScenario>> make_scenarios(const std::vector<std::string>& names,
+                                                         const ScenarioContext& context) {
+  std::vector<std::unique_ptr<RigScenario>> scenarios;
+  for (const std::string& n : names.empty() ? default_scenarios(context) : names) {
+    scenarios.push_back(make_scenario(n, context));
+  }
+  return scenarios;
+}
+
+contact::ContactTable reference_contact_table(const ScenarioContext& context) {
+  return contact::build_contact(parse_wheelset_profile(context.wheelset_profile))
+      .table(-context.wheelset_ymax_mm, context.wheelset_ymax_mm, context.wheelset_step_mm);
 }
 
 }  // namespace tread::host

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/rigid_contact.hpp"
 #include "rig/rig_scenario.hpp"
 
 namespace tread::host {
@@ -26,5 +27,12 @@ std::vector<std::string> scenario_names();
 std::vector<std::string> default_scenarios(const ScenarioContext& context);
 /// Throws std::invalid_argument for an unknown name or one the channels cannot run.
 std::unique_ptr<RigScenario> make_scenario(const std::string& name, const ScenarioContext& context);
+/// Every scenario of a run, built (and so checked) before the first cycle; `names` empty: the
+/// defaults for the channels.
+std::vector<std::unique_ptr<RigScenario>> make_scenarios(const std::vector<std::string>& names,
+                                                         const ScenarioContext& context);
+/// The rig's reference for the node's delta r answers: the node's contact table (same wheelset
+/// profile, range and step) in double.
+contact::ContactTable reference_contact_table(const ScenarioContext& context);
 
 }  // namespace tread::host

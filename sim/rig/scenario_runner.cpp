@@ -12,6 +12,15 @@
 
 namespace tread::host {
 
+void AnswerCheck::add(const AnswerCheck& other) {
+  answers_checked += other.answers_checked;
+  stale_answers += other.stale_answers;
+  max_force_error_n = std::max(max_force_error_n, other.max_force_error_n);
+  max_moment_error_nm = std::max(max_moment_error_nm, other.max_moment_error_nm);
+  max_delta_r_error_mm = std::max(max_delta_r_error_mm, other.max_delta_r_error_mm);
+  max_force_n = std::max(max_force_n, other.max_force_n);
+}
+
 ScenarioRunner::ScenarioRunner(RigScenario& scenario, proto::RigLink& link, proto::Layout layout,
                                std::uint8_t wheels, std::uint8_t wheelsets,
                                const RigReference& reference)

@@ -33,6 +33,9 @@ struct AnswerCheck {
   double max_moment_error_nm{0.0};
   double max_delta_r_error_mm{0.0};
   double max_force_n{0.0};  ///< largest |F| of the reference
+
+  /// Totals over several runs: counts add up, maxima are kept.
+  void add(const AnswerCheck& other);
 };
 
 class ScenarioRunner {
