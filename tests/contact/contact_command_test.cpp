@@ -13,16 +13,14 @@
 #include <vector>
 
 #include "golden_path.hpp"
+#include "test_dir.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
 fs::path tmp_dir() {
-  const char* env = std::getenv("TREAD_TEST_TMP");
-  fs::path dir = env != nullptr ? fs::path(env) : fs::temp_directory_path() / "tread_contact_test";
-  fs::create_directories(dir);
-  return dir;
+  return tread::testing::test_dir("contact_command_test");
 }
 
 int run(const std::string& args, const fs::path& out, const fs::path& err) {

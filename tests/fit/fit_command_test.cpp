@@ -18,16 +18,13 @@
 #include "golden_path.hpp"
 #include "mf/mf_evaluate.hpp"
 #include "mf/mf_parameters_from_tir.hpp"
+#include "test_dir.hpp"
 #include "tir/tir_file.hpp"
 
 namespace {
 
 std::filesystem::path tmp_dir() {
-  const char* env = std::getenv("TREAD_TEST_TMP");
-  std::filesystem::path dir = env != nullptr ? env : std::filesystem::temp_directory_path();
-  dir /= "fit_command_test";
-  std::filesystem::create_directories(dir);
-  return dir;
+  return tread::testing::test_dir("fit_command_test");
 }
 
 int run(const std::string& args, const std::filesystem::path& stderr_file) {

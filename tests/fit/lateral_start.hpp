@@ -1,7 +1,9 @@
 #pragma once
-// The neutral start of the pure-lateral fit tests and benchmark: the file's own non-lateral data
-// (FNOMIN, scalings, ...) with the 13 fitted γ-free lateral coefficients at the book's defaults.
+// What the pure-lateral fit tests and benchmark share: the pure lateral force, and the neutral
+// start: the file's own non-lateral data (FNOMIN, scalings, ...) with the 13 fitted γ-free lateral
+// coefficients at the book's defaults.
 
+#include "mf/mf_evaluate.hpp"
 #include "mf/mf_parameters.hpp"
 
 namespace tread::testing {
@@ -23,6 +25,18 @@ inline mf::MfParameters<double> book_lateral_start(const mf::MfParameters<double
   start.pvy1 = book.pvy1;
   start.pvy2 = book.pvy2;
   return start;
+}
+
+/// Pure lateral force Fy0(alpha) at load fz (the fit's own conditions: uncombined, no extras).
+inline double pure_fy_n(const mf::MfParameters<double>& p, double fz_n, double alpha_rad) {
+  mf::MfInput<double> in;
+  in.fz_n = fz_n;
+  in.alpha_rad = alpha_rad;
+  in.vx_mps = 16.6;
+  mf::MfOptions o;
+  o.combined = false;
+  o.extras = false;
+  return mf::evaluate(p, in, o).fy_n;
 }
 
 }  // namespace tread::testing

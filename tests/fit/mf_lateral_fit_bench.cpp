@@ -19,14 +19,7 @@ namespace {
 using namespace tread;
 
 double fy(const mf::MfParameters<double>& p, double fz, double alpha) {
-  mf::MfInput<double> in;
-  in.fz_n = fz;
-  in.alpha_rad = alpha;
-  in.vx_mps = 16.6;
-  mf::MfOptions o;
-  o.combined = false;
-  o.extras = false;
-  return mf::evaluate(p, in, o).fy_n;
+  return tread::testing::pure_fy_n(p, fz, alpha);
 }
 
 void BM_Mf61PureLateralFit5000(benchmark::State& state) {

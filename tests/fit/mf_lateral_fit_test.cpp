@@ -21,14 +21,7 @@ namespace tread::fit {
 namespace {
 
 double fy(const mf::MfParameters<double>& p, double fz, double alpha) {
-  mf::MfInput<double> in;
-  in.fz_n = fz;
-  in.alpha_rad = alpha;
-  in.vx_mps = 16.6;
-  mf::MfOptions o;
-  o.combined = false;
-  o.extras = false;
-  return mf::evaluate(p, in, o).fy_n;
+  return tread::testing::pure_fy_n(p, fz, alpha);
 }
 
 double peak(const mf::MfParameters<double>& p, double fz) {

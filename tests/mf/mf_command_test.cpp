@@ -12,15 +12,12 @@
 
 #include "csv_table.hpp"
 #include "golden_path.hpp"
+#include "test_dir.hpp"
 
 namespace {
 
 std::filesystem::path tmp_dir() {
-  const char* env = std::getenv("TREAD_TEST_TMP");
-  std::filesystem::path dir = env != nullptr ? env : std::filesystem::temp_directory_path();
-  dir /= "mf_command_test";
-  std::filesystem::create_directories(dir);
-  return dir;
+  return tread::testing::test_dir("mf_command_test");
 }
 
 int run(const std::string& args, const std::filesystem::path& stderr_file) {

@@ -14,6 +14,7 @@
 #include "profile/profile_csv.hpp"
 #include "profile/simpack_profile.hpp"
 #include "profile/wheel_profile.hpp"
+#include "test_dir.hpp"
 
 namespace tread::profile {
 namespace {
@@ -37,11 +38,7 @@ CommandResult run(const std::string& args) {
 }
 
 std::filesystem::path tmp_dir() {
-  const char* env = std::getenv("TREAD_TEST_TMP");
-  std::filesystem::path dir = env != nullptr ? env : std::filesystem::temp_directory_path();
-  dir /= "profile_command_test";
-  std::filesystem::create_directories(dir);
-  return dir;
+  return tread::testing::test_dir("profile_command_test");
 }
 
 TEST(ProfileCommandGolden, TableReproducesTheSeedAppendix) {

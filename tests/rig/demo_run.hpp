@@ -9,15 +9,12 @@
 
 #include "golden_path.hpp"
 #include "rig/hil_demo.hpp"
+#include "test_dir.hpp"
 
 namespace tread::testing {
 
 inline std::filesystem::path rig_test_dir(const std::string& name) {
-  const char* env = std::getenv("TREAD_TEST_TMP");
-  std::filesystem::path dir = env != nullptr ? env : std::filesystem::temp_directory_path();
-  dir /= "rig_" + name;
-  std::filesystem::create_directories(dir);
-  return dir;
+  return test_dir("rig_" + name);
 }
 
 inline host::DemoSettings demo_settings(

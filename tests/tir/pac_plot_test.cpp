@@ -12,15 +12,13 @@
 #include <string>
 
 #include "golden_path.hpp"
+#include "test_dir.hpp"
 #include "tir/pac_coefficients.hpp"
 
 namespace {
 
 std::filesystem::path tmp_dir() {
-  const char* env = std::getenv("TREAD_TEST_TMP");
-  auto dir = std::filesystem::path(env != nullptr ? env : "/tmp") / "pac_plot_test";
-  std::filesystem::create_directories(dir);
-  return dir;
+  return tread::testing::test_dir("pac_plot_test");
 }
 
 tread::pac::PacParams<double> hmmwv() {
