@@ -41,6 +41,8 @@
 #include "mf/mf_types.hpp"
 
 #include <cmath>
+#include <type_traits>
+#include <utility>
 
 namespace tread::mf {
 
@@ -52,34 +54,62 @@ using std::exp;
 using std::pow;
 using std::sqrt;
 
+/// Per-lane truth values: bool for the scalars (double, float, ceres::Jet), lanes::Mask4 for
+/// lanes::F4. Every branch on an input-dependent value is written as if_else (a select), so the
+/// same code runs four wheels at a time; any_lane skips work no lane needs. For the scalars these
+/// are the plain `c ? a : b` and `if`, so their results do not change by a bit.
 template <typename T>
-constexpr bool is_zero(const T& x) {
+using MaskOf = decltype(std::declval<const T&>() < std::declval<const T&>());
+
+template <typename T>
+constexpr bool is_lanes = !std::is_same_v<MaskOf<T>, bool>;
+
+inline bool any_lane(bool b) {
+  return b;
+}
+template <typename T>
+T if_else(bool c, const T& a, const T& b) {
+  return c ? a : b;
+}
+
+template <typename T>
+auto is_zero(const T& x) {
   return !(x < T(0)) && !(x > T(0));
 }
 /// MATLAB sign(): −1, 0, +1.
 template <typename T>
 T sgn(const T& x) {
-  if (x > T(0)) return T(1);
-  if (x < T(0)) return T(-1);
-  return T(0);
+  return if_else(x > T(0), T(1), if_else(x < T(0), T(-1), T(0)));
 }
 /// sign() with sign(0) = 1, as MFeval writes `s = sign(x); s(s == 0) = 1`.
 template <typename T>
 T sgn_nz(const T& x) {
-  return x < T(0) ? T(-1) : T(1);
+  return if_else(x < T(0), T(-1), T(1));
 }
 template <typename T>
 T max_of(const T& a, const T& b) {
-  return a < b ? b : a;
+  return if_else(a < b, b, a);
 }
 template <typename T>
 T min_of(const T& a, const T& b) {
-  return b < a ? b : a;
+  return if_else(b < a, b, a);
 }
 /// num/den, or `fallback` where den is exactly 0 (MFeval: Inf or NaN there).
 template <typename T>
 T div_or(const T& num, const T& den, const T& fallback) {
-  return is_zero(den) ? fallback : num / den;
+  if constexpr (is_lanes<T>) {
+    return if_else(is_zero(den), fallback, num / den);
+  } else {
+    return is_zero(den) ? fallback : num / den;
+  }
+}
+/// Out-of-range lanes as MfOutput<T>::status.
+inline Status to_status(bool out_of_range) {
+  return out_of_range ? Status::out_of_range : Status::ok;
+}
+template <typename M>
+M to_status(const M& out_of_range) {
+  return out_of_range;
 }
 
 template <typename T>
@@ -93,12 +123,12 @@ struct Prepared {
   T fz, kappa, alpha, gamma, phit, vx, p;  // limited
   T ufz, ukappa, ukappa_low, ualpha, ugamma;
   T fz_low_limit;
-  bool is_low_speed = false;
+  MaskOf<T> is_low_speed{};
   T reduction_smooth = T(1);
   T dpi;
   T omega, re, romega;
   T phi = T(0), epsilong = T(0);
-  Status status = Status::ok;
+  MaskOf<T> out_of_range{};  // an input lay outside the finite-arithmetic envelope
 };
 
 /// Shared intermediate quantities (calculateBasic).
@@ -132,8 +162,8 @@ struct CombinedArgs {
 
 /// calculateRe: Re by MFeval's fixed-point iteration on omega = (κ·Vx + Vx)/Re (unlimited κ, Fz,
 /// Vx).
-template <typename T>
-void rolling_radius(const MfParameters<T>& p, Prepared<T>& in) {
+template <typename T, typename P>
+void rolling_radius(const MfParameters<P>& p, Prepared<T>& in) {
   const T r0 = p.unloaded_radius_m;
   const T fz0 = p.fnomin_n;
   const T cz = p.vertical_stiffness_npm * (T(1) + p.pfz1 * in.dpi);
@@ -145,13 +175,18 @@ void rolling_radius(const MfParameters<T>& p, Prepared<T>& in) {
   T romega = r0 * p.q_re0;
   // MFeval: while |Re_old − Re| > 1e-9 (in float: 1e-6, the 1e-9 step is below float's
   // resolution). The cap only guards against a diverging file.
-  const T tolerance = T(sizeof(T) == sizeof(float) ? 1e-6 : 1e-9);
-  for (int i = 0; i < 100 && abs(re_old - re) > tolerance; ++i) {
-    re_old = re;
-    omega = div_or(in.ukappa * in.vx + in.vx, re, T(0));
-    const T speed = (omega * r0) / p.longvl_mps;
-    romega = r0 * (p.q_re0 + p.q_v1 * speed * speed);
-    re = romega - deflection;
+  // Lanes iterate until all have converged; a converged lane keeps its values.
+  const T tolerance = T(std::is_same_v<T, float> || is_lanes<T> ? 1e-6 : 1e-9);
+  for (int i = 0; i < 100; ++i) {
+    const auto active = abs(re_old - re) > tolerance;
+    if (!any_lane(active)) break;
+    const T omega_next = div_or(in.ukappa * in.vx + in.vx, re, T(0));
+    const T speed = (omega_next * r0) / p.longvl_mps;
+    const T romega_next = r0 * (p.q_re0 + p.q_v1 * speed * speed);
+    re_old = if_else(active, re, re_old);
+    omega = if_else(active, omega_next, omega);
+    romega = if_else(active, romega_next, romega);
+    re = if_else(active, romega_next - deflection, re);
   }
   in.re = re;
   in.omega = omega;
@@ -159,32 +194,28 @@ void rolling_radius(const MfParameters<T>& p, Prepared<T>& in) {
 }
 
 template <typename T>
-T clamp_envelope(const T& x, const T& lo, const T& hi, Status& status) {
-  if (x < lo) {
-    status = Status::out_of_range;
-    return lo;
-  }
-  if (x > hi) {
-    status = Status::out_of_range;
-    return hi;
-  }
-  return x;
+T clamp_envelope(const T& x, const T& lo, const T& hi, MaskOf<T>& out_of_range) {
+  const auto below = x < lo;
+  const auto above = x > hi;
+  out_of_range = out_of_range || below || above;
+  return if_else(below, lo, if_else(above, hi, x));
 }
 
 /// parseInputs.
-template <typename T>
-Prepared<T> prepare(const MfParameters<T>& p, const MfInput<T>& input, const MfOptions& options) {
+template <typename T, typename P>
+Prepared<T> prepare(const MfParameters<P>& p, const MfInput<T>& input, const MfOptions& options) {
   Prepared<T> in;
-  Status status = Status::ok;
-  // The finite-arithmetic envelope (not in MFeval; see the header comment).
+  MaskOf<T>& status = in.out_of_range;
+  // The finite-arithmetic envelope (not in MFeval; see the header comment). Fz < 0 is 0 (no
+  // contact), not out of range.
   const T fz_env = T(10) * max_of(p.fzmax_n, p.fnomin_n);
-  T fz = input.fz_n < T(0) ? T(0) : clamp_envelope(input.fz_n, T(0), fz_env, status);
+  T fz = clamp_envelope(max_of(input.fz_n, T(0)), T(0), fz_env, status);
   T kappa = clamp_envelope(input.kappa, T(-100), T(100), status);
   T alpha = clamp_envelope(input.alpha_rad, T(-1.5707), T(1.5707), status);
   T gamma = clamp_envelope(input.gamma_rad, T(-1.5707), T(1.5707), status);
   T phit = clamp_envelope(input.phit_1pm, T(-100), T(100), status);
   const T vx = clamp_envelope(input.vx_mps, T(-1000), T(1000), status);
-  T pressure = input.p_pa > T(0) ? input.p_pa : p.inflpres_pa;
+  T pressure = if_else(input.p_pa > T(0), input.p_pa, T(p.inflpres_pa));
   pressure = clamp_envelope(pressure, T(1e-6) * p.nompres_pa, T(100) * p.nompres_pa, status);
 
   in.ufz = fz;
@@ -196,36 +227,40 @@ Prepared<T> prepare(const MfParameters<T>& p, const MfInput<T>& input, const MfO
   in.fz_low_limit = fz;
 
   if (options.use_limits) {
-    if (!is_zero(phit)) phit = phit * mf_cos(alpha);  // "empirically discovered"
+    // "empirically discovered"
+    const auto turning = !is_zero(phit);
+    if (any_lane(turning)) phit = if_else(turning, phit * mf_cos(alpha), phit);
     const T vxlow = p.vxlow_mps;
-    in.is_low_speed = abs(vx) <= vxlow;
+    const auto low = abs(vx) <= vxlow;
+    in.is_low_speed = low;
     T reduction_linear = T(1);
-    if (in.is_low_speed) {
+    if (any_lane(low)) {
       const T wvlow = T(0.5) * (T(1) + mf_cos(pi<T>() * div_or(vx, vxlow, T(0))));
-      in.reduction_smooth = T(1) - wvlow;
-      reduction_linear = abs(div_or(vx, vxlow, T(0)));
-      in.ukappa_low = in.ukappa_low * reduction_linear;
-      phit = phit * reduction_linear;
+      in.reduction_smooth = if_else(low, T(1) - wvlow, T(1));
+      reduction_linear = if_else(low, abs(div_or(vx, vxlow, T(0))), T(1));
+      in.ukappa_low = if_else(low, in.ukappa_low * reduction_linear, in.ukappa_low);
+      phit = if_else(low, phit * reduction_linear, phit);
     }
     // |Vx| + |tan α·Vx| < VXLOW needs |Vx| < VXLOW: skip the tan otherwise.
-    const T vsy = abs(vx) < vxlow ? mf_tan(alpha) * vx : T(0);
-    if (vx < T(0)) phit = -phit;
+    const auto slow = abs(vx) < vxlow;
+    const T vsy = any_lane(slow) ? if_else(slow, mf_tan(alpha) * vx, T(0)) : T(0);
+    phit = if_else(vx < T(0), -phit, phit);
     const T speed_sum = abs(vx) + abs(vsy);
-    if (in.is_low_speed) kappa = kappa * reduction_linear;
-    if (speed_sum < vxlow) alpha = alpha * (speed_sum / vxlow);
+    kappa = if_else(low, kappa * reduction_linear, kappa);
+    alpha = if_else(speed_sum < vxlow, alpha * (speed_sum / vxlow), alpha);
 
-    if (alpha < p.alpmin_rad) alpha = p.alpmin_rad;
-    if (alpha > p.alpmax_rad) alpha = p.alpmax_rad;
-    if (gamma < p.cammin_rad) gamma = p.cammin_rad;
-    if (gamma > p.cammax_rad) gamma = p.cammax_rad;
-    if (fz > p.fzmax_n) fz = p.fzmax_n;
-    in.fz_low_limit = fz < p.fzmin_n ? p.fzmin_n : fz;
-    if (pressure < p.presmin_pa) pressure = p.presmin_pa;
-    if (pressure > p.presmax_pa) pressure = p.presmax_pa;
-    if (kappa < p.kpumin) kappa = p.kpumin;
-    if (kappa > p.kpumax) kappa = p.kpumax;
+    alpha = max_of(alpha, T(p.alpmin_rad));
+    alpha = min_of(alpha, T(p.alpmax_rad));
+    gamma = max_of(gamma, T(p.cammin_rad));
+    gamma = min_of(gamma, T(p.cammax_rad));
+    fz = min_of(fz, T(p.fzmax_n));
+    in.fz_low_limit = max_of(fz, T(p.fzmin_n));
+    pressure = max_of(pressure, T(p.presmin_pa));
+    pressure = min_of(pressure, T(p.presmax_pa));
+    kappa = max_of(kappa, T(p.kpumin));
+    kappa = min_of(kappa, T(p.kpumax));
   }
-  if (is_zero(vx)) in.ualpha = T(0);  // "zero speed (empirically discovered)"
+  in.ualpha = if_else(is_zero(vx), T(0), in.ualpha);  // "zero speed (empirically discovered)"
 
   in.fz = fz;
   in.kappa = kappa;
@@ -243,26 +278,26 @@ Prepared<T> prepare(const MfParameters<T>& p, const MfInput<T>& input, const MfO
     const T vsy = -mf_tan(alpha) * abs(vx);
     T vc_prime = sqrt(vx * vx + vsy * vsy);
     in.epsilong = p.pecp1 * (T(1) + p.pecp2 * dfz);
-    if (abs(vx) < p.vxlow_mps) vc_prime = p.vxlow_mps * sgn_nz(vx);
+    vc_prime = if_else(abs(vx) < p.vxlow_mps, p.vxlow_mps * sgn_nz(vx), vc_prime);
     const T psi_dot = -phit * vc_prime;
     in.phi = div_or(psi_dot - (T(1) - in.epsilong) * in.omega * mf_sin(gamma), vc_prime, T(0));
   }
-  in.status = status;
   return in;
 }
 
 /// calculateBasic.
-template <typename T>
-Basic<T> basic(const MfParameters<T>& p, const Prepared<T>& in, const MfOptions& options) {
+template <typename T, typename P>
+Basic<T> basic(const MfParameters<P>& p, const Prepared<T>& in, const MfOptions& options) {
   Basic<T> b;
   const T vcx = in.vx;
-  const T vsy = mf_tan(in.alpha) * abs(vcx);
+  const T tan_alpha = mf_tan(in.alpha);
+  const T vsy = tan_alpha * abs(vcx);
   const T vc = sqrt(vcx * vcx + vsy * vsy);
   b.fz0_prime = p.lfzo * p.fnomin_n;
   b.dfz = (in.fz - b.fz0_prime) / b.fz0_prime;
   b.dpi = (in.p - p.nompres_pa) / p.nompres_pa;
   if (options.use_alpha_star) {
-    b.alpha_star = mf_tan(in.alpha) * sgn(vcx);
+    b.alpha_star = tan_alpha * sgn(vcx);
     b.gamma_star = mf_sin(in.gamma);
   } else {
     b.alpha_star = in.alpha;
@@ -292,8 +327,8 @@ Basic<T> basic(const MfParameters<T>& p, const Prepared<T>& in, const MfOptions&
 }
 
 /// calculateFx0 up to its core; writes mux and Kxk.
-template <typename T>
-Fx0Args<T> fx0_args(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>& b,
+template <typename T, typename P>
+Fx0Args<T> fx0_args(const MfParameters<P>& p, const Prepared<T>& in, const Basic<T>& b,
                     const MfOptions& options, T& mux, T& kxk) {
   const T dfz = b.dfz;
   const T dpi = b.dpi;
@@ -306,20 +341,18 @@ Fx0Args<T> fx0_args(const MfParameters<T>& p, const Prepared<T>& in, const Basic
   const T cx = p.pcx1 * p.lcx;
   mux = (p.pdx1 + p.pdx2 * dfz) * (T(1) + p.ppx3 * dpi + p.ppx4 * dpi * dpi) *
         (T(1) - p.pdx3 * b.gamma_x * b.gamma_x) * b.lmux_star;
-  if (is_zero(fz)) mux = T(0);
+  mux = if_else(is_zero(fz), T(0), mux);
   const T dx = mux * fz * zeta1;
   kxk = fz * (p.pkx1 + p.pkx2 * dfz) * mf_exp(p.pkx3 * dfz) *
         (T(1) + p.ppx1 * dpi + p.ppx2 * dpi * dpi) * p.lkx;
   const T bx = div_or(kxk, cx * dx + T(1e-6) * sgn_nz(dx), T(0));
   T shx = (p.phx1 + p.phx2 * dfz) * p.lhx;
   T svx = fz * (p.pvx1 + p.pvx2 * dfz) * p.lvx * b.lmux_prime * zeta1;
-  if (in.is_low_speed) {
-    svx = svx * in.reduction_smooth;
-    shx = shx * in.reduction_smooth;
-  }
+  svx = if_else(in.is_low_speed, svx * in.reduction_smooth, svx);
+  shx = if_else(in.is_low_speed, shx * in.reduction_smooth, shx);
   const T kappax = in.kappa + shx;
   T ex = (p.pex1 + p.pex2 * dfz + p.pex3 * dfz * dfz) * (T(1) - p.pex4 * sgn(kappax)) * p.lex;
-  if (options.use_limits && ex > T(1)) ex = T(1);
+  if (options.use_limits) ex = min_of(ex, T(1));
   const T bk = bx * kappax;
   return {dx, cx, bk, ex, svx};
 }
@@ -327,15 +360,14 @@ Fx0Args<T> fx0_args(const MfParameters<T>& p, const Prepared<T>& in, const Basic
 /// Fx0 from its core sin(Cx·atan(Bk − Ex·(Bk − atan Bk))).
 template <typename T>
 T fx0_finish(const Prepared<T>& in, const Fx0Args<T>& a, const T& core) {
-  T f = a.dx * core + a.svx;
-  if (in.vx < T(0)) f = -f;
-  return f;
+  const T f = a.dx * core + a.svx;
+  return if_else(in.vx < T(0), -f, f);
 }
 
 /// calculateFy0 up to its core (everything but fy0), with the given γ (and γ*) and turn slip switch
 /// (Mz evaluates it again at γ = 0).
-template <typename T>
-Fy0Result<T> fy0_args(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>& b,
+template <typename T, typename P>
+Fy0Result<T> fy0_args(const MfParameters<P>& p, const Prepared<T>& in, const Basic<T>& b,
                       const MfOptions& options, const T& gamma_star, bool turn_slip) {
   Fy0Result<T> r;
   const T dfz = b.dfz;
@@ -382,7 +414,7 @@ Fy0Result<T> fy0_args(const MfParameters<T>& p, const Prepared<T>& in, const Bas
     const T chyp = p.phyp1;
     const T dhyp = (p.phyp2 + p.phyp3 * dfz) * sgn(vcx);
     T ehyp = p.phyp4;
-    if (options.use_limits && ehyp > T(1)) ehyp = T(1);
+    if (options.use_limits) ehyp = min_of(ehyp, T(1));
     const T kyrp0 = div_or(r.kyg0, T(1) - in.epsilong, T(0));
     const T bhyp = div_or(kyrp0, chyp * dhyp * kyao_prime, T(0));
     const T x = bhyp * r0 * in.phi;
@@ -398,10 +430,8 @@ Fy0Result<T> fy0_args(const MfParameters<T>& p, const Prepared<T>& in, const Bas
             ((r.kyg0 * gamma_star - svyg) / (r.kya + eps * sgn_nz(r.kya))) * zeta0 + zeta4 - T(1);
   }
   r.svy = fz * (p.pvy1 + p.pvy2 * dfz) * p.lvy * b.lmuy_prime * zeta2 + svyg;
-  if (in.is_low_speed) {
-    r.svy = r.svy * in.reduction_smooth;
-    r.shy = r.shy * in.reduction_smooth;
-  }
+  r.svy = if_else(in.is_low_speed, r.svy * in.reduction_smooth, r.svy);
+  r.shy = if_else(in.is_low_speed, r.shy * in.reduction_smooth, r.shy);
   const T alphay = b.alpha_star + r.shy;
   r.cy = p.pcy1 * p.lcy;
   r.muy = (p.pdy1 + p.pdy2 * dfz) * (T(1) + p.ppy3 * dpi + p.ppy4 * dpi * dpi) *
@@ -409,12 +439,12 @@ Fy0Result<T> fy0_args(const MfParameters<T>& p, const Prepared<T>& in, const Bas
   const T dy = r.muy * fz * zeta2;
   T ey = (p.pey1 + p.pey2 * dfz) *
          (T(1) + p.pey5 * gs2 - (p.pey3 + p.pey4 * gamma_star) * sgn_nz(alphay)) * p.ley;
-  if (options.use_limits && ey > T(1)) ey = T(1);
+  if (options.use_limits) ey = min_of(ey, T(1));
   r.by = div_or(r.kya, r.cy * dy + eps * sgn_nz(dy), T(0));
   r.dy = dy;
   r.ba = r.by * alphay;
   r.ey = ey;
-  if (is_zero(fz)) r.muy = T(0);
+  r.muy = if_else(is_zero(fz), T(0), r.muy);
   return r;
 }
 
@@ -422,12 +452,12 @@ Fy0Result<T> fy0_args(const MfParameters<T>& p, const Prepared<T>& in, const Bas
 template <typename T>
 void fy0_finish(const Prepared<T>& in, const MfOptions& options, const T& core, Fy0Result<T>& r) {
   r.fy0 = r.dy * core + r.svy;
-  if (options.use_alpha_star && in.vx < T(0)) r.fy0 = -r.fy0;
+  if (options.use_alpha_star) r.fy0 = if_else(in.vx < T(0), -r.fy0, r.fy0);
 }
 
 /// calculateFy0 in one go (the paths that do not batch their cores).
-template <typename T>
-Fy0Result<T> fy0(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>& b,
+template <typename T, typename P>
+Fy0Result<T> fy0(const MfParameters<P>& p, const Prepared<T>& in, const Basic<T>& b,
                  const MfOptions& options, const T& gamma_star, bool turn_slip) {
   Fy0Result<T> r = fy0_args(p, in, b, options, gamma_star, turn_slip);
   fy0_finish(in, options, mf_sin(r.cy * mf_atan(r.ba - r.ey * (r.ba - mf_atan(r.ba)))), r);
@@ -435,8 +465,8 @@ Fy0Result<T> fy0(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>
 }
 
 /// calculateFy (combined) up to Gyk's cores; writes SVyk (after the low-speed reduction).
-template <typename T>
-CombinedArgs<T> gyk_args(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>& b,
+template <typename T, typename P>
+CombinedArgs<T> gyk_args(const MfParameters<P>& p, const Prepared<T>& in, const Basic<T>& b,
                          const MfOptions& options, const T& muy, const T& zeta2, T& svyk) {
   const T dfz = b.dfz;
   const T dvyk = muy * in.fz * (p.rvy1 + p.rvy2 * dfz + p.rvy3 * b.gamma_star) *
@@ -444,29 +474,29 @@ CombinedArgs<T> gyk_args(const MfParameters<T>& p, const Prepared<T>& in, const 
   svyk = dvyk * mf_sin(p.rvy5 * mf_atan(p.rvy6 * in.kappa)) * p.lvyka;
   const T shyk = p.rhy1 + p.rhy2 * dfz;
   T eyk = p.rey1 + p.rey2 * dfz;
-  if (options.use_limits && eyk > T(1)) eyk = T(1);
+  if (options.use_limits) eyk = min_of(eyk, T(1));
   const T cyk = p.rcy1;
   const T byk = (p.rby1 + p.rby4 * b.gamma_star * b.gamma_star) *
                 cos_atan(p.rby2 * (b.alpha_star - p.rby3)) * p.lyka;
   const T kappas = in.kappa + shyk;
-  if (in.is_low_speed) svyk = svyk * in.reduction_smooth;
+  svyk = if_else(in.is_low_speed, svyk * in.reduction_smooth, svyk);
   return {cyk, eyk, byk * shyk, byk * kappas};
 }
 
 /// Gxa or Gyk from its two cores cos(C·atan(s − E·(s − atan s))) at s0 and s1.
 template <typename T>
 T combined_finish(const CombinedArgs<T>& a, const T& core0, const T& core1) {
-  const T g0 = is_zero(a.s0) ? T(1) : core0;
+  const T g0 = if_else(is_zero(a.s0), T(1), core0);
   return div_or(core1, g0, T(1));
 }
 
 /// calculateFx (combined): Gxa up to its cores.
-template <typename T>
-CombinedArgs<T> gxa_args(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>& b,
+template <typename T, typename P>
+CombinedArgs<T> gxa_args(const MfParameters<P>& p, const Prepared<T>& in, const Basic<T>& b,
                          const MfOptions& options) {
   const T cxa = p.rcx1;
   T exa = p.rex1 + p.rex2 * b.dfz;
-  if (options.use_limits && exa > T(1)) exa = T(1);
+  if (options.use_limits) exa = min_of(exa, T(1));
   const T shxa = p.rhx1;
   const T bxa =
       (p.rbx1 + p.rbx3 * b.gamma_star_x * b.gamma_star_x) * cos_atan(p.rbx2 * in.kappa) * p.lxal;
@@ -475,10 +505,10 @@ CombinedArgs<T> gxa_args(const MfParameters<T>& p, const Prepared<T>& in, const 
 }
 
 /// calculateMx.
-template <typename T>
-T mx(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>& b, const T& fy) {
+template <typename T, typename P>
+T mx(const MfParameters<P>& p, const Prepared<T>& in, const Basic<T>& b, const T& fy) {
   T fz = in.fz;
-  if (fz < p.fzmin_n) fz = fz * (fz / p.fzmin_n) * (fz / p.fzmin_n);
+  fz = if_else(fz < p.fzmin_n, fz * (fz / p.fzmin_n) * (fz / p.fzmin_n), fz);
   const T fz0 = p.fnomin_n;
   const T g = in.gamma;
   return p.unloaded_radius_m * fz * p.lmx *
@@ -491,12 +521,15 @@ T mx(const MfParameters<T>& p, const Prepared<T>& in, const Basic<T>& b, const T
 }
 
 /// calculateMy.
-template <typename T>
-T my(const MfParameters<T>& p, const Prepared<T>& in, const T& fx) {
+template <typename T, typename P>
+T my(const MfParameters<P>& p, const Prepared<T>& in, const T& fx) {
   T fz = in.ufz;
-  if (fz < p.fzmin_n) fz = fz * (fz / p.fzmin_n);
+  fz = if_else(fz < p.fzmin_n, fz * (fz / p.fzmin_n), fz);
   const T vcx = in.vx;
-  if (is_zero(vcx)) return T(0);
+  const auto stopped = is_zero(vcx);  // My = 0 (the rest is finite there and not used)
+  if constexpr (!is_lanes<T>) {
+    if (stopped) return T(0);
+  }
   const T kappa = in.ukappa;
   const T fz0 = p.fnomin_n;
   const T r0 = p.unloaded_radius_m;
@@ -507,30 +540,31 @@ T my(const MfParameters<T>& p, const Prepared<T>& in, const T& fx) {
     m = -r0 * fz * p.lmy * (p.qsy1 + p.qsy2 * (fx / fz0) + p.qsy3 * abs(v) + p.qsy4 * v2 * v2);
   } else {
     const T fz_ratio = fz / fz0;
-    const T load = fz_ratio > T(0) ? mf_pow(fz_ratio, p.qsy7) : T(0);
+    const T load = if_else(fz_ratio > T(0), mf_pow(fz_ratio, T(p.qsy7)), T(0));
     const T p_ratio = in.p / p.nompres_pa;
-    const T pressure = is_zero(p.qsy8) ? T(1) : mf_pow(p_ratio, p.qsy8);
+    const T pressure = is_zero(p.qsy8) ? T(1) : mf_pow(p_ratio, T(p.qsy8));
     m = -r0 * fz0 * p.lmy *
         (p.qsy1 + p.qsy2 * (fx / fz0) + p.qsy3 * abs(v) + p.qsy4 * v2 * v2 +
          (p.qsy5 + p.qsy6 * fz_ratio) * in.gamma * in.gamma) *
         (load * pressure);
   }
-  if (vcx < T(0)) m = -m;
+  m = if_else(vcx < T(0), -m, m);
   // Low-speed model ("empirically discovered").
   const T high_limit = p.vxlow_mps / abs(vcx) - T(1);
   const T low_limit = T(-1) - p.vxlow_mps - high_limit;
-  if (!(kappa < low_limit) && !(kappa > high_limit)) {
+  const auto reduced = !(kappa < low_limit) && !(kappa > high_limit);
+  if (any_lane(reduced)) {
     // interpolate((−1, 0), (high_limit, π/2)) at κ
     const T reduction = (pi<T>() / T(2)) * (kappa + T(1)) / (high_limit + T(1));
-    m = m * mf_sin(reduction);
+    m = if_else(reduced, m * mf_sin(reduction), m);
   }
-  if (kappa < low_limit) m = -m;
-  return m;
+  m = if_else(kappa < low_limit, -m, m);
+  return if_else(stopped, T(0), m);
 }
 
 /// MF 6.2 vertical force for a loaded radius (calculateFz62). Writes the deflection.
-template <typename T>
-T fz62(const MfParameters<T>& p, const T& gamma, const T& omega, const T& romega, const T& dpi,
+template <typename T, typename P>
+T fz62(const MfParameters<P>& p, const T& gamma, const T& omega, const T& romega, const T& dpi,
        const T& rl, const T& fx, const T& fy, T& rho_z) {
   const T r0 = p.unloaded_radius_m;
   const T fz0 = p.fnomin_n;
@@ -543,13 +577,17 @@ T fz62(const MfParameters<T>& p, const T& gamma, const T& omega, const T& romega
   const T num = (p.q_cam1 * rl + p.q_cam2 * rl * rl) * gamma;
   const T den = (p.q_cam1 * romega + p.q_cam2 * romega * romega) * gamma;
   // MFeval: NaN (0/0 at γ = 0 or Q_CAM1 = Q_CAM2 = 0) → 0.
+  const auto cambered = !is_zero(den);
   T rho_zg = T(0);
-  if (!is_zero(den)) rho_zg = (num * num) * (rtw / T(8)) * abs(mf_tan(gamma)) / (den * den);
+  if (any_lane(cambered)) {
+    rho_zg = if_else(cambered, (num * num) * (rtw / T(8)) * abs(mf_tan(gamma)) / (den * den), T(0));
+  }
   rho_zg = rho_zg - p.q_cam3 * rho_zfr * abs(gamma);
   rho_z = max_of(rho_zfr + rho_zg, T(0));
   const T rho_r0 = rho_z / r0;
   const T fcx = p.q_fcx * fx / fz0;
-  const T rho_pow = rho_r0 > T(0) ? pow(rho_r0, p.q_fcy2) : (is_zero(p.q_fcy2) ? T(1) : T(0));
+  const T rho_pow =
+      if_else(rho_r0 > T(0), T(pow(rho_r0, T(p.q_fcy2))), is_zero(p.q_fcy2) ? T(1) : T(0));
   const T fcy = rho_pow * (p.q_fcy * (fy - sfyg) / fz0);
   const T fcorr = (T(1) + p.q_v2 * (r0 / p.longvl_mps) * abs(omega) - fcx * fcx - fcy * fcy) *
                   (T(1) + p.pfz1 * dpi);
@@ -558,17 +596,22 @@ T fz62(const MfParameters<T>& p, const T& gamma, const T& omega, const T& romega
 
 }  // namespace detail
 
+/// Whether a tyre measured as `tyre_side` and mounted on `side` is mirrored (y → −y).
+constexpr bool mirrored(MountedSide side, TyreSide tyre_side) {
+  if (side == MountedSide::left) return tyre_side == TyreSide::right;
+  if (side == MountedSide::right) return tyre_side == TyreSide::left;
+  return false;
+}
+
 /// One steady-state evaluation. Never allocates, never throws; finite inputs give finite outputs.
-template <typename T>
-MfOutput<T> evaluate(const MfParameters<T>& params, const MfInput<T>& input,
+template <typename T, typename P>
+MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
                      const MfOptions& options) {
   using namespace detail;  // NOLINT(google-build-using-namespace): the maths helpers and ADL
-  const MfParameters<T>& p = params;
+  const MfParameters<P>& p = params;
 
   // TYRESIDE mirroring: y → −y.
-  bool mirror = false;
-  if (options.side == MountedSide::left) mirror = p.tyre_side == TyreSide::right;
-  if (options.side == MountedSide::right) mirror = p.tyre_side == TyreSide::left;
+  const bool mirror = mirrored(options.side, p.tyre_side);
   MfInput<T> in_raw = input;
   if (mirror) {
     in_raw.alpha_rad = -in_raw.alpha_rad;
@@ -580,7 +623,7 @@ MfOutput<T> evaluate(const MfParameters<T>& params, const MfInput<T>& input,
   const Basic<T> b = basic(p, in, options);
 
   MfOutput<T> out;
-  out.status = in.status;
+  out.status = to_status(in.out_of_range);
 
   T mux = T(0);
   T kxk = T(0);
@@ -588,8 +631,9 @@ MfOutput<T> evaluate(const MfParameters<T>& params, const MfInput<T>& input,
   Fy0Result<T> y0 = fy0_args(p, in, b, options, b.gamma_star, options.use_turn_slip);
 
   // Combined slip (or, with options.combined off, the pure-slip forces). The Magic Formula cores
-  // are evaluated four at a time (mf_cores: one pass of four lanes in float, one by one otherwise):
-  // here Fx0, Fy0 and Gyk's two; Gxa's two, the trail's and Fy0(γ = 0)'s with Mz below.
+  // of an evaluation are gathered first and evaluated together (mf_cores: float in passes of four
+  // lanes, double and Jet one by one): Fx0, Fy0, Gyk's two, and in combined slip the trail's,
+  // Gxa's two and (MF 6.x) Fy0(γ = 0)'s.
   T svyk = T(0);
   T gyk = T(1);
   Cores<T> cores;
@@ -597,24 +641,18 @@ MfOutput<T> evaluate(const MfParameters<T>& params, const MfInput<T>& input,
   const int lane_fy0 = cores.add(y0.cy, y0.ba, y0.ey, false);
   const bool with_gyk = options.combined || options.use_turn_slip;
   CombinedArgs<T> gyk_a{};
+  int lane_gyk = 0;
   if (with_gyk) {
     gyk_a = gyk_args(p, in, b, options, y0.muy, y0.zeta2, svyk);
-    static_cast<void>(cores.add(gyk_a.c, gyk_a.s0, gyk_a.e, true));
+    lane_gyk = cores.add(gyk_a.c, gyk_a.s0, gyk_a.e, true);
     static_cast<void>(cores.add(gyk_a.c, gyk_a.s1, gyk_a.e, true));
   }
-  T core_out[4];
-  mf_cores(cores, core_out);
-  const T fx_pure = fx0_finish(in, x0, core_out[lane_fx0]);
-  fy0_finish(in, options, core_out[lane_fy0], y0);
-  if (with_gyk) gyk = combined_finish(gyk_a, core_out[2], core_out[3]);
-  T fx = fx_pure;  // combined: Gxa·Fx0, with Mz's cores below
-  const T fy = options.combined ? gyk * y0.fy0 + svyk : y0.fy0;
 
   // Aligning moment: calculateMz0's trail and residual-moment coefficients.
   const T r0 = p.unloaded_radius_m;
   const T eps = T(1e-6);
   T fz_mz = in.fz;
-  if (options.use_limits) fz_mz = in.fz > T(0) ? in.fz_low_limit : T(0);
+  if (options.use_limits) fz_mz = if_else(in.fz > T(0), in.fz_low_limit, T(0));
   const T dfz = b.dfz;
   const T dpi = b.dpi;
   const T gs = b.gamma_star_z;
@@ -633,7 +671,44 @@ MfOutput<T> evaluate(const MfParameters<T>& params, const MfInput<T>& input,
   const T ct = p.qcz1;
   T et = (p.qez1 + p.qez2 * dfz + p.qez3 * dfz * dfz) *
          (T(1) + (p.qez4 + p.qez5 * gs) * (T(2) / pi<T>()) * mf_atan(bt * ct * alphat));
-  if (options.use_limits && et > T(1)) et = T(1);
+  if (options.use_limits) et = min_of(et, T(1));
+
+  // calculateMz (combined): the equivalent slip angles and the cores of the trail, Gxa (two) and
+  // (MF 6.x) Fy0 at γ = 0 for Fy' (turn slip as in the main evaluation; MFeval evaluates Gyk again
+  // at γ = 0 but with the original γ* (its starVar), which is the same Gyk).
+  const bool mf5x = p.fit_type == FitType::mf52 || p.fit_type == FitType::pac2002;
+  T alphar_eq = T(0);
+  CombinedArgs<T> gxa_a{};
+  Fy0Result<T> y00{};
+  int lane_trail = 0;
+  int lane_gxa = 0;
+  int lane_fy00 = 0;
+  if (options.combined) {
+    const T kk = div_or(kxk, kya_prime, T(0)) * in.kappa;
+    const T tan_r = mf_tan(alphar);
+    const T tan_t = mf_tan(alphat);
+    alphar_eq = mf_atan(sqrt(tan_r * tan_r + kk * kk)) * sgn(alphar);
+    const T alphat_eq = mf_atan(sqrt(tan_t * tan_t + kk * kk)) * sgn(alphat);
+    const T bta = bt * alphat_eq;
+    gxa_a = gxa_args(p, in, b, options);
+    lane_trail = cores.add(ct, bta, et, true);
+    lane_gxa = cores.add(gxa_a.c, gxa_a.s0, gxa_a.e, true);
+    static_cast<void>(cores.add(gxa_a.c, gxa_a.s1, gxa_a.e, true));
+    if (!mf5x) {
+      y00 = fy0_args(p, in, b, options, T(0), options.use_turn_slip);
+      lane_fy00 = cores.add(y00.cy, y00.ba, y00.ey, false);
+    }
+  }
+
+  T core_out[kMaxCores];
+  mf_cores(cores, core_out);
+  const T fx_pure = fx0_finish(in, x0, core_out[lane_fx0]);
+  fy0_finish(in, options, core_out[lane_fy0], y0);
+  if (with_gyk) gyk = combined_finish(gyk_a, core_out[lane_gyk], core_out[lane_gyk + 1]);
+  const T fx = options.combined
+                   ? combined_finish(gxa_a, core_out[lane_gxa], core_out[lane_gxa + 1]) * fx_pure
+                   : fx_pure;
+  const T fy = options.combined ? gyk * y0.fy0 + svyk : y0.fy0;
 
   T zeta0 = T(1), zeta2 = T(1), zeta6 = T(1), zeta7 = T(1), zeta8 = T(1);
   if (options.use_turn_slip) {
@@ -641,7 +716,7 @@ MfOutput<T> evaluate(const MfParameters<T>& params, const MfInput<T>& input,
     zeta2 = y0.zeta2;
     zeta6 = cos_atan(p.qbrp1 * r0 * in.phi);
     T mzp_inf = p.qcrp1 * abs(y0.muy) * r0 * fz_mz * sqrt(fz_mz / b.fz0_prime) * p.lmp;
-    if (mzp_inf < T(0)) mzp_inf = T(1e-6);
+    mzp_inf = if_else(mzp_inf < T(0), T(1e-6), mzp_inf);
     const T cdrp = p.qdrp1;
     const T ddrp = div_or(mzp_inf, mf_sin(T(0.5) * pi<T>() * cdrp), T(0));
     const T kzgr0 =
@@ -651,12 +726,8 @@ MfOutput<T> evaluate(const MfParameters<T>& params, const MfInput<T>& input,
     const T mzp90 = mzp_inf * (T(2) / pi<T>()) * mf_atan(p.qcrp2 * r0 * abs(in.phit)) * gyk;
     // MFeval: acos(Mzp90/|Drp|), NaN for a ratio above 1 (e.g. 0/0 at φt = 0). Here the ratio
     // is clamped to [−1, 1], and Drp = 0 gives the turn-slip-free Cr = 1.
-    if (is_zero(drp)) {
-      zeta7 = T(1);
-    } else {
-      const T ratio = max_of(T(-1), min_of(T(1), mzp90 / abs(drp)));
-      zeta7 = (T(2) / pi<T>()) * acos(ratio);
-    }
+    const T ratio = max_of(T(-1), min_of(T(1), mzp90 / abs(drp)));
+    zeta7 = if_else(is_zero(drp), T(1), (T(2) / pi<T>()) * acos(ratio));
     zeta8 = T(1) + drp;
   }
   const T dr =
@@ -677,45 +748,19 @@ MfOutput<T> evaluate(const MfParameters<T>& params, const MfInput<T>& input,
     const T bta = bt * alphat;
     t = dt * mf_cos(ct * mf_atan(bta - et * (bta - mf_atan(bta)))) * b.cos_alpha_prime;
     mzr = dr * mf_cos(cr * mf_atan(br * alphar)) * b.cos_alpha_prime;
-    const Fy0Result<T> y00 = fy0(p, in, b, options, T(0), false);
-    mz = -t * y00.fy0 + mzr;
+    const Fy0Result<T> y00_pure = fy0(p, in, b, options, T(0), false);
+    mz = -t * y00_pure.fy0 + mzr;
   } else {
-    // calculateMz (combined).
-    const T kk = div_or(kxk, kya_prime, T(0)) * in.kappa;
-    const T tan_r = mf_tan(alphar);
-    const T tan_t = mf_tan(alphat);
-    const T alphar_eq = mf_atan(sqrt(tan_r * tan_r + kk * kk)) * sgn(alphar);
-    const T alphat_eq = mf_atan(sqrt(tan_t * tan_t + kk * kk)) * sgn(alphat);
     const T s = r0 * (p.ssz1 + p.ssz2 * (fy / p.fnomin_n) + (p.ssz3 + p.ssz4 * dfz) * g) * p.ls;
     mzr = dr * mf_cos(cr * mf_atan(br * alphar_eq));
-    const T bta = bt * alphat_eq;
-    // Cores: the trail, Gxa's two and (MF 6.x) Fy0 at γ = 0 for Fy' (turn slip as in the main
-    // evaluation; MFeval evaluates Gyk again at γ = 0 but with the original γ* (its starVar),
-    // which is the same Gyk).
-    const bool mf5x = p.fit_type == FitType::mf52 || p.fit_type == FitType::pac2002;
-    const CombinedArgs<T> gxa_a = gxa_args(p, in, b, options);
-    Fy0Result<T> y00{};
-    Cores<T> mz_cores;
-    static_cast<void>(mz_cores.add(ct, bta, et, true));
-    static_cast<void>(mz_cores.add(gxa_a.c, gxa_a.s0, gxa_a.e, true));
-    static_cast<void>(mz_cores.add(gxa_a.c, gxa_a.s1, gxa_a.e, true));
-    if (!mf5x) {
-      y00 = fy0_args(p, in, b, options, T(0), options.use_turn_slip);
-      static_cast<void>(mz_cores.add(y00.cy, y00.ba, y00.ey, false));
-    }
-    T mz_out[4];
-    mf_cores(mz_cores, mz_out);
-    fx = combined_finish(gxa_a, mz_out[1], mz_out[2]) * fx_pure;
-    t = dt * mz_out[0] * b.cos_alpha_prime;
+    t = dt * core_out[lane_trail] * b.cos_alpha_prime;
     t = t * p.lfzo;
-    if (in.is_low_speed) {
-      t = t * in.reduction_smooth;
-      mzr = mzr * in.reduction_smooth;
-    }
+    t = if_else(in.is_low_speed, t * in.reduction_smooth, t);
+    mzr = if_else(in.is_low_speed, mzr * in.reduction_smooth, mzr);
     if (mf5x) {
       mz = -t * (fy - svyk) + mzr + s * fx;
     } else {
-      fy0_finish(in, options, mz_out[3], y00);  // Fy' = Gyk·Fy0(γ = 0)
+      fy0_finish(in, options, core_out[lane_fy00], y00);  // Fy' = Gyk·Fy0(γ = 0)
       mz = -t * (gyk * y00.fy0) + mzr + s * fx;
     }
   }
@@ -739,14 +784,15 @@ MfOutput<T> evaluate(const MfParameters<T>& params, const MfInput<T>& input,
   out.kya_nprad = y0.kya;
   out.kxk_n = kxk;
 
-  if (!(in.ufz > T(0))) {  // Fz ≤ 0: no contact, no forces (MFeval gives 0 there as well)
-    out.fx_n = T(0);
-    out.fy_n = T(0);
-    out.mx_nm = T(0);
-    out.my_nm = T(0);
-    out.mz_nm = T(0);
-    out.t_m = T(0);
-    out.mzr_nm = T(0);
+  const auto lifted = !(in.ufz > T(0));  // Fz ≤ 0: no contact, no forces (MFeval: 0 as well)
+  if (any_lane(lifted)) {
+    out.fx_n = if_else(lifted, T(0), out.fx_n);
+    out.fy_n = if_else(lifted, T(0), out.fy_n);
+    out.mx_nm = if_else(lifted, T(0), out.mx_nm);
+    out.my_nm = if_else(lifted, T(0), out.my_nm);
+    out.mz_nm = if_else(lifted, T(0), out.mz_nm);
+    out.t_m = if_else(lifted, T(0), out.t_m);
+    out.mzr_nm = if_else(lifted, T(0), out.mzr_nm);
   }
 
   if (options.extras) {
@@ -769,8 +815,7 @@ MfOutput<T> evaluate(const MfParameters<T>& params, const MfInput<T>& input,
       const T x = div_or(T(2) * c, q_fz1 + disc, T(0));
       const T rho_zfr = max_of(x * r0, T(0));
       out.rl_m = max_of(in.romega - rho_zfr, T(0));
-      T rho_z = rho_zfr;
-      if (is_zero(fz) || !(rho_z > T(0))) rho_z = T(1e-6);
+      const T rho_z = if_else(is_zero(fz) || !(rho_zfr > T(0)), T(1e-6), rho_zfr);
       out.rho_m = rho_z;
       out.cz_npm = fz / rho_z;
     } else {
@@ -782,17 +827,15 @@ MfOutput<T> evaluate(const MfParameters<T>& params, const MfInput<T>& input,
       for (int i = 0; i < 80; ++i) {
         const T mid = T(0.5) * (lo + hi);
         const T f = fz62(p, in.gamma, in.omega, in.romega, dpi, mid, out.fx_n, out.fy_n, rho_dummy);
-        if (f > fz_target) {
-          lo = mid;
-        } else {
-          hi = mid;
-        }
+        const auto above = f > fz_target;
+        lo = if_else(above, mid, lo);
+        hi = if_else(above, hi, mid);
       }
       out.rl_m = T(0.5) * (lo + hi);
       T rho_z = T(0);
       static_cast<void>(
           fz62(p, in.gamma, in.omega, in.romega, dpi, out.rl_m, out.fx_n, out.fy_n, rho_z));
-      if (is_zero(in.fz) || !(rho_z > T(0))) rho_z = T(1e-6);
+      rho_z = if_else(is_zero(in.fz) || !(rho_z > T(0)), T(1e-6), rho_z);
       out.rho_m = rho_z;
       out.cz_npm = in.fz / rho_z;
     }
@@ -802,25 +845,24 @@ MfOutput<T> evaluate(const MfParameters<T>& params, const MfInput<T>& input,
       const T ncz = p.vertical_stiffness_npm * (T(1) + p.pfz1 * dpi);
       T fz = in.ufz;
       const T rl_approx = r0 - fz / ncz;
-      if (rl_approx - (p.rim_radius_m + p.bottom_offst_m) < T(0)) {
-        fz = (r0 - p.rim_radius_m - p.bottom_offst_m) * ncz;
-      }
+      fz = if_else(rl_approx - (p.rim_radius_m + p.bottom_offst_m) < T(0),
+                   (r0 - p.rim_radius_m - p.bottom_offst_m) * ncz, fz);
       fz = max_of(fz, T(0));
       if (p.fit_type == FitType::mf52 || p.fit_type == FitType::pac2002) {
-        T q_a1 = p.q_a1;
-        T q_a2 = p.q_a2;
+        P q_a1 = p.q_a1;  // a property of the tyre: the same for every lane
+        P q_a2 = p.q_a2;
         if (is_zero(q_a1) && is_zero(q_a2)) {
           using std::log10;
-          const T y = log10(r0 * (p.vertical_stiffness_npm / fz0));
-          q_a1 = T(-0.0388) * y * y * y + T(0.2509) * y * y + T(-0.6283) * y + T(0.6279);
-          q_a2 = T(1.693) * q_a1 * q_a1;
+          const P y = log10(p.unloaded_radius_m * (p.vertical_stiffness_npm / p.fnomin_n));
+          q_a1 = P(-0.0388) * y * y * y + P(0.2509) * y * y + P(-0.6283) * y + P(0.6279);
+          q_a2 = P(1.693) * q_a1 * q_a1;
         }
         out.contact_length_m = T(2) * r0 * (q_a2 * (fz / fz0) + q_a1 * sqrt(fz / fz0));
         out.contact_width_m = p.width_m;
       } else {
         const T f = fz / (ncz * r0);
         out.contact_length_m = T(2) * r0 * (p.q_ra2 * f + p.q_ra1 * sqrt(f));
-        const T cube_root = f > T(0) ? mf_pow(f, T(1) / T(3)) : T(0);
+        const T cube_root = if_else(f > T(0), mf_pow(f, T(1) / T(3)), T(0));
         out.contact_width_m = T(2) * p.width_m * (p.q_rb2 * f + p.q_rb1 * cube_root);
       }
     }

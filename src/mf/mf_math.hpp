@@ -141,17 +141,19 @@ inline float mf_pow(const float& x, const float& y) {
   return std::exp(y * std::log(x));
 }
 
-// ---- the Magic Formula core, four at a time
-// ------------------------------------------------------
-/// Arguments of up to four Magic Formula cores y = trig(c·atan(x − e·(x − atan x))), trig = sin, or
-/// cos where `cosine` is set. Lanes from `count` on are not evaluated by the generic version (and
-/// are zero in the float version).
+// ---- the Magic Formula cores, all of an evaluation at once
+// ---------------------------------------
+inline constexpr int kMaxCores = 8;
+
+/// Arguments of up to eight Magic Formula cores y = trig(c·atan(x − e·(x − atan x))), trig = sin,
+/// or cos where `cosine` is set. Cores from `count` on are not evaluated by the generic version
+/// (and are zero in the float version).
 template <typename T>
 struct Cores {
-  T c[4] = {T(0), T(0), T(0), T(0)};
-  T x[4] = {T(0), T(0), T(0), T(0)};
-  T e[4] = {T(0), T(0), T(0), T(0)};
-  bool cosine[4] = {false, false, false, false};
+  T c[kMaxCores] = {};
+  T x[kMaxCores] = {};
+  T e[kMaxCores] = {};
+  bool cosine[kMaxCores] = {};
   int count = 0;
   /// Adds a core, returns its lane.
   int add(const T& c_, const T& x_, const T& e_, bool cosine_) {
@@ -165,7 +167,7 @@ struct Cores {
 
 /// Generic scalars (double, ceres::Jet): each core exactly as the formula is written, one by one.
 template <typename T>
-void mf_cores(const Cores<T>& in, T (&out)[4]) {
+void mf_cores(const Cores<T>& in, T (&out)[kMaxCores]) {
   for (int i = 0; i < in.count; ++i) {
     const T& x = in.x[i];
     out[i] = in.cosine[i] ? mf_cos(in.c[i] * mf_atan(x - in.e[i] * (x - mf_atan(x))))
@@ -217,30 +219,37 @@ inline F4 sin_cos4(F4 y, I4 quarter_turns) {
 
 }  // namespace fast
 
-/// float: the four cores in one pass of four lanes. A lane whose angle c·atan(...) lies beyond the
+/// float: four cores in one pass of four lanes. A lane whose angle c·atan(...) lies beyond the
 /// reduction's range (|c| > 2e4, or not finite) is redone with libm.
-inline void mf_cores(const Cores<float>& in, float (&out)[4]) {
-  fast::F4 c;
-  fast::F4 x;
-  fast::F4 e;
-  fast::I4 quarter_turns;
-  for (int i = 0; i < 4; ++i) {
-    c[i] = in.c[i];
-    x[i] = in.x[i];
-    e[i] = in.e[i];
-    quarter_turns[i] = in.cosine[i] ? 1 : 0;
-  }
-  const fast::F4 y = c * fast::atan4(x - e * (x - fast::atan4(x)));
-  const fast::F4 v = fast::sin_cos4(y, quarter_turns);
-  for (int i = 0; i < 4; ++i) {
-    out[i] = v[i];
-    if (!(std::fabs(y[i]) <= fast::kTrigMax))
-      out[i] = in.cosine[i] ? std::cos(y[i]) : std::sin(y[i]);
+inline void mf_cores(const Cores<float>& in, float (&out)[kMaxCores]) {
+  for (int g = 0; g < kMaxCores; g += 4) {
+    if (g >= in.count) {
+      for (int i = g; i < kMaxCores; ++i) out[i] = 0.0f;
+      continue;
+    }
+    fast::F4 c;
+    fast::F4 x;
+    fast::F4 e;
+    fast::I4 quarter_turns;
+    for (int i = 0; i < 4; ++i) {
+      c[i] = in.c[g + i];
+      x[i] = in.x[g + i];
+      e[i] = in.e[g + i];
+      quarter_turns[i] = in.cosine[g + i] ? 1 : 0;
+    }
+    const fast::F4 y = c * fast::atan4(x - e * (x - fast::atan4(x)));
+    const fast::F4 v = fast::sin_cos4(y, quarter_turns);
+    for (int i = 0; i < 4; ++i) {
+      out[g + i] = v[i];
+      if (!(std::fabs(y[i]) <= fast::kTrigMax))
+        out[g + i] = in.cosine[g + i] ? std::cos(y[i]) : std::sin(y[i]);
+    }
   }
 }
 
 // ---- identities ---------------------------------------------------------------------------------
-/// cos(atan(x)) = 1/√(1+x²), without overflow.
+/// cos(atan(x)) = 1/√(1+x²), without overflow. (Scalars branch; lanes (mf_lanes.hpp) have their
+/// own overload.)
 template <typename T>
 T cos_atan(const T& x) {
   using std::abs;
@@ -251,20 +260,6 @@ T cos_atan(const T& x) {
     return inv / sqrt(T(1) + inv * inv);
   }
   return T(1) / sqrt(T(1) + x * x);
-}
-
-/// sin(atan(x)) = x/√(1+x²), without overflow.
-template <typename T>
-T sin_atan(const T& x) {
-  using std::abs;
-  using std::sqrt;
-  const T a = abs(x);
-  if (a > T(1)) {
-    const T inv = T(1) / a;
-    const T s = T(1) / sqrt(T(1) + inv * inv);
-    return x < T(0) ? -s : s;
-  }
-  return x / sqrt(T(1) + x * x);
 }
 
 }  // namespace tread::mf::detail

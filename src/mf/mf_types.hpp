@@ -17,6 +17,13 @@ struct MfInput {
   T p_pa = T(0);       ///< inflation pressure; 0 (or less) → the file's INFLPRES
 };
 
+/// The type of MfOutput<T>::status: a Status for the scalars; the four-lane scalar of
+/// mf_lanes.hpp holds a per-lane out-of-range mask instead.
+template <typename T>
+struct StatusFor {
+  using type = Status;
+};
+
 /// Everything MFeval's mfeval() returns except its row-to-row finite difference (iKya). The
 /// processed inputs (kappa, alpha_rad, ...) are what MFeval writes back: after the low-speed
 /// reduction and the limits, like MFeval's output columns 7…12.
@@ -41,7 +48,7 @@ struct MfOutput {
   /// ok, or out_of_range when an input lay outside the finite-arithmetic envelope (see
   /// mf_evaluate.hpp) and was clamped to it. The limits of useMode 1xx do not set it (MFeval
   /// only warns).
-  Status status = Status::ok;
+  typename StatusFor<T>::type status{};
 };
 
 }  // namespace tread::mf

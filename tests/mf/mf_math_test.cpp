@@ -146,7 +146,7 @@ TEST(MfMath, FourLaneCoreMatchesTheScalarFloatFormulaWithin5em7) {
       cores.add(static_cast<float>(uniform(0.5, 2.5)), static_cast<float>(uniform(-20.0, 20.0)),
                 static_cast<float>(uniform(-3.0, 1.0)), (n + lane) % 2 == 0);
     }
-    float out[4];
+    float out[kMaxCores];
     mf_cores(cores, out);
     for (int lane = 0; lane < 4; ++lane) {
       const float x = cores.x[lane];
@@ -166,7 +166,7 @@ TEST(MfMath, FourLaneCoreMatchesTheScalarFormulaLaneByLane) {
   cores.add(1.6f, 3.0f, -0.5f, false);
   cores.add(4.0e4f, 10.0f, 0.2f, true);  // |C·atan| > kTrigMax: libm
   cores.add(1.3f, std::numeric_limits<float>::max(), 0.0f, false);
-  float out[4];
+  float out[kMaxCores];
   mf_cores(cores, out);
   for (int lane = 0; lane < 3; ++lane) {
     const float x = cores.x[lane];
@@ -176,6 +176,7 @@ TEST(MfMath, FourLaneCoreMatchesTheScalarFormulaLaneByLane) {
     EXPECT_NEAR(out[lane], want, 5e-6f) << lane;
   }
   EXPECT_EQ(out[3], 0.0f);  // unused lane: C = 0
+  EXPECT_EQ(out[4], 0.0f);  // unused group
 }
 
 }  // namespace
