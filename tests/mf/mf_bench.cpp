@@ -10,6 +10,7 @@
 
 #include "golden_path.hpp"
 #include "mf/mf_evaluate.hpp"
+#include "mf/mf_evaluate_four.hpp"
 #include "mf/mf_parameters_from_tir.hpp"
 
 namespace tread::mf {
@@ -50,6 +51,29 @@ void bench(benchmark::State& state, const char* tir, bool combined, bool extras)
   state.SetItemsProcessed(state.iterations());
 }
 
+/// Four wheels per call (evaluate_four: four float lanes); items are wheels, so the reported
+/// time per item is per wheel.
+void bench_four(benchmark::State& state, const char* tir, bool combined, bool extras) {
+  const MfParameters<float> p = convert_parameters<float>(
+      load_mf_parameters(testing::refdata(std::string("tir/") + tir)).params);
+  MfOptions o = options_from_use_mode(111).value;
+  o.combined = combined;
+  o.extras = extras;
+  const auto inputs = make_inputs<float>();
+  const std::array<MountedSide, 4> sides{MountedSide::left, MountedSide::right, MountedSide::left,
+                                         MountedSide::right};
+  std::array<MfOutput<float>, 4> out{};
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const std::array<MfInput<float>, 4> four{inputs[i], inputs[i + 1], inputs[i + 2],
+                                             inputs[i + 3]};
+    evaluate_four(p, four, o, sides, out);
+    benchmark::DoNotOptimize(out);
+    i = (i + 4) % kInputs;
+  }
+  state.SetItemsProcessed(4 * state.iterations());
+}
+
 constexpr const char* kMf61 = "MagicFormula61_Parameters.tir";
 constexpr const char* kMf52 = "MagicFormula52_Parameters.tir";
 
@@ -77,8 +101,16 @@ void BM_Mf52_Float_Combined(benchmark::State& s) {
 void BM_Mf52_Double_Combined(benchmark::State& s) {
   bench<double>(s, kMf52, true, false);
 }
+void BM_Mf61_FloatFour_Combined(benchmark::State& s) {
+  bench_four(s, kMf61, true, false);
+}
+void BM_Mf61_FloatFour_Combined_Extras(benchmark::State& s) {
+  bench_four(s, kMf61, true, true);
+}
 
 BENCHMARK(BM_Mf61_Float_Combined);
+BENCHMARK(BM_Mf61_FloatFour_Combined);
+BENCHMARK(BM_Mf61_FloatFour_Combined_Extras);
 BENCHMARK(BM_Mf61_Float_Pure);
 BENCHMARK(BM_Mf61_Double_Combined);
 BENCHMARK(BM_Mf61_Double_Pure);

@@ -1,0 +1,21 @@
+#pragma once
+// Four wheels in one evaluation: the Magic Formula (mf_evaluate.hpp) instantiated on four float
+// lanes (mf_lanes.hpp). For a node with four road wheels on the same tyre: the cost of about one
+// and a half scalar evaluations for four wheels on x86-64 (SSE) and aarch64 (NEON).
+// The results equal evaluate<float>'s within float rounding (the lanes' exp/log/sin/cos differ from
+// libm's in the last bits), not bit for bit; tests/mf/mf_evaluate_four_test.cpp checks them against
+// MFeval at the float tolerance and against the scalar path.
+
+#include <array>
+
+#include "mf/mf_evaluate.hpp"
+
+namespace tread::mf {
+
+/// Evaluates four wheels with the same parameters and options; wheel i is mounted on `sides[i]`
+/// (options.side is not used). Never allocates, never throws; finite inputs give finite outputs.
+void evaluate_four(const MfParameters<float>& params, const std::array<MfInput<float>, 4>& inputs,
+                   const MfOptions& options, const std::array<MountedSide, 4>& sides,
+                   std::array<MfOutput<float>, 4>& outputs) noexcept;
+
+}  // namespace tread::mf
