@@ -1,5 +1,11 @@
 // The Magic Formula on four float lanes: packs four wheels' inputs, evaluates once, unpacks.
+// On x86-64 the evaluation is compiled three times (x86-64-v4 with AVX-512 broadcasts, v3 with
+// AVX2/FMA, the SSE2 baseline) and the loader picks the best the CPU has (GCC target_clones).
 #include "mf/mf_evaluate_four.hpp"
+
+#include <cstddef>
+#include <cstring>
+#include <type_traits>
 
 #include "mf/mf_lanes.hpp"
 
@@ -8,78 +14,106 @@ namespace tread::mf {
 namespace {
 
 using lanes::F4;
+using lanes::V;
+using lanes::VI;
 
-/// Lane i of every float member of `out` (the members MfOutput lists, in order).
-template <typename Fn>
-void for_each_field(MfOutput<F4>& lanes_out, MfOutput<float>& out, Fn fn) {
-  fn(lanes_out.fx_n, out.fx_n);
-  fn(lanes_out.fy_n, out.fy_n);
-  fn(lanes_out.fz_n, out.fz_n);
-  fn(lanes_out.mx_nm, out.mx_nm);
-  fn(lanes_out.my_nm, out.my_nm);
-  fn(lanes_out.mz_nm, out.mz_nm);
-  fn(lanes_out.kappa, out.kappa);
-  fn(lanes_out.alpha_rad, out.alpha_rad);
-  fn(lanes_out.gamma_rad, out.gamma_rad);
-  fn(lanes_out.phit_1pm, out.phit_1pm);
-  fn(lanes_out.vx_mps, out.vx_mps);
-  fn(lanes_out.p_pa, out.p_pa);
-  fn(lanes_out.re_m, out.re_m);
-  fn(lanes_out.rho_m, out.rho_m);
-  fn(lanes_out.contact_length_m, out.contact_length_m);
-  fn(lanes_out.t_m, out.t_m);
-  fn(lanes_out.mux, out.mux);
-  fn(lanes_out.muy, out.muy);
-  fn(lanes_out.omega_radps, out.omega_radps);
-  fn(lanes_out.rl_m, out.rl_m);
-  fn(lanes_out.contact_width_m, out.contact_width_m);
-  fn(lanes_out.mzr_nm, out.mzr_nm);
-  fn(lanes_out.cx_npm, out.cx_npm);
-  fn(lanes_out.cy_npm, out.cy_npm);
-  fn(lanes_out.cz_npm, out.cz_npm);
-  fn(lanes_out.kya_nprad, out.kya_nprad);
-  fn(lanes_out.sigmax_m, out.sigmax_m);
-  fn(lanes_out.sigmay_m, out.sigmay_m);
-  fn(lanes_out.kxk_n, out.kxk_n);
+// MfInput and MfOutput are runs of floats (MfOutput: then its status): packing and unpacking
+// transpose four of them at a time.
+constexpr std::size_t kInputFields = sizeof(MfInput<float>) / sizeof(float);
+constexpr std::size_t kOutputFields = offsetof(MfOutput<float>, status) / sizeof(float);
+static_assert(std::is_standard_layout_v<MfInput<float>> && kInputFields == 7);
+static_assert(std::is_standard_layout_v<MfOutput<float>> &&
+              std::is_standard_layout_v<MfOutput<F4>>);
+static_assert(offsetof(MfOutput<F4>, status) == kOutputFields * sizeof(F4));
+static_assert(offsetof(MfOutput<float>, kxk_n) == (kOutputFields - 1) * sizeof(float));
+
+/// Rows a, b, c, d → columns: r[i] = {a[i], b[i], c[i], d[i]}.
+void transpose(const V (&in)[4], V (&out)[4]) {
+  const VI lo{0, 4, 1, 5};
+  const VI hi{2, 6, 3, 7};
+  const V t0 = __builtin_shuffle(in[0], in[1], lo);
+  const V t1 = __builtin_shuffle(in[0], in[1], hi);
+  const V t2 = __builtin_shuffle(in[2], in[3], lo);
+  const V t3 = __builtin_shuffle(in[2], in[3], hi);
+  const VI first{0, 1, 4, 5};
+  const VI second{2, 3, 6, 7};
+  out[0] = __builtin_shuffle(t0, t2, first);
+  out[1] = __builtin_shuffle(t0, t2, second);
+  out[2] = __builtin_shuffle(t1, t3, first);
+  out[3] = __builtin_shuffle(t1, t3, second);
+}
+
+/// Four consecutive floats of each wheel's struct, from float `field` on.
+template <typename S>
+void load_rows(const std::array<S, 4>& wheels, std::size_t field, V (&rows)[4]) {
+  for (std::size_t i = 0; i < 4; ++i) {
+    std::memcpy(&rows[i], reinterpret_cast<const char*>(&wheels[i]) + field * sizeof(float),
+                sizeof(V));
+  }
 }
 
 }  // namespace
 
-__attribute__((flatten, target_clones("arch=x86-64-v3", "default"))) void evaluate_four(
-    const MfParameters<float>& params, const std::array<MfInput<float>, 4>& inputs,
-    const MfOptions& options, const std::array<MountedSide, 4>& sides,
-    std::array<MfOutput<float>, 4>& outputs) noexcept {
+__attribute__((flatten, target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default"))) void
+evaluate_four(const MfParameters<float>& params, const std::array<MfInput<float>, 4>& inputs,
+              const MfOptions& options, const std::array<MountedSide, 4>& sides,
+              MfOutput<F4>& out) noexcept {
   // Mirroring per wheel: y → −y on the way in and out of its lane.
-  std::array<float, 4> y_sign{};
-  MfInput<F4> in;
-  for (int i = 0; i < 4; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    const MfInput<float>& w = inputs[k];
-    y_sign[k] = mirrored(sides[k], params.tyre_side) ? -1.0F : 1.0F;
-    in.fz_n.v[i] = w.fz_n;
-    in.kappa.v[i] = w.kappa;
-    in.alpha_rad.v[i] = y_sign[k] * w.alpha_rad;
-    in.gamma_rad.v[i] = y_sign[k] * w.gamma_rad;
-    in.vx_mps.v[i] = w.vx_mps;
-    in.phit_1pm.v[i] = y_sign[k] * w.phit_1pm;
-    in.p_pa.v[i] = w.p_pa;
+  F4 y_sign;
+  for (std::size_t i = 0; i < 4; ++i) {
+    y_sign.v[i] = mirrored(sides[i], params.tyre_side) ? -1.0F : 1.0F;
   }
+  // Inputs: floats 0–3 and 3–6 of each wheel, transposed.
+  V rows[4];
+  V columns[4];
+  MfInput<F4> in;
+  load_rows(inputs, 0, rows);
+  transpose(rows, columns);
+  in.fz_n = F4(columns[0]);
+  in.kappa = F4(columns[1]);
+  in.alpha_rad = F4(columns[2]) * y_sign;
+  load_rows(inputs, 3, rows);
+  transpose(rows, columns);
+  in.gamma_rad = F4(columns[0]) * y_sign;
+  in.vx_mps = F4(columns[1]);
+  in.phit_1pm = F4(columns[2]) * y_sign;
+  in.p_pa = F4(columns[3]);
+
   MfOptions lane_options = options;
   lane_options.side = MountedSide::as_measured;
-  MfOutput<F4> out = evaluate(params, in, lane_options);
-  for (int i = 0; i < 4; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    MfOutput<float>& o = outputs[k];
-    for_each_field(out, o, [i](const F4& lane, float& value) { value = lane[i]; });
-    o.status = out.status[i] ? Status::out_of_range : Status::ok;
-    const float s = y_sign[k];
-    o.fy_n *= s;
-    o.mx_nm *= s;
-    o.mz_nm *= s;
-    o.mzr_nm *= s;
-    o.alpha_rad *= s;
-    o.gamma_rad *= s;
-    o.phit_1pm *= s;
+  out = evaluate(params, in, lane_options);
+  out.fy_n = out.fy_n * y_sign;
+  out.mx_nm = out.mx_nm * y_sign;
+  out.mz_nm = out.mz_nm * y_sign;
+  out.mzr_nm = out.mzr_nm * y_sign;
+  out.alpha_rad = out.alpha_rad * y_sign;
+  out.gamma_rad = out.gamma_rad * y_sign;
+  out.phit_1pm = out.phit_1pm * y_sign;
+}
+
+void evaluate_four(const MfParameters<float>& params, const std::array<MfInput<float>, 4>& inputs,
+                   const MfOptions& options, const std::array<MountedSide, 4>& sides,
+                   std::array<MfOutput<float>, 4>& outputs) noexcept {
+  MfOutput<F4> out;
+  evaluate_four(params, inputs, options, sides, out);
+  // Four fields at a time, transposed into each wheel's struct; the last one lane by lane.
+  V fields[kOutputFields];
+  std::memcpy(&fields, &out, sizeof(fields));
+  V columns[4];
+  std::size_t f = 0;
+  for (; f + 4 <= kOutputFields; f += 4) {
+    const V group[4] = {fields[f], fields[f + 1], fields[f + 2], fields[f + 3]};
+    transpose(group, columns);
+    for (std::size_t i = 0; i < 4; ++i) {
+      std::memcpy(reinterpret_cast<char*>(&outputs[i]) + f * sizeof(float), &columns[i], sizeof(V));
+    }
+  }
+  for (std::size_t i = 0; i < 4; ++i) {
+    for (std::size_t g = f; g < kOutputFields; ++g) {
+      std::memcpy(reinterpret_cast<char*>(&outputs[i]) + g * sizeof(float),
+                  reinterpret_cast<const char*>(&fields[g]) + i * sizeof(float), sizeof(float));
+    }
+    outputs[i].status = out.status[static_cast<int>(i)] ? Status::out_of_range : Status::ok;
   }
 }
 

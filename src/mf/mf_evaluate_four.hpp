@@ -9,6 +9,7 @@
 #include <array>
 
 #include "mf/mf_evaluate.hpp"
+#include "mf/mf_lanes.hpp"
 
 namespace tread::mf {
 
@@ -17,5 +18,11 @@ namespace tread::mf {
 void evaluate_four(const MfParameters<float>& params, const std::array<MfInput<float>, 4>& inputs,
                    const MfOptions& options, const std::array<MountedSide, 4>& sides,
                    std::array<MfOutput<float>, 4>& outputs) noexcept;
+
+/// The same, leaving the results in lanes (wheel i in lane i of every member, status a per-lane
+/// out-of-range mask): for a caller that needs a few outputs, e.g. `out.fx_n[i]`.
+void evaluate_four(const MfParameters<float>& params, const std::array<MfInput<float>, 4>& inputs,
+                   const MfOptions& options, const std::array<MountedSide, 4>& sides,
+                   MfOutput<lanes::F4>& outputs) noexcept;
 
 }  // namespace tread::mf

@@ -44,7 +44,13 @@ struct Mask4 {
 };
 
 inline bool any_lane(Mask4 a) {
+#if defined(__SSE2__)
+  return _mm_movemask_ps(__m128(a.m)) != 0;
+#elif defined(__ARM_NEON) && defined(__aarch64__)
+  return vmaxvq_u32(uint32x4_t(a.m)) != 0U;
+#else
   return ((a.m[0] | a.m[1]) | (a.m[2] | a.m[3])) != 0;
+#endif
 }
 
 /// Four floats.
@@ -52,10 +58,10 @@ struct F4 {
   V v{};
   F4() = default;
   explicit F4(V x) : v(x) {}
-  F4(float x) : v(V{} + x) {}  // NOLINT(google-explicit-constructor): a float broadcasts
+  F4(float x) : v(V{x, x, x, x}) {}  // NOLINT(google-explicit-constructor): a float broadcasts
   template <typename U>
   requires(std::is_arithmetic_v<U> && !std::same_as<U, float>) explicit F4(U x)
-      : v(V{} + static_cast<float>(x)) {}
+      : F4(static_cast<float>(x)) {}
   float operator[](int i) const { return v[i]; }
 
   friend F4 operator+(F4 a, F4 b) { return F4(a.v + b.v); }
@@ -70,7 +76,24 @@ struct F4 {
 };
 
 inline F4 if_else(Mask4 m, F4 a, F4 b) {
-  return F4(m.m != 0 ? a.v : b.v);
+  return F4(m.m ? a.v : b.v);
+}
+
+/// The evaluation's max_of/min_of (a < b ? b : a and b < a ? b : a) as single instructions where
+/// the target has them (x86 maxps(b, a) is exactly a < b ? b : a, NaN included).
+inline F4 max_of(F4 a, F4 b) {
+#if defined(__SSE2__)
+  return F4(V(_mm_max_ps(__m128(b.v), __m128(a.v))));
+#else
+  return F4(a.v < b.v ? b.v : a.v);
+#endif
+}
+inline F4 min_of(F4 a, F4 b) {
+#if defined(__SSE2__)
+  return F4(V(_mm_min_ps(__m128(b.v), __m128(a.v))));
+#else
+  return F4(b.v < a.v ? b.v : a.v);
+#endif
 }
 
 inline F4 abs(F4 x) {

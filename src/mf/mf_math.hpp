@@ -214,7 +214,7 @@ inline F4 sin_cos4(F4 y, I4 quarter_turns) {
       1.0f - 0.5f * z +
       z * z * (4.166664568298827e-2f + z * (-1.388731625493765e-3f + z * 2.443315711809948e-5f));
   const F4 v = (q & 1) != 0 ? c : s;
-  return (q & 2) != 0 ? -v : v;
+  return std::bit_cast<F4>(I4(std::bit_cast<I4>(v) ^ ((q & 2) << 30)));  // −v in quadrants 2, 3
 }
 
 }  // namespace fast

@@ -51,8 +51,8 @@ void bench(benchmark::State& state, const char* tir, bool combined, bool extras)
   state.SetItemsProcessed(state.iterations());
 }
 
-/// Four wheels per call (evaluate_four: four float lanes); items are wheels, so the reported
-/// time per item is per wheel.
+/// Four wheels per call (evaluate_four: four float lanes, results left in the lanes); items are
+/// wheels, so the reported time per item is per wheel.
 void bench_four(benchmark::State& state, const char* tir, bool combined, bool extras) {
   const MfParameters<float> p = convert_parameters<float>(
       load_mf_parameters(testing::refdata(std::string("tir/") + tir)).params);
@@ -62,7 +62,7 @@ void bench_four(benchmark::State& state, const char* tir, bool combined, bool ex
   const auto inputs = make_inputs<float>();
   const std::array<MountedSide, 4> sides{MountedSide::left, MountedSide::right, MountedSide::left,
                                          MountedSide::right};
-  std::array<MfOutput<float>, 4> out{};
+  MfOutput<lanes::F4> out{};
   std::size_t i = 0;
   for (auto _ : state) {
     const std::array<MfInput<float>, 4> four{inputs[i], inputs[i + 1], inputs[i + 2],
