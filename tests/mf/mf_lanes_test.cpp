@@ -670,6 +670,45 @@ TEST(MfLanes, MasksSelectAndCombinePerLane) {
   EXPECT_EQ(r2[3], 5.0f);
 }
 
+TEST(MfLanes, MaxOfAndMinOfAreTheEvaluationsSelects) {
+  // max_of(a, b) = a < b ? b : a and min_of(a, b) = b < a ? b : a, lane by lane and bit for bit,
+  // as mf_evaluate.hpp's generic versions: NaN in either operand gives a, equal values (±0) a.
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const std::vector<float> special = {0.0f, -0.0f,      1.0f,   -1.0f, kInf, -kInf,
+                                      nan,  kDenormMin, -kMaxF, kMaxF, 2.5f, -2.5f};
+  std::vector<float> as;
+  std::vector<float> bs;
+  for (float a : special) {
+    for (float b : special) {
+      as.push_back(a);
+      bs.push_back(b);
+    }
+  }
+  const std::vector<float> ra = random_bits(0U, 0xffffffffU, 40000, 101);
+  const std::vector<float> rb = random_bits(0U, 0xffffffffU, 40000, 102);
+  as.insert(as.end(), ra.begin(), ra.end());
+  bs.insert(bs.end(), rb.begin(), rb.end());
+  int mismatches = 0;
+  for (std::size_t g = 0; g + 4 <= as.size(); g += 4) {
+    const F4 a = pack(as[g], as[g + 1], as[g + 2], as[g + 3]);
+    const F4 b = pack(bs[g], bs[g + 1], bs[g + 2], bs[g + 3]);
+    const F4 hi = max_of(a, b);
+    const F4 lo = min_of(a, b);
+    for (int k = 0; k < 4; ++k) {
+      const float want_hi = a[k] < b[k] ? b[k] : a[k];
+      const float want_lo = b[k] < a[k] ? b[k] : a[k];
+      if (std::bit_cast<std::uint32_t>(hi[k]) != std::bit_cast<std::uint32_t>(want_hi) ||
+          std::bit_cast<std::uint32_t>(lo[k]) != std::bit_cast<std::uint32_t>(want_lo)) {
+        if (++mismatches <= 5) {
+          ADD_FAILURE() << "max_of/min_of(" << a[k] << ", " << b[k] << ") = " << hi[k] << ", "
+                        << lo[k];
+        }
+      }
+    }
+  }
+  EXPECT_EQ(mismatches, 0);
+}
+
 TEST(MfLanes, ArithmeticIsPerLaneWithFloatBroadcast) {
   const F4 a = pack(1.0f, -2.0f, 3.5f, 1e30f);
   const F4 b = pack(4.0f, 0.5f, -1.0f, 1e30f);
