@@ -1,6 +1,9 @@
 // The Magic Formula on four float lanes: packs four wheels' inputs, evaluates once, unpacks.
 // On x86-64 the evaluation is compiled three times (x86-64-v4 with AVX-512 broadcasts, v3 with
 // AVX2/FMA, the SSE2 baseline) and the loader picks the best the CPU has (GCC target_clones).
+// The v3 and v4 clones contract a·b + c into FMA instructions (as any aarch64 build does), so
+// their results differ from the baseline clone's in the last bits: a trace is reproducible bit
+// for bit on machines of the same x86-64 level, not across levels.
 #include "mf/mf_evaluate_four.hpp"
 
 #include <cstddef>
@@ -52,12 +55,22 @@ void load_rows(const std::array<S, 4>& wheels, std::size_t field, V (&rows)[4]) 
   }
 }
 
+// One function with everything inlined (the scheduler interleaves the independent chains), cloned
+// per x86-64 level where GCC can.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define TREAD_LANES_FUNCTION \
+  __attribute__((flatten, target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+#else
+#define TREAD_LANES_FUNCTION __attribute__((flatten))
+#endif
+
 }  // namespace
 
-__attribute__((flatten, target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default"))) void
-evaluate_four(const MfParameters<float>& params, const std::array<MfInput<float>, 4>& inputs,
-              const MfOptions& options, const std::array<MountedSide, 4>& sides,
-              MfOutput<F4>& out) noexcept {
+TREAD_LANES_FUNCTION void evaluate_four(const MfParameters<float>& params,
+                                        const std::array<MfInput<float>, 4>& inputs,
+                                        const MfOptions& options,
+                                        const std::array<MountedSide, 4>& sides,
+                                        MfOutput<F4>& out) noexcept {
   // Mirroring per wheel: y → −y on the way in and out of its lane.
   F4 y_sign;
   for (std::size_t i = 0; i < 4; ++i) {

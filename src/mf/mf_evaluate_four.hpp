@@ -13,6 +13,15 @@
 
 namespace tread::mf {
 
+/// Whether the target has a vector unit for the lanes (x86-64 SSE2, aarch64 NEON). Without one
+/// evaluate_four is correct but no faster than four scalar evaluations, and callers such as the
+/// node evaluate wheel by wheel instead.
+#if defined(__SSE2__) || (defined(__ARM_NEON) && defined(__aarch64__))
+inline constexpr bool kVectorLanes = true;
+#else
+inline constexpr bool kVectorLanes = false;
+#endif
+
 /// Evaluates four wheels with the same parameters and options; wheel i is mounted on `sides[i]`
 /// (options.side is not used). Never allocates, never throws; finite inputs give finite outputs.
 void evaluate_four(const MfParameters<float>& params, const std::array<MfInput<float>, 4>& inputs,

@@ -4,6 +4,8 @@
 // tested with simple channels and runs with the real ones, without virtual dispatch.
 
 #include <concepts>
+#include <cstdint>
+#include <span>
 
 #include "proto/codec.hpp"
 
@@ -33,6 +35,15 @@ template <typename T>
 concept TyreChannel = requires(T tyre, const proto::WheelInput& input, float dt_s) {
   { tyre.evaluate(input, dt_s) } -> std::same_as<TyreResult>;
   { tyre.reset() } -> std::same_as<void>;
+};
+
+/// A tyre channel type that evaluates the due wheels of a cycle in one call (e.g. four wheels on
+/// vector lanes): results[i] for every bit i of `due`; the node uses it when the type has it.
+template <typename T>
+concept BatchTyreChannel = TyreChannel<T> &&
+    requires(std::span<T> tyres, std::span<const proto::WheelInput> inputs, std::uint8_t due,
+             float dt_s, std::span<TyreResult> results) {
+  { T::evaluate_wheels(tyres, inputs, due, dt_s, results) } -> std::same_as<void>;
 };
 
 /// A rail-wheelset channel.

@@ -2,8 +2,19 @@
 // A road-wheel channel on the Magic Formula core (float): clamps the inputs to the property file's
 // limits (FZMAX, KPUMIN/KPUMAX, ALPMIN/ALPMAX, CAMMIN/CAMMAX) and flags it, then evaluates.
 // Fz < 0 is taken as 0 (lifted wheel: zero forces) and flagged.
+// The node's due wheels go through evaluate_wheels: on targets with vector lanes, wheels that share
+// a tyre and options (the mounted side may differ) are evaluated four at a time
+// (mf::evaluate_four); otherwise, and on the ECU's scalar build, one by one.
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cstddef>
+#include <cstdint>
+#include <span>
 
 #include "mf/mf_evaluate.hpp"
+#include "mf/mf_evaluate_four.hpp"
 #include "node/channels.hpp"
 
 namespace tread::node {
@@ -23,8 +34,40 @@ class MfTyreChannel {
     if (params_ == nullptr) {
       return result;
     }
+    const mf::MfInput<float> input = limited(in, result.clamped);
+    const mf::MfOutput<float> out = mf::evaluate(*params_, input, options_);
+    result.fx_n = out.fx_n;
+    result.fy_n = out.fy_n;
+    result.mz_nm = out.mz_nm;
+    result.mx_nm = out.mx_nm;
+    result.my_nm = out.my_nm;
+    result.rl_m = out.rl_m;
+    result.clamped = result.clamped || out.status != Status::ok;
+    return result;
+  }
+
+  /// The node's due wheels (bit i of `due`: tyres[i] with inputs[i] → results[i]).
+  static void evaluate_wheels(std::span<MfTyreChannel> tyres,
+                              std::span<const proto::WheelInput> inputs, std::uint8_t due,
+                              float dt_s, std::span<TyreResult> results) noexcept {
+    const std::size_t n = std::min({tyres.size(), inputs.size(), results.size()});
+    if constexpr (mf::kVectorLanes) {
+      if (n <= 4 && std::popcount(due) > 1 && same_tyre(tyres.first(n), due)) {
+        evaluate_lanes(tyres.first(n), inputs, due, results);
+        return;
+      }
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      if (((due >> i) & 1U) != 0U) results[i] = tyres[i].evaluate(inputs[i], dt_s);
+    }
+  }
+
+  void reset() noexcept {}
+
+ private:
+  /// The input clamped to the file's limits; `clamped` set when a limit applied.
+  mf::MfInput<float> limited(const proto::WheelInput& in, bool& clamped) const noexcept {
     const mf::MfParameters<float>& p = *params_;
-    bool clamped = false;
     const auto clamp = [&clamped](float v, float lo, float hi) {
       if (v < lo) {
         clamped = true;
@@ -42,24 +85,66 @@ class MfTyreChannel {
     input.alpha_rad = clamp(in.alpha_rad, p.alpmin_rad, p.alpmax_rad);
     input.gamma_rad = clamp(in.gamma_rad, p.cammin_rad, p.cammax_rad);
     input.vx_mps = in.vx_mps;
-    const mf::MfOutput<float> out = mf::evaluate(p, input, options_);
-    result.fx_n = out.fx_n;
-    result.fy_n = out.fy_n;
-    result.mz_nm = out.mz_nm;
-    result.mx_nm = out.mx_nm;
-    result.my_nm = out.my_nm;
-    result.rl_m = out.rl_m;
-    result.clamped = clamped || out.status != Status::ok;
-    return result;
+    return input;
   }
 
-  void reset() noexcept {}
+  /// Whether the due wheels share parameters and options (all but the mounted side).
+  static bool same_tyre(std::span<const MfTyreChannel> tyres, std::uint8_t due) noexcept {
+    const MfTyreChannel* first = nullptr;
+    for (std::size_t i = 0; i < tyres.size(); ++i) {
+      if (((due >> i) & 1U) == 0U) continue;
+      const MfTyreChannel& t = tyres[i];
+      if (t.params_ == nullptr) return false;
+      if (first == nullptr) {
+        first = &t;
+        continue;
+      }
+      const mf::MfOptions& a = first->options_;
+      const mf::MfOptions& b = t.options_;
+      if (t.params_ != first->params_ || a.use_limits != b.use_limits ||
+          a.use_alpha_star != b.use_alpha_star || a.use_turn_slip != b.use_turn_slip ||
+          a.combined != b.combined || a.extras != b.extras ||
+          a.extras_loaded_radius_only != b.extras_loaded_radius_only) {
+        return false;
+      }
+    }
+    return first != nullptr;
+  }
 
- private:
+  /// Up to four due wheels of one tyre in one pass of four lanes (wheels not due: Fz = 0).
+  static void evaluate_lanes(std::span<MfTyreChannel> tyres,
+                             std::span<const proto::WheelInput> inputs, std::uint8_t due,
+                             std::span<TyreResult> results) noexcept {
+    const MfTyreChannel* first = nullptr;
+    std::array<mf::MfInput<float>, 4> in{};
+    std::array<mf::MountedSide, 4> sides{};
+    std::array<bool, 4> clamped{};
+    for (std::size_t i = 0; i < tyres.size(); ++i) {
+      if (((due >> i) & 1U) == 0U) continue;
+      if (first == nullptr) first = &tyres[i];
+      in[i] = tyres[i].limited(inputs[i], clamped[i]);
+      sides[i] = tyres[i].options_.side;
+    }
+    mf::MfOutput<mf::lanes::F4> out;
+    mf::evaluate_four(*first->params_, in, first->options_, sides, out);
+    for (std::size_t i = 0; i < tyres.size(); ++i) {
+      if (((due >> i) & 1U) == 0U) continue;
+      const int lane = static_cast<int>(i);
+      TyreResult& r = results[i];
+      r.fx_n = out.fx_n[lane];
+      r.fy_n = out.fy_n[lane];
+      r.mz_nm = out.mz_nm[lane];
+      r.mx_nm = out.mx_nm[lane];
+      r.my_nm = out.my_nm[lane];
+      r.rl_m = out.rl_m[lane];
+      r.clamped = clamped[i] || out.status[lane];
+    }
+  }
+
   const mf::MfParameters<float>* params_{nullptr};
   mf::MfOptions options_{};
 };
 
-static_assert(TyreChannel<MfTyreChannel>);
+static_assert(BatchTyreChannel<MfTyreChannel>);
 
 }  // namespace tread::node

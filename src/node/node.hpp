@@ -117,6 +117,7 @@ class Node {
 
     std::uint8_t stale_mask = 0;
     std::uint8_t clamp_mask = 0;
+    std::uint8_t due = 0;  // wheels to compute this cycle
     for (std::size_t i = 0; i < config_.wheels; ++i) {
       proto::WheelOutput& out = outputs_.wheels[i];
       const auto bit = static_cast<std::uint8_t>(1U << i);
@@ -132,7 +133,24 @@ class Node {
         tyres_[i].reset();  // restart transients cleanly when inputs return
         continue;
       }
-      const TyreResult r = tyres_[i].evaluate(latest_.wheels[i], dt_s);
+      due = static_cast<std::uint8_t>(due | bit);
+    }
+    std::array<TyreResult, proto::kMaxWheels> results{};
+    if constexpr (BatchTyreChannel<Tyre>) {
+      Tyre::evaluate_wheels(
+          tyres_.first(config_.wheels),
+          std::span<const proto::WheelInput>(latest_.wheels).first(config_.wheels), due, dt_s,
+          results);
+    } else {
+      for (std::size_t i = 0; i < config_.wheels; ++i) {
+        if (((due >> i) & 1U) != 0U) results[i] = tyres_[i].evaluate(latest_.wheels[i], dt_s);
+      }
+    }
+    for (std::size_t i = 0; i < config_.wheels; ++i) {
+      const auto bit = static_cast<std::uint8_t>(1U << i);
+      if ((due & bit) == 0U) continue;
+      proto::WheelOutput& out = outputs_.wheels[i];
+      const TyreResult& r = results[i];
       out = proto::WheelOutput{r.fx_n, r.fy_n, r.mz_nm, r.mx_nm, r.my_nm, r.rl_m, 0};
       if (!all_finite(out)) {
         ++counters_.non_finite_outputs;
