@@ -25,6 +25,10 @@ void add_node_command(CLI::App& app) {
   static std::string tx_log;
   static double duration_s = 0.0;
   add_node_options(*cmd, state, true);
+  cmd->add_flag("--relaxation", state.settings.relaxation,
+                "lag the received slips with the tyre's relaxation lengths (first-order transient; "
+                "not for a rig that sends transient slips itself, as tread demo's and tread rig's "
+                "vehicle does)");
   cmd->add_option("--can", live.can, "stub (in-process bus) or a SocketCAN interface such as vcan0")
       ->capture_default_str();
   cmd->add_option("--period-us", live.period_us, "cycle period")

@@ -77,7 +77,7 @@ NodeRuntime::NodeRuntime(const NodeSettings& settings) {
                                "'");
     }
     for (auto& tyre : tyres_) {
-      tyre = node::MfTyreChannel(params_, options_);
+      tyre = node::MfTyreChannel(params_, options_, settings.relaxation);
     }
   }
   if (config.wheelsets > 0) {

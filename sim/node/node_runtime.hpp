@@ -22,6 +22,7 @@ struct NodeSettings {
   std::filesystem::path tir;        ///< required when wheels > 0
   int use_mode{111};                ///< MFeval useMode for the tyre model
   std::string side{"as-measured"};  ///< mounted side: as-measured | left | right
+  bool relaxation{false};  ///< first-order transient slips (relaxation lengths of the .tir)
   node::NodeConfig node{};
   /// Wheelset contact: "key=value,..." with keys wheel, wheel-file, rail, rail-file, rail-frame,
   /// cant, gauge, b2b, r0, r0-right (the options of `tread contact`). Empty: no wheelsets.

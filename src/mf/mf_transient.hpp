@@ -25,32 +25,51 @@ class MfTransient {
   const T& kappa() const { return kappa_; }
   const T& alpha_rad() const { return alpha_; }
 
-  /// Advance by dt_s with the kinematic slips of `input`, then evaluate the Magic Formula with
-  /// the transient slips. Needs options.extras (for the relaxation lengths); it is forced on.
-  MfOutput<T> step(const MfParameters<T>& params, const MfInput<T>& input, MfOptions options,
-                   const T& dt_s) {
+  /// The relaxation lengths the next advance() uses: known after the first step.
+  bool has_relaxation_lengths() const { return have_sigma_; }
+  void set_relaxation_lengths(const T& sigmax_m, const T& sigmay_m) {
+    sigma_kappa_ = sigmax_m;
+    sigma_alpha_ = sigmay_m;
+    have_sigma_ = true;
+  }
+
+  /// Advances the transient slips by dt_s toward `input`'s kinematic slips (with the relaxation
+  /// lengths set before) and returns `input` with the transient slips. step() is: relaxation
+  /// lengths if none yet, advance, evaluate, relaxation lengths from that evaluation; callers that
+  /// evaluate elsewhere (four wheels on lanes) do the same in pieces.
+  MfInput<T> advance(const MfInput<T>& input, const T& dt_s) {
     using std::abs;
-    using std::exp;
-    options.extras = true;
-    if (!have_sigma_) {
-      // First step: relaxation lengths at this load.
-      MfInput<T> probe = input;
-      probe.kappa = kappa_;
-      probe.alpha_rad = alpha_;
-      const MfOutput<T> out0 = evaluate(params, probe, options);
-      sigma_kappa_ = out0.sigmax_m;
-      sigma_alpha_ = out0.sigmay_m;
-      have_sigma_ = true;
-    }
     const T distance = abs(input.vx_mps) * (dt_s > T(0) ? dt_s : T(0));
     kappa_ = kappa_ + (input.kappa - kappa_) * blend(distance, sigma_kappa_);
     alpha_ = alpha_ + (input.alpha_rad - alpha_) * blend(distance, sigma_alpha_);
     MfInput<T> relaxed = input;
     relaxed.kappa = kappa_;
     relaxed.alpha_rad = alpha_;
-    const MfOutput<T> out = evaluate(params, relaxed, options);
-    sigma_kappa_ = out.sigmax_m;
-    sigma_alpha_ = out.sigmay_m;
+    return relaxed;
+  }
+
+  /// The input at the current transient slips (what the first step takes its relaxation lengths
+  /// from).
+  MfInput<T> probe(const MfInput<T>& input) const {
+    MfInput<T> p = input;
+    p.kappa = kappa_;
+    p.alpha_rad = alpha_;
+    return p;
+  }
+
+  /// Advance by dt_s with the kinematic slips of `input`, then evaluate the Magic Formula with
+  /// the transient slips. Needs options.extras (for the relaxation lengths); it is forced on.
+  MfOutput<T> step(const MfParameters<T>& params, const MfInput<T>& input, MfOptions options,
+                   const T& dt_s) {
+    options.extras = true;
+    options.extras_loaded_radius_only = false;  // the relaxation lengths are needed
+    if (!have_sigma_) {
+      // First step: relaxation lengths at this load.
+      const MfOutput<T> out0 = evaluate(params, probe(input), options);
+      set_relaxation_lengths(out0.sigmax_m, out0.sigmay_m);
+    }
+    const MfOutput<T> out = evaluate(params, advance(input, dt_s), options);
+    set_relaxation_lengths(out.sigmax_m, out.sigmay_m);
     return out;
   }
 

@@ -2,6 +2,9 @@
 // A road-wheel channel on the Magic Formula core (float): clamps the inputs to the property file's
 // limits (FZMAX, KPUMIN/KPUMAX, ALPMIN/ALPMAX, CAMMIN/CAMMAX) and flags it, then evaluates.
 // Fz < 0 is taken as 0 (lifted wheel: zero forces) and flagged.
+// Optional relaxation (mf_transient.hpp): the Magic Formula sees the slips lagging the received
+// (kinematic) ones with the tyre's relaxation lengths; reset() (the node calls it while a wheel is
+// stale) restarts the lag from the next received slips.
 // The node's due wheels go through evaluate_wheels: on targets with vector lanes, wheels that share
 // a tyre and options (the mounted side may differ) are evaluated four at a time
 // (mf::evaluate_four); otherwise, and on the ECU's scalar build, one by one.
@@ -15,6 +18,7 @@
 
 #include "mf/mf_evaluate.hpp"
 #include "mf/mf_evaluate_four.hpp"
+#include "mf/mf_transient.hpp"
 #include "node/channels.hpp"
 
 namespace tread::node {
@@ -22,20 +26,29 @@ namespace tread::node {
 class MfTyreChannel {
  public:
   MfTyreChannel() = default;
-  /// `params` must outlive the channel.
-  /// The node sends Rl alone of the extras: the contact patch and relaxation lengths are skipped.
-  MfTyreChannel(const mf::MfParameters<float>& params, const mf::MfOptions& options) noexcept
-      : params_(&params), options_(options) {
-    options_.extras_loaded_radius_only = true;
+  /// `params` must outlive the channel. `relaxation`: first-order transient slips.
+  /// The node sends Rl alone of the extras: without relaxation the contact patch and relaxation
+  /// lengths are skipped.
+  MfTyreChannel(const mf::MfParameters<float>& params, const mf::MfOptions& options,
+                bool relaxation = false) noexcept
+      : params_(&params), options_(options), relaxation_(relaxation) {
+    options_.extras = true;
+    options_.extras_loaded_radius_only = !relaxation;
   }
 
-  TyreResult evaluate(const proto::WheelInput& in, float /*dt_s*/) noexcept {
+  TyreResult evaluate(const proto::WheelInput& in, float dt_s) noexcept {
     TyreResult result;
     if (params_ == nullptr) {
       return result;
     }
     const mf::MfInput<float> input = limited(in, result.clamped);
-    const mf::MfOutput<float> out = mf::evaluate(*params_, input, options_);
+    mf::MfOutput<float> out;
+    if (relaxation_) {
+      restart_if_due(input);
+      out = transient_.step(*params_, input, options_, dt_s);
+    } else {
+      out = mf::evaluate(*params_, input, options_);
+    }
     result.fx_n = out.fx_n;
     result.fy_n = out.fy_n;
     result.mz_nm = out.mz_nm;
@@ -53,7 +66,7 @@ class MfTyreChannel {
     const std::size_t n = std::min({tyres.size(), inputs.size(), results.size()});
     if constexpr (mf::kVectorLanes) {
       if (n <= 4 && std::popcount(due) > 1 && same_tyre(tyres.first(n), due)) {
-        evaluate_lanes(tyres.first(n), inputs, due, results);
+        evaluate_lanes(tyres.first(n), inputs, due, dt_s, results);
         return;
       }
     }
@@ -62,9 +75,20 @@ class MfTyreChannel {
     }
   }
 
-  void reset() noexcept {}
+  /// Restarts the relaxation from the next received slips.
+  void reset() noexcept { restart_ = true; }
+
+  /// The transient slips (the received ones without relaxation).
+  [[nodiscard]] const mf::MfTransient<float>& transient() const noexcept { return transient_; }
 
  private:
+  void restart_if_due(const mf::MfInput<float>& input) noexcept {
+    if (restart_) {
+      transient_.reset(input.kappa, input.alpha_rad);
+      restart_ = false;
+    }
+  }
+
   /// The input clamped to the file's limits; `clamped` set when a limit applied.
   mf::MfInput<float> limited(const proto::WheelInput& in, bool& clamped) const noexcept {
     const mf::MfParameters<float>& p = *params_;
@@ -101,9 +125,9 @@ class MfTyreChannel {
       }
       const mf::MfOptions& a = first->options_;
       const mf::MfOptions& b = t.options_;
-      if (t.params_ != first->params_ || a.use_limits != b.use_limits ||
-          a.use_alpha_star != b.use_alpha_star || a.use_turn_slip != b.use_turn_slip ||
-          a.combined != b.combined || a.extras != b.extras ||
+      if (t.params_ != first->params_ || t.relaxation_ != first->relaxation_ ||
+          a.use_limits != b.use_limits || a.use_alpha_star != b.use_alpha_star ||
+          a.use_turn_slip != b.use_turn_slip || a.combined != b.combined || a.extras != b.extras ||
           a.extras_loaded_radius_only != b.extras_loaded_radius_only) {
         return false;
       }
@@ -111,21 +135,48 @@ class MfTyreChannel {
     return first != nullptr;
   }
 
-  /// Up to four due wheels of one tyre in one pass of four lanes (wheels not due: Fz = 0).
+  /// Up to four due wheels of one tyre in one pass of four lanes (wheels not due: Fz = 0). With
+  /// relaxation: the transient slips advanced per wheel, then one pass; a wheel whose relaxation
+  /// restarted takes its relaxation lengths from one more pass first (as MfTransient::step).
   static void evaluate_lanes(std::span<MfTyreChannel> tyres,
                              std::span<const proto::WheelInput> inputs, std::uint8_t due,
-                             std::span<TyreResult> results) noexcept {
+                             float dt_s, std::span<TyreResult> results) noexcept {
     const MfTyreChannel* first = nullptr;
     std::array<mf::MfInput<float>, 4> in{};
     std::array<mf::MountedSide, 4> sides{};
     std::array<bool, 4> clamped{};
+    bool need_lengths = false;
     for (std::size_t i = 0; i < tyres.size(); ++i) {
       if (((due >> i) & 1U) == 0U) continue;
-      if (first == nullptr) first = &tyres[i];
-      in[i] = tyres[i].limited(inputs[i], clamped[i]);
-      sides[i] = tyres[i].options_.side;
+      MfTyreChannel& t = tyres[i];
+      if (first == nullptr) first = &t;
+      in[i] = t.limited(inputs[i], clamped[i]);
+      sides[i] = t.options_.side;
+      if (t.relaxation_) {
+        t.restart_if_due(in[i]);
+        need_lengths = need_lengths || !t.transient_.has_relaxation_lengths();
+      }
     }
     mf::MfOutput<mf::lanes::F4> out;
+    if (first->relaxation_) {
+      if (need_lengths) {
+        std::array<mf::MfInput<float>, 4> probe = in;
+        for (std::size_t i = 0; i < tyres.size(); ++i) {
+          if (((due >> i) & 1U) != 0U) probe[i] = tyres[i].transient_.probe(in[i]);
+        }
+        mf::evaluate_four(*first->params_, probe, first->options_, sides, out);
+        for (std::size_t i = 0; i < tyres.size(); ++i) {
+          mf::MfTransient<float>& tr = tyres[i].transient_;
+          if (((due >> i) & 1U) != 0U && !tr.has_relaxation_lengths()) {
+            const int lane = static_cast<int>(i);
+            tr.set_relaxation_lengths(out.sigmax_m[lane], out.sigmay_m[lane]);
+          }
+        }
+      }
+      for (std::size_t i = 0; i < tyres.size(); ++i) {
+        if (((due >> i) & 1U) != 0U) in[i] = tyres[i].transient_.advance(in[i], dt_s);
+      }
+    }
     mf::evaluate_four(*first->params_, in, first->options_, sides, out);
     for (std::size_t i = 0; i < tyres.size(); ++i) {
       if (((due >> i) & 1U) == 0U) continue;
@@ -138,11 +189,17 @@ class MfTyreChannel {
       r.my_nm = out.my_nm[lane];
       r.rl_m = out.rl_m[lane];
       r.clamped = clamped[i] || out.status[lane];
+      if (first->relaxation_) {
+        tyres[i].transient_.set_relaxation_lengths(out.sigmax_m[lane], out.sigmay_m[lane]);
+      }
     }
   }
 
   const mf::MfParameters<float>* params_{nullptr};
   mf::MfOptions options_{};
+  bool relaxation_{false};
+  bool restart_{true};
+  mf::MfTransient<float> transient_{};
 };
 
 static_assert(BatchTyreChannel<MfTyreChannel>);

@@ -132,5 +132,54 @@ TEST(MfTyreChannel, LiftedAndStandingWheelsGiveFiniteZeroForces) {
   expect_close(r[1], tyres[1].evaluate(inputs[1], 0.001F), 1);
 }
 
+TEST(MfTyreChannel, RelaxationLagsASlipStepWithTheRelaxationLength) {
+  // A step in α at 20 m/s: the lateral force rises as 1 − e^(−Vx·t/σα) (σα from the tyre), equal
+  // four at a time and one by one; reset() restarts from the received slips (no lag).
+  const mf::MfOptions o = mf::options_from_use_mode(111).value;
+  std::array<MfTyreChannel, 4> together;
+  std::array<MfTyreChannel, 4> alone;
+  for (std::size_t i = 0; i < 4; ++i) {
+    together[i] = MfTyreChannel(book_tyre(), o, true);
+    alone[i] = MfTyreChannel(book_tyre(), o, true);
+  }
+  std::array<proto::WheelInput, 4> in{};
+  for (auto& w : in) w = {0.0F, 0.0F, 0.0F, 4000.0F, 20.0F, 0.0F, false};
+  std::array<TyreResult, 4> r{};
+  const float dt_s = 0.001F;
+  MfTyreChannel::evaluate_wheels(together, in, 0x0F, dt_s, r);  // settle at α = 0
+  for (std::size_t i = 0; i < 4; ++i) static_cast<void>(alone[i].evaluate(in[i], dt_s));
+  for (std::size_t i = 0; i < 4; ++i) in[i].alpha_rad = 0.02F + 0.01F * static_cast<float>(i);
+
+  // Steady state of the step (no relaxation) and σα at this load.
+  MfTyreChannel steady(book_tyre(), o);
+  mf::MfOptions full = o;
+  full.extras = true;
+  const mf::MfOutput<float> ref = mf::evaluate(
+      book_tyre(), mf::MfInput<float>{4000.0F, 0.0F, 0.02F, 0.0F, 20.0F, 0.0F, 0.0F}, full);
+  ASSERT_GT(ref.sigmay_m, 0.05F);
+  const float tau_s = ref.sigmay_m / 20.0F;
+  const int steps = static_cast<int>(std::lround(tau_s / dt_s));  // one time constant
+  float fy_after_tau = 0.0F;
+  for (int k = 1; k <= steps; ++k) {
+    MfTyreChannel::evaluate_wheels(together, in, 0x0F, dt_s, r);
+    for (std::size_t i = 0; i < 4; ++i) {
+      expect_close(r[i], alone[i].evaluate(in[i], dt_s), static_cast<int>(i));
+    }
+    if (k == 1) {
+      EXPECT_LT(std::fabs(r[0].fy_n), 0.1F * std::fabs(ref.fy_n));
+    }
+    fy_after_tau = r[0].fy_n;
+  }
+  // After one time constant the transient slip is 1 − 1/e of the step (within a step's worth).
+  const float alpha_after = together[0].transient().alpha_rad();
+  EXPECT_NEAR(alpha_after / 0.02F, 1.0F - std::exp(-1.0F), 0.02F);
+  EXPECT_NEAR(fy_after_tau / steady.evaluate(in[0], dt_s).fy_n, 1.0F - std::exp(-1.0F), 0.05F);
+
+  for (auto& t : together) t.reset();
+  MfTyreChannel::evaluate_wheels(together, in, 0x0F, dt_s, r);
+  EXPECT_FLOAT_EQ(together[0].transient().alpha_rad(), in[0].alpha_rad);  // restarted: no lag
+  expect_close(r[0], steady.evaluate(in[0], dt_s), 0);
+}
+
 }  // namespace
 }  // namespace tread::node
