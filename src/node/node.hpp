@@ -143,7 +143,8 @@ class Node {
           results);
     } else {
       for (std::size_t i = 0; i < config_.wheels; ++i) {
-        if (((due >> i) & 1U) != 0U) results[i] = tyres_[i].evaluate(latest_.wheels[i], dt_s);
+        if (((static_cast<unsigned>(due) >> i) & 1U) != 0U)
+          results[i] = tyres_[i].evaluate(latest_.wheels[i], dt_s);
       }
     }
     for (std::size_t i = 0; i < config_.wheels; ++i) {

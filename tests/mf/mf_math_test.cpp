@@ -133,7 +133,7 @@ TEST(MfMath, FourLaneSinCosAbsoluteErrorBelow2em7UpToAFewTurnsAnd1em6Beyond) {
 
 // The core itself against the same formula in scalar float (fast::atan, libm sin/cos) for the
 // Magic Formula's ranges: C in [0.5, 2.5], E in [−3, 1], |x| ≤ 20, sin and cos lanes mixed.
-TEST(MfMath, FourLaneCoreMatchesTheScalarFloatFormulaWithin1p5em6) {
+TEST(MfMath, FourLaneCoreMatchesTheScalarFloatFormulaWithin5em7) {
   double worst = 0.0;
   std::uint32_t state = 2024U;
   const auto uniform = [&state](double lo, double hi) {
@@ -156,7 +156,7 @@ TEST(MfMath, FourLaneCoreMatchesTheScalarFloatFormulaWithin1p5em6) {
     }
   }
   std::printf("[ max err  ] four-lane core vs scalar float %.3g (absolute)\n", worst);
-  EXPECT_LT(worst, 1.5e-6);  // two float approximations of atan (each < 2e-7), amplified by C·(1−E)
+  EXPECT_LT(worst, 5e-7);
 }
 
 TEST(MfMath, FourLaneCoreMatchesTheScalarFormulaLaneByLane) {

@@ -9,9 +9,17 @@
 // tolerance only absorbs the last printed digits. It is deliberately tight: one force answer that
 // rounds to a different 1 N step fails it, as any change of the numerics should show. Every 10th
 // cycle is stored, to keep the files reviewable.
+//
+// The traces are recorded on x86-64 with AVX2 and FMA: there the node's four-lane tyre evaluation
+// (src/mf/mf_evaluate_four.cpp) runs its x86-64-v3/v4 clone, which contracts a·b + c into FMA
+// instructions (in every build type: that file is always compiled -O2). A CPU without them runs
+// the baseline clone, whose float results differ in the last bits; the closed loop carries that
+// to whole 1 N answer steps (under qemu -cpu Nehalem: up to 21 % of the step steer's small Fx
+// column). There a bit-level comparison means nothing, and the test is skipped with that reason.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iomanip>
@@ -23,6 +31,16 @@ namespace tread::host {
 namespace {
 
 constexpr int kEvery = 10;
+
+/// Whether this CPU runs the float path the traces were recorded with.
+bool runs_recorded_float_path() {
+#if defined(__x86_64__) && defined(__GNUC__)
+  __builtin_cpu_init();
+  return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+#else
+  return false;
+#endif
+}
 
 struct Table {
   std::string header;
@@ -62,6 +80,10 @@ class GoldenTrace : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(GoldenTrace, MatchesTheStoredTrace) {
   const std::string name = GetParam();
+  if (!runs_recorded_float_path()) {
+    GTEST_SKIP() << "recorded with the tyre lanes' FMA clone (x86-64-v3+); this CPU has no "
+                    "AVX2/FMA and runs the baseline clone";
+  }
   const DemoResult r = run_demo(testing::demo_settings({name}, "golden_" + name));
   ASSERT_EQ(r.scenarios.size(), 1U);
   const Table run = read_table(r.scenarios[0].trace_csv, kEvery);
@@ -87,11 +109,18 @@ TEST_P(GoldenTrace, MatchesTheStoredTrace) {
     }
   }
   int reported = 0;
+  const double relative = 1e-6;
+  double worst = 0.0;
+  std::string worst_column;
   for (std::size_t i = 0; i < ref.rows.size(); ++i) {
     ASSERT_EQ(run.rows[i].size(), ref.rows[i].size());
     for (std::size_t k = 0; k < ref.rows[i].size(); ++k) {
-      const double tol = 1e-6 * scale[k] + 1e-9;
+      const double tol = relative * scale[k] + 1e-9;
       const double d = std::abs(run.rows[i][k] - ref.rows[i][k]);
+      if (scale[k] > 0.0 && d / scale[k] > worst) {
+        worst = d / scale[k];
+        worst_column = names[k];
+      }
       if (!(d <= tol) && reported++ < 10) {
         ADD_FAILURE() << name << ": t = " << ref.rows[i][0] << " s, " << names[k] << " = "
                       << run.rows[i][k] << ", golden " << ref.rows[i][k] << " (tolerance " << tol
@@ -99,6 +128,8 @@ TEST_P(GoldenTrace, MatchesTheStoredTrace) {
       }
     }
   }
+  std::printf("[ worst    ] %s: %.3g of the column's largest value (%s)\n", name.c_str(), worst,
+              worst_column.c_str());
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenarios, GoldenTrace,
