@@ -71,7 +71,7 @@ TEST(MfTyreChannel, DueWheelsTogetherEqualEachWheelAlone) {
     std::array<TyreResult, 4> together{};
     MfTyreChannel::evaluate_wheels(tyres, inputs, due, 0.001F, together);
     for (std::size_t i = 0; i < 4; ++i) {
-      if (((due >> i) & 1U) == 0U) {
+      if (((static_cast<unsigned>(due) >> i) & 1U) == 0U) {
         EXPECT_EQ(together[i].fx_n, 0.0F) << "wheel " << i << " is not due";
         EXPECT_EQ(together[i].rl_m, 0.0F) << "wheel " << i << " is not due";
         continue;
