@@ -31,6 +31,7 @@
 #include "mf/mf_parameters_from_tir.hpp"
 #include "mf_golden_compare.hpp"
 #include "mf_output_columns.hpp"
+#include "wild_value.hpp"
 
 #include "allocation_counter.hpp"  // this program's only source file: it defines the counters
 
@@ -598,37 +599,6 @@ TEST(MfEvaluateFour, OutOfEnvelopeInOneLaneSetsOutOfRangeInThatLaneOnly) {
 
 // ---- fuzz: random finite inputs -----------------------------------------------------------------
 
-/// A random finite float: mostly physical, sometimes 0, huge, tiny, FLT_MAX-sized or subnormal.
-float wild(std::mt19937_64& rng, double typical) {
-  std::uniform_int_distribution<int> pick(0, 9);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  std::uniform_real_distribution<double> exponent(-45.0, 38.5);
-  const double sign = unit(rng) < 0 ? -1.0 : 1.0;
-  constexpr double kMax = static_cast<double>(std::numeric_limits<float>::max());
-  double v = 0.0;
-  switch (pick(rng)) {
-    case 0:
-      v = 0.0;
-      break;
-    case 1:
-      v = sign * std::pow(10.0, exponent(rng));  // huge or tiny, float's range
-      break;
-    case 2:
-      v = sign * kMax * std::fabs(unit(rng));
-      break;
-    case 3:
-      v = sign * static_cast<double>(std::numeric_limits<float>::denorm_min()) * 3.0;
-      break;
-    case 4:
-      v = sign * typical * 100.0 * std::fabs(unit(rng));
-      break;
-    default:
-      v = typical * unit(rng);
-      break;
-  }
-  return static_cast<float>(std::clamp(v, -kMax, kMax));
-}
-
 TEST(MfEvaluateFour, RandomFiniteInputsNeverGiveNanOrInf) {
   const std::vector<LoadedTir> files = loadable_tir_files();
   const auto columns = testing::output_columns<float>();
@@ -642,13 +612,13 @@ TEST(MfEvaluateFour, RandomFiniteInputsNeverGiveNanOrInf) {
       Inputs4 in;
       Sides4 sides;
       for (std::size_t k = 0; k < 4; ++k) {
-        in[k].fz_n = wild(rng, 8000.0);
-        in[k].kappa = wild(rng, 1.0);
-        in[k].alpha_rad = wild(rng, 1.0);
-        in[k].gamma_rad = wild(rng, 0.2);
-        in[k].vx_mps = wild(rng, 30.0);
-        in[k].phit_1pm = wild(rng, 0.5);
-        in[k].p_pa = wild(rng, 3e5);
+        in[k].fz_n = testing::wild<float>(rng, 8000.0);
+        in[k].kappa = testing::wild<float>(rng, 1.0);
+        in[k].alpha_rad = testing::wild<float>(rng, 1.0);
+        in[k].gamma_rad = testing::wild<float>(rng, 0.2);
+        in[k].vx_mps = testing::wild<float>(rng, 30.0);
+        in[k].phit_1pm = testing::wild<float>(rng, 0.5);
+        in[k].p_pa = testing::wild<float>(rng, 3e5);
         sides[k] = static_cast<MountedSide>(pick_side(rng));
       }
       for (int mode : kUseModes) {

@@ -13,44 +13,12 @@
 #include "mf/mf_evaluate.hpp"
 #include "mf/mf_parameters_from_tir.hpp"
 #include "mf_output_columns.hpp"
+#include "wild_value.hpp"
 
 namespace tread::mf {
 namespace {
 
-/// A random finite value: mostly physical, sometimes huge, tiny, zero or subnormal.
-template <typename T>
-T wild(std::mt19937_64& rng, double typical) {
-  std::uniform_int_distribution<int> pick(0, 9);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  std::uniform_real_distribution<double> exponent(-300.0, 300.0);
-  const double sign = unit(rng) < 0 ? -1.0 : 1.0;
-  double v = 0.0;
-  switch (pick(rng)) {
-    case 0:
-      v = 0.0;
-      break;
-    case 1:
-      v = sign * std::pow(10.0, exponent(rng));  // huge or tiny (double range)
-      break;
-    case 2:
-      v = sign * static_cast<double>(std::numeric_limits<T>::max()) * std::fabs(unit(rng));
-      break;
-    case 3:
-      v = sign * static_cast<double>(std::numeric_limits<T>::denorm_min()) * 3.0;
-      break;
-    case 4:
-      v = sign * typical * 100.0 * std::fabs(unit(rng));
-      break;
-    default:
-      v = typical * unit(rng);
-      break;
-  }
-  // Finite in T.
-  const double max = static_cast<double>(std::numeric_limits<T>::max());
-  if (v > max) v = max;
-  if (v < -max) v = -max;
-  return static_cast<T>(v);
-}
+using testing::wild;
 
 template <typename T>
 void fuzz(const std::string& tir_name, int cases) {
