@@ -1,9 +1,9 @@
 // The Magic Formula on four float lanes: packs four wheels' inputs, evaluates once, unpacks.
 // On x86-64 the evaluation is compiled three times (x86-64-v4 with AVX-512 broadcasts, v3 with
 // AVX2/FMA, the SSE2 baseline) and the loader picks the best the CPU has (GCC target_clones).
-// The v3 and v4 clones contract a·b + c into FMA instructions (as any aarch64 build does), so
-// their results differ from the baseline clone's in the last bits: a trace is reproducible bit
-// for bit on machines of the same x86-64 level, not across levels.
+// The v3 and v4 clones contract a·b + c into FMA instructions (as any aarch64 build does) and
+// agree bit for bit (checked under qemu -cpu Haswell against this AVX-512 machine); the baseline
+// clone's results differ from theirs in the last bits.
 #include "mf/mf_evaluate_four.hpp"
 
 #include <cstddef>
@@ -25,6 +25,13 @@ using lanes::VI;
 constexpr std::size_t kInputFields = sizeof(MfInput<float>) / sizeof(float);
 constexpr std::size_t kOutputFields = offsetof(MfOutput<float>, status) / sizeof(float);
 static_assert(std::is_standard_layout_v<MfInput<float>> && kInputFields == 7);
+static_assert(offsetof(MfInput<float>, fz_n) == 0 * sizeof(float) &&
+              offsetof(MfInput<float>, kappa) == 1 * sizeof(float) &&
+              offsetof(MfInput<float>, alpha_rad) == 2 * sizeof(float) &&
+              offsetof(MfInput<float>, gamma_rad) == 3 * sizeof(float) &&
+              offsetof(MfInput<float>, vx_mps) == 4 * sizeof(float) &&
+              offsetof(MfInput<float>, phit_1pm) == 5 * sizeof(float) &&
+              offsetof(MfInput<float>, p_pa) == 6 * sizeof(float));
 static_assert(std::is_standard_layout_v<MfOutput<float>> &&
               std::is_standard_layout_v<MfOutput<F4>>);
 static_assert(offsetof(MfOutput<F4>, status) == kOutputFields * sizeof(F4));

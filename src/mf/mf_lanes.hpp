@@ -9,9 +9,9 @@
 //   - The elementary functions the evaluation calls, per lane: atan, sin, cos and tan with tread's
 //     float polynomials (mf_math.hpp), exp and log as Cephes' float polynomials (relative error a
 //     few ulp; errors tested in tests/mf/mf_lanes_test.cpp), pow(x, y) = exp(y·log x) for x > 0
-//     (what the scalar float path does), sqrt as the vector instruction. Angles beyond the
-//     reduction's range, acos and log10 (turn slip and a MF 5.2 fallback only) go lane by lane
-//     through libm.
+//     (the scalar float path's mf_pow does the same with libm's expf/logf; its fz62 calls powf),
+//     sqrt as the vector instruction. Angles beyond the reduction's range and acos (turn slip
+//     only) go lane by lane through libm.
 //   - MfOutput<F4>::status is a Mask4 (lanes whose input left the finite-arithmetic envelope).
 // Not for the ECU's scalar build (Cortex-M4F): there the node evaluates wheel by wheel.
 
@@ -122,9 +122,6 @@ F4 per_lane(F4 x, F f) {
 
 inline F4 acos(F4 x) {
   return per_lane(x, [](float a) { return std::acos(a); });
-}
-inline F4 log10(F4 x) {
-  return per_lane(x, [](float a) { return std::log10(a); });
 }
 
 /// e^x: x = n·ln 2 + r, |r| ≤ ln2/2, Cephes' expf polynomial, 2^n applied in two halves so that

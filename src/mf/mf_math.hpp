@@ -9,13 +9,13 @@
 //   Measured on this x86 host (callgrind and wall time, MF 6.1 combined): branch-free
 //   Cephes-style float sin/cos/exp/log polynomials (commit 0d09488) were no faster than glibc's
 //   FMA sinf/cosf/expf/logf in scalar code, also with -march=haswell, so they were removed.
-//   The Magic Formula's core trig(C·atan(x − E·(x − atan x))) goes through mf_cores, four cores
-//   at a time: for float one pass of four vector lanes (tread's atan, sin and cos on GCC vector
-//   types), ~2x cheaper per core than four scalar passes; for double and Jet the scalar formula,
-//   core by core, so their results do not change by a bit.
+//   The Magic Formula's core trig(C·atan(x − E·(x − atan x))) goes through mf_cores, all (up to
+//   eight) cores of an evaluation at once: for float in passes of four vector lanes (tread's atan,
+//   sin and cos on GCC vector types), ~2x cheaper per core than scalar passes; for double and Jet
+//   the scalar formula, core by core, so their results do not change by a bit (the four-lane
+//   scalar of mf_lanes.hpp has its own mf_cores).
 //   Errors of the float functions: tests/mf/mf_math_test.cpp.
-// Identities used by the evaluation: cos(atan x) = 1/√(1+x²), sin(atan x) = x/√(1+x²), written
-// without overflow for huge x.
+// Identity used by the evaluation: cos(atan x) = 1/√(1+x²), written without overflow for huge x.
 
 #include <bit>
 #include <cmath>

@@ -5,9 +5,10 @@
 // Optional relaxation (mf_transient.hpp): the Magic Formula sees the slips lagging the received
 // (kinematic) ones with the tyre's relaxation lengths; reset() (the node calls it while a wheel is
 // stale) restarts the lag from the next received slips.
-// The node's due wheels go through evaluate_wheels: on targets with vector lanes, wheels that share
-// a tyre and options (the mounted side may differ) are evaluated four at a time
-// (mf::evaluate_four); otherwise, and on the ECU's scalar build, one by one.
+// The node's due wheels go through evaluate_wheels: on targets with vector lanes, when all due
+// wheels share one tyre and its options (the mounted side may differ), they are evaluated in one
+// pass of four lanes (mf::evaluate_four); otherwise (e.g. other tyres on the rear axle), a single
+// due wheel, and on the ECU's scalar build, one by one.
 
 #include <algorithm>
 #include <array>
@@ -65,7 +66,8 @@ class MfTyreChannel {
                               float dt_s, std::span<TyreResult> results) noexcept {
     const std::size_t n = std::min({tyres.size(), inputs.size(), results.size()});
     if constexpr (mf::kVectorLanes) {
-      if (n <= 4 && std::popcount(due) > 1 && same_tyre(tyres.first(n), due)) {
+      const auto in_range = static_cast<unsigned>(due) & ((1U << std::min<std::size_t>(n, 8)) - 1U);
+      if (n <= 4 && std::popcount(in_range) > 1 && same_tyre(tyres.first(n), due)) {
         evaluate_lanes(tyres.first(n), inputs, due, dt_s, results);
         return;
       }

@@ -124,6 +124,7 @@ class Node {
       if (!enabled_) {
         out = proto::WheelOutput{};
         out.status = proto::kStatusDisabled;
+        tyres_[i].reset();  // restart transients cleanly when the node is enabled again
         continue;
       }
       if (!fresh(bit, now_ns)) {

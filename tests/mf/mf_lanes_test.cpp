@@ -507,15 +507,11 @@ TEST(MfLanes, CosAtanRelativeErrorBelow4em7AndLimitZeroForHugeX) {
   EXPECT_EQ(cos_atan(pack(kInf, -kInf, 0.0f, 1.0f))[2], 1.0f);
 }
 
-// ---- acos, log10: libm lane by lane -------------------------------------------------------------
+// ---- acos: libm lane by lane --------------------------------------------------------------------
 
-TEST(MfLanes, AcosAndLog10AreLibmPerLane) {
+TEST(MfLanes, AcosIsLibmPerLane) {
   const F4 a = pack(-1.0f, -0.3f, 0.7f, 1.0f);
-  const F4 b = pack(kDenormMin, 0.2f, 1.0f, 1e30f);
-  for (int k = 0; k < 4; ++k) {
-    EXPECT_EQ(acos(a)[k], std::acos(a[k]));
-    EXPECT_EQ(log10(b)[k], std::log10(b[k]));
-  }
+  for (int k = 0; k < 4; ++k) EXPECT_EQ(acos(a)[k], std::acos(a[k]));
 }
 
 // ---- the Magic Formula cores ------------------------------------------------------------------

@@ -165,9 +165,11 @@ TEST_P(NodeLayout, CommandDisablesEnablesAndResets) {
   Harness h(GetParam());
   const proto::RigData in = h.inputs();
   h.cycle(1 * kMs, in);
+  const int resets_enabled = h.tyres[0].resets;
   static_cast<void>(h.node.receive(h.rig.encode_command({false, false, 0, 0}), 2 * kMs));
   proto::NodeData out = h.cycle(2 * kMs, in);
   EXPECT_EQ(out.wheels[0].status, proto::kStatusDisabled);
+  EXPECT_GT(h.tyres[0].resets, resets_enabled);  // a disabled node restarts transients
   EXPECT_EQ(out.wheels[0].fx_n, 0.0F);
   EXPECT_EQ(out.status.state & proto::kNodeEnabled, 0U);
   static_cast<void>(h.node.receive(h.rig.encode_command({true, true, 0, 0}), 3 * kMs));
