@@ -41,6 +41,7 @@
 #include "mf/mf_types.hpp"
 
 #include <cmath>
+#include <initializer_list>
 #include <type_traits>
 #include <utility>
 
@@ -594,6 +595,23 @@ T fz62(const MfParameters<P>& p, const T& gamma, const T& omega, const T& romega
   return fcorr * (q_fz1 * rho_r0 + p.q_fz2 * rho_r0 * rho_r0) * fz0;
 }
 
+/// TYRESIDE mirroring, y → −y, where `mirror` is set (per lane for lanes): the lateral inputs
+/// (α, γ, φt) on the way in, the lateral outputs on the way out.
+template <typename T, typename M>
+MfInput<T> mirror_input(MfInput<T> in, const M& mirror) {
+  in.alpha_rad = if_else(mirror, -in.alpha_rad, in.alpha_rad);
+  in.gamma_rad = if_else(mirror, -in.gamma_rad, in.gamma_rad);
+  in.phit_1pm = if_else(mirror, -in.phit_1pm, in.phit_1pm);
+  return in;
+}
+template <typename T, typename M>
+void mirror_output(MfOutput<T>& out, const M& mirror) {
+  for (T* y : {&out.fy_n, &out.mx_nm, &out.mz_nm, &out.mzr_nm, &out.alpha_rad, &out.gamma_rad,
+               &out.phit_1pm}) {
+    *y = if_else(mirror, -*y, *y);
+  }
+}
+
 }  // namespace detail
 
 /// Whether a tyre measured as `tyre_side` and mounted on `side` is mirrored (y → −y).
@@ -612,12 +630,7 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
 
   // TYRESIDE mirroring: y → −y.
   const bool mirror = mirrored(options.side, p.tyre_side);
-  MfInput<T> in_raw = input;
-  if (mirror) {
-    in_raw.alpha_rad = -in_raw.alpha_rad;
-    in_raw.gamma_rad = -in_raw.gamma_rad;
-    in_raw.phit_1pm = -in_raw.phit_1pm;
-  }
+  const MfInput<T> in_raw = mirror ? mirror_input(input, true) : input;
 
   const Prepared<T> in = prepare(p, in_raw, options);
   const Basic<T> b = basic(p, in, options);
@@ -888,15 +901,7 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
     }
   }
 
-  if (mirror) {
-    out.fy_n = -out.fy_n;
-    out.mx_nm = -out.mx_nm;
-    out.mz_nm = -out.mz_nm;
-    out.mzr_nm = -out.mzr_nm;
-    out.alpha_rad = -out.alpha_rad;
-    out.gamma_rad = -out.gamma_rad;
-    out.phit_1pm = -out.phit_1pm;
-  }
+  if (mirror) mirror_output(out, true);
   return out;
 }
 

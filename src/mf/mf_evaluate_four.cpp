@@ -79,9 +79,9 @@ TREAD_LANES_FUNCTION void evaluate_four(const MfParameters<float>& params,
                                         const std::array<MountedSide, 4>& sides,
                                         MfOutput<F4>& out) noexcept {
   // Mirroring per wheel: y → −y on the way in and out of its lane.
-  F4 y_sign;
+  lanes::Mask4 mirror;
   for (std::size_t i = 0; i < 4; ++i) {
-    y_sign.v[i] = mirrored(sides[i], params.tyre_side) ? -1.0F : 1.0F;
+    mirror.m[i] = mirrored(sides[i], params.tyre_side) ? -1 : 0;
   }
   // Inputs: floats 0–3 and 3–6 of each wheel, transposed.
   V rows[4];
@@ -91,24 +91,18 @@ TREAD_LANES_FUNCTION void evaluate_four(const MfParameters<float>& params,
   transpose(rows, columns);
   in.fz_n = F4(columns[0]);
   in.kappa = F4(columns[1]);
-  in.alpha_rad = F4(columns[2]) * y_sign;
+  in.alpha_rad = F4(columns[2]);
   load_rows(inputs, 3, rows);
   transpose(rows, columns);
-  in.gamma_rad = F4(columns[0]) * y_sign;
+  in.gamma_rad = F4(columns[0]);
   in.vx_mps = F4(columns[1]);
-  in.phit_1pm = F4(columns[2]) * y_sign;
+  in.phit_1pm = F4(columns[2]);
   in.p_pa = F4(columns[3]);
 
   MfOptions lane_options = options;
   lane_options.side = MountedSide::as_measured;
-  out = evaluate(params, in, lane_options);
-  out.fy_n = out.fy_n * y_sign;
-  out.mx_nm = out.mx_nm * y_sign;
-  out.mz_nm = out.mz_nm * y_sign;
-  out.mzr_nm = out.mzr_nm * y_sign;
-  out.alpha_rad = out.alpha_rad * y_sign;
-  out.gamma_rad = out.gamma_rad * y_sign;
-  out.phit_1pm = out.phit_1pm * y_sign;
+  out = evaluate(params, detail::mirror_input(in, mirror), lane_options);
+  detail::mirror_output(out, mirror);
 }
 
 void evaluate_four(const MfParameters<float>& params, const std::array<MfInput<float>, 4>& inputs,
