@@ -203,15 +203,7 @@ inline F4 mf_atan(F4 x) {
   return F4(detail::fast::atan4(x.v));
 }
 inline F4 mf_tan(F4 x) {
-  const V k = (x.v * 0.636619772367581f + 12582912.0f) - 12582912.0f;
-  const V r = ((x.v - k * 1.5703125f) - k * 4.837512969970703125e-4f) - k * 7.54978995489188e-8f;
-  const VI odd = __builtin_convertvector(k, VI) & 1;
-  const V z = r * r;
-  const V s = r + r * z * (-1.6666654611e-1f + z * (8.3321608736e-3f + z * -1.9515295891e-4f));
-  const V c =
-      1.0f - 0.5f * z +
-      z * z * (4.166664568298827e-2f + z * (-1.388731625493765e-3f + z * 2.443315711809948e-5f));
-  F4 t(odd != 0 ? -c / s : s / c);
+  F4 t(detail::fast::tan4(x.v));
   const Mask4 out_of_range = !(abs(x) <= F4(detail::fast::kTrigMax));
   if (any_lane(out_of_range)) {
     for (int i = 0; i < 4; ++i)

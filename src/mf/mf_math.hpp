@@ -90,20 +90,31 @@ struct Reduced {
   unsigned quadrant;
 };
 
+/// k = rint(x·2/π) and r = x − k·π/2, for a float or four lanes (V).
+template <typename V>
+V quarter_turns_of(V x) {
+  return (x * 0.636619772367581f + 12582912.0f) - 12582912.0f;
+}
+template <typename V>
+V reduce_by(V x, V k) {
+  return ((x - k * 1.5703125f) - k * 4.837512969970703125e-4f) - k * 7.54978995489188e-8f;
+}
+
 inline Reduced reduce_pio2(float x) {
-  const float k = (x * 0.636619772367581f + 12582912.0f) - 12582912.0f;  // rint(x·2/π)
-  const float r = ((x - k * 1.5703125f) - k * 4.837512969970703125e-4f) - k * 7.54978995489188e-8f;
-  return {r, static_cast<unsigned>(static_cast<int>(k))};
+  const float k = quarter_turns_of(x);
+  return {reduce_by(x, k), static_cast<unsigned>(static_cast<int>(k))};
 }
 
 /// sin and cos of the reduced argument r ∈ [−π/4, π/4] (Cephes' minimax polynomials, a few
-/// ulp).
-inline float sin_poly(float r) {
-  const float z = r * r;
+/// ulp), for a float or four lanes (V).
+template <typename V>
+V sin_poly(V r) {
+  const V z = r * r;
   return r + r * z * (-1.6666654611e-1f + z * (8.3321608736e-3f + z * -1.9515295891e-4f));
 }
-inline float cos_poly(float r) {
-  const float z = r * r;
+template <typename V>
+V cos_poly(V r) {
+  const V z = r * r;
   return 1.0f - 0.5f * z +
          z * z * (4.166664568298827e-2f + z * (-1.388731625493765e-3f + z * 2.443315711809948e-5f));
 }
@@ -205,16 +216,20 @@ inline F4 atan4(F4 x) {
 /// sin (quarter_turns 0) or cos (quarter_turns 1) of four lanes with |y| ≤ kTrigMax: the
 /// reduction and polynomials of fast::tan, the quadrant advanced by a quarter turn for cos.
 inline F4 sin_cos4(F4 y, I4 quarter_turns) {
-  const F4 k = (y * 0.636619772367581f + 12582912.0f) - 12582912.0f;  // rint(y·2/π)
-  const F4 r = ((y - k * 1.5703125f) - k * 4.837512969970703125e-4f) - k * 7.54978995489188e-8f;
+  const F4 k = quarter_turns_of(y);
+  const F4 r = reduce_by(y, k);
   const I4 q = __builtin_convertvector(k, I4) + quarter_turns;
-  const F4 z = r * r;
-  const F4 s = r + r * z * (-1.6666654611e-1f + z * (8.3321608736e-3f + z * -1.9515295891e-4f));
-  const F4 c =
-      1.0f - 0.5f * z +
-      z * z * (4.166664568298827e-2f + z * (-1.388731625493765e-3f + z * 2.443315711809948e-5f));
-  const F4 v = (q & 1) != 0 ? c : s;
+  const F4 v = (q & 1) != 0 ? cos_poly(r) : sin_poly(r);
   return std::bit_cast<F4>(I4(std::bit_cast<I4>(v) ^ ((q & 2) << 30)));  // −v in quadrants 2, 3
+}
+
+/// fast::tan on four lanes with |y| ≤ kTrigMax (same reduction and polynomials).
+inline F4 tan4(F4 y) {
+  const F4 k = quarter_turns_of(y);
+  const F4 r = reduce_by(y, k);
+  const F4 s = sin_poly(r);
+  const F4 c = cos_poly(r);
+  return (__builtin_convertvector(k, I4) & 1) != 0 ? -c / s : s / c;
 }
 
 }  // namespace fast
