@@ -4,6 +4,7 @@
 // tested with simple channels and runs with the real ones, without virtual dispatch.
 
 #include <concepts>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 
@@ -36,6 +37,11 @@ concept TyreChannel = requires(T tyre, const proto::WheelInput& input, float dt_
   { tyre.evaluate(input, dt_s) } -> std::same_as<TyreResult>;
   { tyre.reset() } -> std::same_as<void>;
 };
+
+/// Whether wheel i is among the due wheels of a cycle (bit i of `due`).
+constexpr bool is_due(std::uint8_t due, std::size_t i) {
+  return ((static_cast<unsigned>(due) >> i) & 1U) != 0U;
+}
 
 /// A tyre channel type that evaluates the due wheels of a cycle in one call (e.g. four wheels on
 /// vector lanes): results[i] for every bit i of `due`; the node uses it when the type has it.

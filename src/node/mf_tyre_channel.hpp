@@ -73,8 +73,7 @@ class MfTyreChannel {
       }
     }
     for (std::size_t i = 0; i < n; ++i) {
-      if (((static_cast<unsigned>(due) >> i) & 1U) != 0U)
-        results[i] = tyres[i].evaluate(inputs[i], dt_s);
+      if (is_due(due, i)) results[i] = tyres[i].evaluate(inputs[i], dt_s);
     }
   }
 
@@ -119,7 +118,7 @@ class MfTyreChannel {
   static bool same_tyre(std::span<const MfTyreChannel> tyres, std::uint8_t due) noexcept {
     const MfTyreChannel* first = nullptr;
     for (std::size_t i = 0; i < tyres.size(); ++i) {
-      if (((static_cast<unsigned>(due) >> i) & 1U) == 0U) continue;
+      if (!is_due(due, i)) continue;
       const MfTyreChannel& t = tyres[i];
       if (t.params_ == nullptr) return false;
       if (first == nullptr) {
@@ -150,7 +149,7 @@ class MfTyreChannel {
     std::array<bool, 4> clamped{};
     bool need_lengths = false;
     for (std::size_t i = 0; i < tyres.size(); ++i) {
-      if (((static_cast<unsigned>(due) >> i) & 1U) == 0U) continue;
+      if (!is_due(due, i)) continue;
       MfTyreChannel& t = tyres[i];
       if (first == nullptr) first = &t;
       in[i] = t.limited(inputs[i], clamped[i]);
@@ -165,26 +164,24 @@ class MfTyreChannel {
       if (need_lengths) {
         std::array<mf::MfInput<float>, 4> probe = in;
         for (std::size_t i = 0; i < tyres.size(); ++i) {
-          if (((static_cast<unsigned>(due) >> i) & 1U) != 0U)
-            probe[i] = tyres[i].transient_.probe(in[i]);
+          if (is_due(due, i)) probe[i] = tyres[i].transient_.probe(in[i]);
         }
         mf::evaluate_four(*first->params_, probe, first->options_, sides, out);
         for (std::size_t i = 0; i < tyres.size(); ++i) {
           mf::MfTransient<float>& tr = tyres[i].transient_;
-          if (((static_cast<unsigned>(due) >> i) & 1U) != 0U && !tr.has_relaxation_lengths()) {
+          if (is_due(due, i) && !tr.has_relaxation_lengths()) {
             const int lane = static_cast<int>(i);
             tr.set_relaxation_lengths(out.sigmax_m[lane], out.sigmay_m[lane]);
           }
         }
       }
       for (std::size_t i = 0; i < tyres.size(); ++i) {
-        if (((static_cast<unsigned>(due) >> i) & 1U) != 0U)
-          in[i] = tyres[i].transient_.advance(in[i], dt_s);
+        if (is_due(due, i)) in[i] = tyres[i].transient_.advance(in[i], dt_s);
       }
     }
     mf::evaluate_four(*first->params_, in, first->options_, sides, out);
     for (std::size_t i = 0; i < tyres.size(); ++i) {
-      if (((static_cast<unsigned>(due) >> i) & 1U) == 0U) continue;
+      if (!is_due(due, i)) continue;
       const int lane = static_cast<int>(i);
       TyreResult& r = results[i];
       r.fx_n = out.fx_n[lane];

@@ -144,13 +144,12 @@ class Node {
           results);
     } else {
       for (std::size_t i = 0; i < config_.wheels; ++i) {
-        if (((static_cast<unsigned>(due) >> i) & 1U) != 0U)
-          results[i] = tyres_[i].evaluate(latest_.wheels[i], dt_s);
+        if (is_due(due, i)) results[i] = tyres_[i].evaluate(latest_.wheels[i], dt_s);
       }
     }
     for (std::size_t i = 0; i < config_.wheels; ++i) {
       const auto bit = static_cast<std::uint8_t>(1U << i);
-      if ((due & bit) == 0U) continue;
+      if (!is_due(due, i)) continue;
       proto::WheelOutput& out = outputs_.wheels[i];
       const TyreResult& r = results[i];
       out = proto::WheelOutput{r.fx_n, r.fy_n, r.mz_nm, r.mx_nm, r.my_nm, r.rl_m, 0};
