@@ -10,9 +10,11 @@
 #include <iostream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "cli/commands.hpp"
 #include "fit/measurement.hpp"
+#include "fit/mf61_from_mf52.hpp"
 #include "fit/mf_staged_fit.hpp"
 #include "fit/simple_fit.hpp"
 #include "fit/synthetic_measurements.hpp"
@@ -61,6 +63,16 @@ void run_staged(const FitCliState& s) {
   }
   tir::TirFile file = tir::read_tir(s.start);
   mf::MfParameters<double> start = mf::mf_parameters_from_tir(file).params;
+  const bool from_mf52 = model == fit::MfFitModel::mf61 && (start.fit_type == mf::FitType::mf52 ||
+                                                            start.fit_type == mf::FitType::pac2002);
+  if (from_mf52) {
+    std::vector<std::string> notes;
+    start = fit::mf61_start_from_mf52(start, notes);
+    std::cerr << "tread fit: " << s.start
+              << ": a PAC2002 / MF 5.2 start, refitted as MF 6.1 (shared coefficients kept, MF "
+                 "6.1's own at their book values)\n";
+    for (const std::string& n : notes) std::cerr << "tread fit: note: " << n << "\n";
+  }
   fit::check_model(start, model, s.start);
   if (s.neutral_start) start = fit::neutral_start(start, model);
   const fit::MeasurementSet data = fit::load_measurements(s.input);
@@ -70,10 +82,24 @@ void run_staged(const FitCliState& s) {
   if (result.stages.empty()) {
     throw std::runtime_error(data.source + ": no pure-slip sweep with enough points to fit");
   }
+  if (from_mf52) {
+    const std::vector<std::string> removed = fit::rewrite_as_mf61(file, result.params);
+    if (!removed.empty()) {
+      std::cerr << "tread fit: written as FITTYP 61; keys MF 6.1 does not read, removed:";
+      for (const std::string& k : removed) std::cerr << ' ' << k;
+      std::cerr << "\n";
+    }
+  }
   fit::set_fitted_coefficients(file, result);
   tir::write_tir(file, s.output);
   std::cerr << "tread fit: " << result.stages.size() << " stages in " << result.seconds << " s -> "
             << s.output << "\n";
+  for (const auto& st : fit::final_stats(result, data)) {
+    std::cerr << "tread fit: fit error " << fit::fit_channel_name(st.channel)
+              << " at Fz = " << st.fz_n << " N: RMS " << st.rms << ' '
+              << fit::fit_channel_unit(st.channel) << ", R² " << st.r2 << " (" << st.points
+              << " points)\n";
+  }
   if (!s.report.empty()) {
     std::ofstream out(s.report);
     fit::write_staged_report(result, data, out);
@@ -130,7 +156,8 @@ void add_fit_command(CLI::App& app) {
   static FitCliState state;
   fit->add_option("--model", state.model,
                   "simple (Stage 1: basic formula per load), mf61 or pac2002 (Stage 2: staged "
-                  "pure and combined slip coefficient set; pac2002 also for MF 5.2 files)")
+                  "pure and combined slip coefficient set; pac2002 also for MF 5.2 files; mf61 "
+                  "also from a PAC2002 / MF 5.2 --start, written as an MF 6.1 file)")
       ->check(CLI::IsMember({"simple", "pac2002", "mf61"}))
       ->capture_default_str();
   fit->add_option("--input", state.input, "measurements: .csv (tread mf eval columns) or .tdx")
