@@ -18,6 +18,7 @@
 #include "fit/mf_staged_fit.hpp"
 #include "fit/simple_fit.hpp"
 #include "fit/synthetic_measurements.hpp"
+#include "mf/input_table.hpp"
 #include "mf/mf_parameters_from_tir.hpp"
 #include "tir/tir_file.hpp"
 
@@ -31,7 +32,12 @@ struct FitCliState {
   double noise = 0.01;
   bool asymmetric_e = false;
   bool neutral_start = false;
+  std::string convention = "iso-w";
 };
+
+mf::SignConvention convention_of(const FitCliState& s) {
+  return *mf::parse_sign_convention(s.convention);
+}
 
 void progress_line(const std::string& line) {
   std::cerr << "tread fit: " << line << "\n";
@@ -75,7 +81,7 @@ void run_staged(const FitCliState& s) {
   }
   fit::check_model(start, model, s.start);
   if (s.neutral_start) start = fit::neutral_start(start, model);
-  const fit::MeasurementSet data = fit::load_measurements(s.input);
+  const fit::MeasurementSet data = fit::load_measurements(s.input, convention_of(s));
   std::cerr << "tread fit: " << data.points.size() << " points from " << data.source << "; staged "
             << s.model << " fit\n";
   const fit::StagedFit result = fit::fit_mf_staged(data, start, model, progress_line);
@@ -127,7 +133,7 @@ void run_fit(const FitCliState& s) {
                              ": --model simple writes the per-load constants as .csv (a .tir needs "
                              "a full coefficient set: --model mf61 or pac2002)");
   }
-  const fit::MeasurementSet data = fit::load_measurements(s.input);
+  const fit::MeasurementSet data = fit::load_measurements(s.input, convention_of(s));
   std::cerr << "tread fit: " << data.points.size() << " points from " << data.source << "\n";
   fit::SimpleFitSettings settings;
   settings.asymmetric_e = s.asymmetric_e;
@@ -154,13 +160,27 @@ void run_fit(const FitCliState& s) {
 void add_fit_command(CLI::App& app) {
   auto* fit = app.add_subcommand("fit", "Fit Magic Formula coefficients to measurements");
   static FitCliState state;
+  fit->footer(
+      "Axes: ISO-W (TYDEX W, as tread mf eval and MFeval): x forward, y left, z up; load Fz > 0; "
+      "alpha > 0 when the contact patch moves towards +y (a normal tyre gives Fy < 0, Mz > 0); SI "
+      "units. Measurements in other axes: --convention. Written .tir files and synthetic "
+      "measurements are ISO-W.");
+  fit->add_option("--convention", state.convention,
+                  "sign convention of a CSV --input: iso-w (default), sae (SAE J670, e.g. FSAE "
+                  "TTC data: Fz, alpha, Fy, My, Mz change sign), adapted-iso (alpha, Fy, Mz "
+                  "change sign); .tdx files are TYDEX W (ISO-W)")
+      ->check(CLI::IsMember({"iso-w", "sae", "adapted-iso"}))
+      ->capture_default_str();
   fit->add_option("--model", state.model,
                   "simple (Stage 1: basic formula per load), mf61 or pac2002 (Stage 2: staged "
                   "pure and combined slip coefficient set; pac2002 also for MF 5.2 files; mf61 "
                   "also from a PAC2002 / MF 5.2 --start, written as an MF 6.1 file)")
       ->check(CLI::IsMember({"simple", "pac2002", "mf61"}))
       ->capture_default_str();
-  fit->add_option("--input", state.input, "measurements: .csv (tread mf eval columns) or .tdx")
+  fit->add_option("--input", state.input,
+                  "measurements: .csv (the input columns tread mf eval accepts, e.g. Fz_N|FZ, "
+                  "kappa|SL, alpha_rad|alpha_deg|SA, gamma_rad|IA, Vx_mps|V, and Fx_N|FX, "
+                  "Fy_N|FY, Mz_Nm|MZ) or .tdx")
       ->check(CLI::ExistingFile);
   fit->add_option("--output", state.output,
                   "result: per-load constants (.csv) for simple, a .tir for mf61/pac2002, the "
