@@ -24,11 +24,12 @@
 // Sign conventions (the file's, converted to ISO-W = TYDEX W, the axes of MFeval and of every
 // tread tyre command). ISO-W: x forward in the wheel plane, y left, z up; the load Fz is positive;
 // α is positive when the contact patch travels towards +y (a normal tyre then gives Fy < 0 and
-// Mz > 0); γ is positive when the wheel top leans towards +y.
+// Mz > 0); γ is a right-hand rotation about x: positive when the wheel top leans towards −y (to
+// the right, looking forward; camber thrust then pushes towards −y).
 //  - iso-w: taken as they are.
 //  - sae (SAE J670: y right, z down — the FSAE TTC data): the axes are ISO-W turned half a turn
-//    about x, so Fz and α change sign (the load column holds negative numbers), κ and γ (an angle
-//    about the shared x axis) do not.
+//    about x, so Fz and α change sign (the load column holds negative numbers); κ and γ do not (γ
+//    is a rotation about the shared x axis: in both, positive with the wheel top to the right).
 //  - adapted-iso (Pacejka's book, the PAC89/PAC94 "adapted" axes: positive α gives positive Fy):
 //    α changes sign, nothing else.
 // Forces and moments measured in the file (for the fitter) change sign by the same rule: Fy, Fz,
