@@ -1,9 +1,11 @@
 // `tread pac plot`: draw PAC89/PAC94 curves (Fx(κ), Fy(α), Mz(α) at several loads, combined-slip
 // envelope) from a Chrono JSON coefficient file or an Adams .tir file, to PNG or SVG via gnuplot.
 // `tread pac eval`: evaluate them on a CSV of inputs. Both in ISO-W axes by default, as `tread mf`.
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -27,6 +29,40 @@ constexpr const char* kPacAxesNote =
     "Mz of the other sign); --axes model shows those.";
 
 void add_pac_eval(CLI::App* pac);
+
+// The coefficients PAC89 needs (PAC94 adds A14…A17, B11…B13, C18…C20).
+bool pac89_key(const std::string& missing_entry) {
+  const std::string key = missing_entry.substr(missing_entry.find('.') + 1);
+  if (key.size() < 2) return false;
+  const char set = static_cast<char>(std::toupper(static_cast<unsigned char>(key[0])));
+  const std::string digits = key.substr(1);
+  if (digits.find_first_not_of("0123456789") != std::string::npos) return false;
+  const int n = std::stoi(digits);
+  return (set == 'A' && n <= 13) || (set == 'B' && n <= 10) || (set == 'C' && n <= 17);
+}
+
+// Loads the coefficients; a source without any PAC89 coefficient (e.g. an MF file) is an error,
+// not a tyre of zeros.
+tir::PacCoefficients load_pac(const std::string& json, const std::string& tir_path,
+                              const char* command) {
+  const std::string source = json.empty() ? tir_path : json;
+  auto coeff =
+      json.empty() ? tir::pac_from_tir(tir::read_tir(tir_path)) : tir::pac_from_chrono_json(json);
+  std::size_t missing89 = 0;
+  for (const std::string& m : coeff.missing) missing89 += pac89_key(m) ? 1U : 0U;
+  constexpr std::size_t kPac89Count = 14 + 11 + 18;
+  if (missing89 == kPac89Count) {
+    throw std::runtime_error(source +
+                             ": no PAC89/PAC94 coefficients (A0…A13, B0…B10, C0…C17); a Magic "
+                             "Formula file goes to tread mf");
+  }
+  if (!coeff.missing.empty()) {
+    std::cerr << command << ": warning: " << source << ": " << coeff.missing.size()
+              << " coefficients missing, taken as 0 (" << missing89
+              << " of them PAC89's; first: " << coeff.missing.front() << ")\n";
+  }
+  return coeff;
+}
 
 void add_pac_command(CLI::App& app) {
   auto* pac = app.add_subcommand("pac", "PAC89 / PAC94 tyre models");
@@ -57,12 +93,7 @@ void add_pac_command(CLI::App& app) {
       ->check(CLI::IsMember({"iso-w", "model"}))
       ->capture_default_str();
   plot->callback([] {
-    const auto coeff = opt.json.empty() ? tir::pac_from_tir(tir::read_tir(opt.tir))
-                                        : tir::pac_from_chrono_json(opt.json);
-    if (!coeff.missing.empty()) {
-      std::cerr << "tread pac plot: " << coeff.missing.size()
-                << " coefficients missing, taken as 0 (first: " << coeff.missing.front() << ")\n";
-    }
+    const auto coeff = load_pac(opt.json, opt.tir, "tread pac plot");
     tir::PacPlotOptions po;
     po.model = opt.model == 94 ? tir::PacModel::kPac94 : tir::PacModel::kPac89;
     po.loads_n = opt.loads;
@@ -123,8 +154,7 @@ void add_pac_eval(CLI::App* pac) {
       ->check(CLI::ExistingFile);
   eval->add_option("--output", opt.output, "CSV to write")->required();
   eval->callback([] {
-    const auto coeff = opt.json.empty() ? tir::pac_from_tir(tir::read_tir(opt.tir))
-                                        : tir::pac_from_chrono_json(opt.json);
+    const auto coeff = load_pac(opt.json, opt.tir, "tread pac eval");
     tir::PacCsvOptions o;
     o.model = opt.model == 94 ? tir::PacModel::kPac94 : tir::PacModel::kPac89;
     o.slip = opt.pure ? pac::Slip::kPure : pac::Slip::kCombined;
