@@ -5,6 +5,9 @@
 #include <cmath>
 #include <span>
 
+#include "tir/tir_keys.hpp"
+#include "tir/tir_units.hpp"
+
 namespace tread::mf {
 
 namespace {
@@ -25,13 +28,26 @@ std::string upper(std::string text) {
 MfTirParameters mf_parameters_from_tir(const tir::TirFile& file) {
   MfTirParameters result;
   const tir::ResolvedValues resolved = tir::resolve_numbers(file, std::span(kKeys));
+  // [UNITS]: values read from the file are converted to SI (defaults are SI already).
+  const tir::UnitSystem units = tir::read_units(file);
+  std::vector<double> values = resolved.values;
+  for (std::size_t k = 0; k < kKeys.size(); ++k) {
+    const tir::KeyInfo* info = tir::find_key_info(kKeys[k].key);
+    if (info != nullptr && file.find_any(kKeys[k].key) != nullptr) {
+      values[k] *= units.to_si(info->dimension);
+    }
+  }
   std::size_t i = 0;
 #define TREAD_MF_ASSIGN(member, section, key, value, description) \
-  result.params.member = resolved.values[i++];
+  result.params.member = values[i++];
   TREAD_MF_PARAMETER_LIST(TREAD_MF_ASSIGN)
 #undef TREAD_MF_ASSIGN
   result.missing = resolved.missing;
   result.warning = resolved.warning(file.origin());
+  for (const auto& w : file.warnings()) {
+    if (!result.warning.empty()) result.warning += "\n";
+    result.warning += w;
+  }
 
   const std::optional<double> fittyp = file.number_any("FITTYP");
   if (!fittyp) {

@@ -6,6 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "tir/tir_units.hpp"
+
 namespace tread::tir {
 
 namespace {
@@ -36,7 +38,7 @@ void write_set(TirFile& f, const char* section, char letter, const std::array<do
 }
 
 double optional_any(const TirFile& f, const char* key, std::vector<std::string>& missing) {
-  if (const auto v = f.number_any(key)) return *v;
+  if (const auto v = number_si(f, read_units(f), "", key)) return *v;
   missing.emplace_back(key);
   return 0.0;
 }
@@ -62,9 +64,9 @@ void pac_to_tir(const pac::PacParams<double>& p, TirFile& file) {
   write_set(file, kLat, 'A', p.a);
   write_set(file, kLon, 'B', p.b);
   write_set(file, kAli, 'C', p.c);
-  file.set("DIMENSION", "UNLOADED_RADIUS", p.unloaded_radius_m);
+  set_si(file, "DIMENSION", "UNLOADED_RADIUS", p.unloaded_radius_m);
   file.set("PAC_EXTRA", "ROLLING_RESISTANCE", p.rolling_resistance);
-  file.set("PAC_EXTRA", "LATERAL_STIFFNESS", p.lateral_stiffness_npm);
+  set_si(file, "PAC_EXTRA", "LATERAL_STIFFNESS", p.lateral_stiffness_npm);
 }
 
 PacCoefficients pac_from_chrono_json(const std::filesystem::path& path) {
