@@ -12,12 +12,30 @@
 #include "tir/pac_csv.hpp"
 #include "tir/pac_plot.hpp"
 #include "tir/tir_file.hpp"
+#include "tir/tir_model.hpp"
 
 namespace tread::cli {
 
 namespace {
 
 void add_pac_eval(CLI::App* pac);
+
+bool explicit_model(const CLI::App* app) {
+  return app->count("--model") > 0;
+}
+
+// --model if given, else the model the .tir declares (PAC89 for a Chrono JSON). A .tir that says
+// PAC94 evaluated with --model 89 drops its PAC94 terms: said on stderr.
+tir::PacModel model_for(const tir::PacCoefficients& coeff, int model, bool given, bool from_tir) {
+  if (!given) {
+    return from_tir && coeff.pac94 ? tir::PacModel::kPac94 : tir::PacModel::kPac89;
+  }
+  if (from_tir && coeff.pac94 && model == 89) {
+    std::cerr << "tread pac: warning: the file is PAC94; --model 89 ignores its A14…A17, B11…B13, "
+                 "C18…C20\n";
+  }
+  return model == 94 ? tir::PacModel::kPac94 : tir::PacModel::kPac89;
+}
 
 void add_pac_command(CLI::App& app) {
   auto* pac = app.add_subcommand("pac", "PAC89 / PAC94 tyre models");
@@ -36,22 +54,23 @@ void add_pac_command(CLI::App& app) {
   src->add_option("--json", opt.json, "Chrono Pac89Tire JSON coefficient file")
       ->check(CLI::ExistingFile);
   src->add_option("--tir", opt.tir, "Adams PAC89/PAC94 .tir file")->check(CLI::ExistingFile);
-  plot->add_option("--model", opt.model, "89 or 94")
+  plot->add_option("--model", opt.model, "89 or 94 (default: what the .tir declares, else 89)")
       ->check(CLI::IsMember({89, 94}))
       ->capture_default_str();
   plot->add_option("--loads", opt.loads, "wheel loads in N")->capture_default_str();
   plot->add_option("--output,-o", opt.output, ".png or .svg")->capture_default_str();
-  plot->callback([] {
-    const auto coeff = opt.json.empty() ? tir::pac_from_tir(tir::read_tir(opt.tir))
+  plot->callback([plot] {
+    const auto coeff = opt.json.empty() ? tir::pac_from_tir(tir::read_tyre_property_file(opt.tir))
                                         : tir::pac_from_chrono_json(opt.json);
+    const tir::PacModel model = model_for(coeff, opt.model, explicit_model(plot), opt.json.empty());
     if (!coeff.missing.empty()) {
       std::cerr << "tread pac plot: " << coeff.missing.size()
                 << " coefficients missing, taken as 0 (first: " << coeff.missing.front() << ")\n";
     }
     tir::PacPlotOptions po;
-    po.model = opt.model == 94 ? tir::PacModel::kPac94 : tir::PacModel::kPac89;
+    po.model = model;
     po.loads_n = opt.loads;
-    po.title = (opt.model == 94 ? "PAC94 " : "PAC89 ") +
+    po.title = (model == tir::PacModel::kPac94 ? "PAC94 " : "PAC89 ") +
                std::filesystem::path(opt.json.empty() ? opt.tir : opt.json).filename().string();
     host::run_gnuplot(tir::pac_plot_script(coeff.params, po, opt.output), opt.output);
     std::cout << "wrote " << opt.output << '\n';
@@ -75,7 +94,7 @@ void add_pac_eval(CLI::App* pac) {
   src->add_option("--json", opt.json, "Chrono Pac89Tire JSON coefficient file")
       ->check(CLI::ExistingFile);
   src->add_option("--tir", opt.tir, "Adams PAC89/PAC94 .tir file")->check(CLI::ExistingFile);
-  eval->add_option("--model", opt.model, "89 or 94")
+  eval->add_option("--model", opt.model, "89 or 94 (default: what the .tir declares, else 89)")
       ->check(CLI::IsMember({89, 94}))
       ->capture_default_str();
   eval->add_flag("--pure", opt.pure, "pure slip (default: combined)");
@@ -85,11 +104,11 @@ void add_pac_eval(CLI::App* pac) {
       ->required()
       ->check(CLI::ExistingFile);
   eval->add_option("--output", opt.output, "CSV to write")->required();
-  eval->callback([] {
-    const auto coeff = opt.json.empty() ? tir::pac_from_tir(tir::read_tir(opt.tir))
+  eval->callback([eval] {
+    const auto coeff = opt.json.empty() ? tir::pac_from_tir(tir::read_tyre_property_file(opt.tir))
                                         : tir::pac_from_chrono_json(opt.json);
     tir::PacCsvOptions o;
-    o.model = opt.model == 94 ? tir::PacModel::kPac94 : tir::PacModel::kPac89;
+    o.model = model_for(coeff, opt.model, explicit_model(eval), opt.json.empty());
     o.slip = opt.pure ? pac::Slip::kPure : pac::Slip::kCombined;
     o.use_float = opt.use_float;
     o.iso_w = opt.iso_w;

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "tir/tir_model.hpp"
 #include "tir/tir_units.hpp"
 
 namespace tread::tir {
@@ -46,10 +47,24 @@ double optional_any(const TirFile& f, const char* key, std::vector<std::string>&
 }  // namespace
 
 PacCoefficients pac_from_tir(const TirFile& file) {
+  const DetectedModel model = detect_model(file);
+  if (model.is_magic_formula()) {
+    const Entry* e = file.find_any("FITTYP");
+    throw TirError(file.origin(), e != nullptr ? e->line : 0,
+                   "this is " + std::string(model.name.rfind("MF", 0) == 0 ? "an " : "a ") +
+                       model.name + " file, not PAC89/PAC94: use tread mf eval");
+  }
   PacCoefficients out;
+  out.pac94 = model.model == TirModel::kPac94;
   read_set(file, kLat, 'A', out.params.a, out.missing);
   read_set(file, kLon, 'B', out.params.b, out.missing);
   read_set(file, kAli, 'C', out.params.c, out.missing);
+  const std::size_t total = out.params.a.size() + out.params.b.size() + out.params.c.size();
+  if (out.missing.size() == total) {
+    throw TirError(file.origin(), 0,
+                   "no PAC coefficients: expected [LATERAL_COEFFICIENTS] A0…, "
+                   "[LONGITUDINAL_COEFFICIENTS] B0…, [ALIGNING_COEFFICIENTS] C0…");
+  }
   out.params.unloaded_radius_m = optional_any(file, "UNLOADED_RADIUS", out.missing);
   out.params.rolling_resistance = optional_any(file, "ROLLING_RESISTANCE", out.missing);
   out.params.lateral_stiffness_npm = optional_any(file, "LATERAL_STIFFNESS", out.missing);
