@@ -5,6 +5,7 @@
 #include <cmath>
 #include <span>
 
+#include "mf/mf_parameter_checks.hpp"
 #include "tir/tir_keys.hpp"
 #include "tir/tir_model.hpp"
 #include "tir/tir_units.hpp"
@@ -105,6 +106,7 @@ MfTirParameters mf_parameters_from_tir(const tir::TirFile& file) {
 
   const std::optional<std::string> side = file.text_any("TYRESIDE");
   result.params.tyre_side = side && upper(*side) == "RIGHT" ? TyreSide::right : TyreSide::left;
+  check_mf_parameters(result.params, file, result.warning);
   return result;
 }
 

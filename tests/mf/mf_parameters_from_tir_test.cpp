@@ -155,6 +155,37 @@ TEST(MfParametersFromTir, FileWarningsAreForwarded) {
             std::string::npos);
 }
 
+// Defective parameters are errors naming the key and file:line, never NaN outputs later.
+TEST(MfParametersFromTir, DefectiveParametersAreRefused) {
+  expect_refused("defective_zero_vertical_stiffness.tir", 6, "VERTICAL_STIFFNESS = 0 must be > 0");
+  expect_refused("defective_zero_reff.tir", 6, "BREFF, DREFF and FREFF are all 0");
+  expect_refused("defective_zero_fnomin.tir", 5, "FNOMIN = 0 must be > 0");
+  expect_refused("defective_fz_range.tir", 7, "FZMAX = 100 is not above FZMIN = 9000");
+  const auto refused = [](const std::string& text) {
+    try {
+      (void)mf_parameters_from_tir(tir::parse_tir(text, "d.tir"));
+    } catch (const tir::TirError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(refused("[M]\nFITTYP = 61\nPCX1 = 1.6\nNOMPRES = -1\nINFLPRES = 1e5\n"),
+            "d.tir:4: NOMPRES = -1 must be > 0 (the pressure terms divide by it)");
+  EXPECT_EQ(refused("[M]\nFITTYP = 61\nPCX1 = 1.6\nPCY1 = 0\n"),
+            "d.tir:4: PCY1 · LCY = 0: the Fy stiffness factor By = Ky/(Cy·Dy) divides by it");
+  EXPECT_EQ(refused("[M]\nFITTYP = 6\nPCX1 = 1.6\nLONGVL = 0\n"),
+            "d.tir:4: LONGVL = 0 must be > 0 (speeds are taken relative to it)");
+  EXPECT_EQ(refused("[M]\nFITTYP = 6\nPCX1 = 1.6\nALPMIN = 0.5\nALPMAX = 0.5\n"),
+            "d.tir:5: ALPMAX = 0.5 is not above ALPMIN = 0.5 (the range is empty)");
+  // MF 5.2 has no pressure terms: a zero NOMPRES there is not an error.
+  EXPECT_EQ(refused("[M]\nFITTYP = 6\nPCX1 = 1.6\nNOMPRES = 0\n"), "accepted");
+  const MfTirParameters w = mf_parameters_from_tir(
+      tir::parse_tir("[M]\nFITTYP = 6\nPCX1 = 1.6\nVXLOW = 0\nFNOMIN = 50\n", "w.tir"));
+  EXPECT_NE(w.warning.find("w.tir:4: VXLOW = 0"), std::string::npos) << w.warning;
+  EXPECT_NE(w.warning.find("w.tir:5: FNOMIN = 50 lies outside FZMIN"), std::string::npos)
+      << w.warning;
+}
+
 TEST(MfParametersFromTir, NonNumericValueIsAnError) {
   const tir::TirFile f =
       tir::parse_tir("[MODEL]\nFITTYP = 61\n[VERTICAL]\nFNOMIN = 'heavy'\n", "b.tir");
