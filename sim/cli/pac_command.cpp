@@ -17,6 +17,7 @@
 #include "tir/pac_csv.hpp"
 #include "tir/pac_plot.hpp"
 #include "tir/tir_file.hpp"
+#include "tir/tir_model.hpp"
 
 namespace tread::cli {
 
@@ -46,8 +47,9 @@ bool pac89_key(const std::string& missing_entry) {
 tir::PacCoefficients load_pac(const std::string& json, const std::string& tir_path,
                               const char* command) {
   const std::string source = json.empty() ? tir_path : json;
-  auto coeff =
-      json.empty() ? tir::pac_from_tir(tir::read_tir(tir_path)) : tir::pac_from_chrono_json(json);
+  // pac_from_tir refuses a Magic Formula file and a file without any PAC coefficient.
+  auto coeff = json.empty() ? tir::pac_from_tir(tir::read_tyre_property_file(tir_path))
+                            : tir::pac_from_chrono_json(json);
   std::size_t missing89 = 0;
   for (const std::string& m : coeff.missing) missing89 += pac89_key(m) ? 1U : 0U;
   constexpr std::size_t kPac89Count = 14 + 11 + 18;
@@ -62,6 +64,23 @@ tir::PacCoefficients load_pac(const std::string& json, const std::string& tir_pa
               << " of them PAC89's; first: " << coeff.missing.front() << ")\n";
   }
   return coeff;
+}
+
+bool explicit_model(const CLI::App* app) {
+  return app->count("--model") > 0;
+}
+
+// --model if given, else the model the .tir declares (PAC89 for a Chrono JSON). A .tir that says
+// PAC94 evaluated with --model 89 drops its PAC94 terms: said on stderr.
+tir::PacModel model_for(const tir::PacCoefficients& coeff, int model, bool given, bool from_tir) {
+  if (!given) {
+    return from_tir && coeff.pac94 ? tir::PacModel::kPac94 : tir::PacModel::kPac89;
+  }
+  if (from_tir && coeff.pac94 && model == 89) {
+    std::cerr << "tread pac: warning: the file is PAC94; --model 89 ignores its A14…A17, B11…B13, "
+                 "C18…C20\n";
+  }
+  return model == 94 ? tir::PacModel::kPac94 : tir::PacModel::kPac89;
 }
 
 void add_pac_command(CLI::App& app) {
@@ -84,7 +103,7 @@ void add_pac_command(CLI::App& app) {
   src->add_option("--json", opt.json, "Chrono Pac89Tire JSON coefficient file")
       ->check(CLI::ExistingFile);
   src->add_option("--tir", opt.tir, "Adams PAC89/PAC94 .tir file")->check(CLI::ExistingFile);
-  plot->add_option("--model", opt.model, "89 or 94")
+  plot->add_option("--model", opt.model, "89 or 94 (default: what the .tir declares, else 89)")
       ->check(CLI::IsMember({89, 94}))
       ->capture_default_str();
   plot->add_option("--loads", opt.loads, "wheel loads in N")->capture_default_str();
@@ -92,13 +111,14 @@ void add_pac_command(CLI::App& app) {
   plot->add_option("--axes", opt.axes, "iso-w (default, as tread mf plot) or model")
       ->check(CLI::IsMember({"iso-w", "model"}))
       ->capture_default_str();
-  plot->callback([] {
+  plot->callback([plot] {
     const auto coeff = load_pac(opt.json, opt.tir, "tread pac plot");
+    const tir::PacModel model = model_for(coeff, opt.model, explicit_model(plot), opt.json.empty());
     tir::PacPlotOptions po;
-    po.model = opt.model == 94 ? tir::PacModel::kPac94 : tir::PacModel::kPac89;
+    po.model = model;
     po.loads_n = opt.loads;
     po.iso_w = opt.axes == "iso-w";
-    po.title = (opt.model == 94 ? "PAC94 " : "PAC89 ") +
+    po.title = (model == tir::PacModel::kPac94 ? "PAC94 " : "PAC89 ") +
                std::filesystem::path(opt.json.empty() ? opt.tir : opt.json).filename().string();
     host::run_gnuplot(tir::pac_plot_script(coeff.params, po, opt.output), opt.output);
     std::cout << "wrote " << opt.output << '\n';
@@ -126,7 +146,7 @@ void add_pac_eval(CLI::App* pac) {
   src->add_option("--json", opt.json, "Chrono Pac89Tire JSON coefficient file")
       ->check(CLI::ExistingFile);
   src->add_option("--tir", opt.tir, "Adams PAC89/PAC94 .tir file")->check(CLI::ExistingFile);
-  eval->add_option("--model", opt.model, "89 or 94")
+  eval->add_option("--model", opt.model, "89 or 94 (default: what the .tir declares, else 89)")
       ->check(CLI::IsMember({89, 94}))
       ->capture_default_str();
   eval->add_flag("--pure", opt.pure, "pure slip (default: combined)");
@@ -153,10 +173,10 @@ void add_pac_eval(CLI::App* pac) {
       ->required()
       ->check(CLI::ExistingFile);
   eval->add_option("--output", opt.output, "CSV to write")->required();
-  eval->callback([] {
+  eval->callback([eval] {
     const auto coeff = load_pac(opt.json, opt.tir, "tread pac eval");
     tir::PacCsvOptions o;
-    o.model = opt.model == 94 ? tir::PacModel::kPac94 : tir::PacModel::kPac89;
+    o.model = model_for(coeff, opt.model, explicit_model(eval), opt.json.empty());
     o.slip = opt.pure ? pac::Slip::kPure : pac::Slip::kCombined;
     o.use_float = opt.use_float;
     o.iso_w = opt.iso_w || opt.axes == "iso-w";

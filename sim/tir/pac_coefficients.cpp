@@ -6,6 +6,9 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "tir/tir_model.hpp"
+#include "tir/tir_units.hpp"
+
 namespace tread::tir {
 
 namespace {
@@ -36,7 +39,7 @@ void write_set(TirFile& f, const char* section, char letter, const std::array<do
 }
 
 double optional_any(const TirFile& f, const char* key, std::vector<std::string>& missing) {
-  if (const auto v = f.number_any(key)) return *v;
+  if (const auto v = number_si(f, read_units(f), "", key)) return *v;
   missing.emplace_back(key);
   return 0.0;
 }
@@ -44,10 +47,24 @@ double optional_any(const TirFile& f, const char* key, std::vector<std::string>&
 }  // namespace
 
 PacCoefficients pac_from_tir(const TirFile& file) {
+  const DetectedModel model = detect_model(file);
+  if (model.is_magic_formula()) {
+    const Entry* e = file.find_any("FITTYP");
+    throw TirError(file.origin(), e != nullptr ? e->line : 0,
+                   "this is " + std::string(model.name.rfind("MF", 0) == 0 ? "an " : "a ") +
+                       model.name + " file, not PAC89/PAC94: use tread mf eval");
+  }
   PacCoefficients out;
+  out.pac94 = model.model == TirModel::kPac94;
   read_set(file, kLat, 'A', out.params.a, out.missing);
   read_set(file, kLon, 'B', out.params.b, out.missing);
   read_set(file, kAli, 'C', out.params.c, out.missing);
+  const std::size_t total = out.params.a.size() + out.params.b.size() + out.params.c.size();
+  if (out.missing.size() == total) {
+    throw TirError(file.origin(), 0,
+                   "no PAC coefficients: expected [LATERAL_COEFFICIENTS] A0…, "
+                   "[LONGITUDINAL_COEFFICIENTS] B0…, [ALIGNING_COEFFICIENTS] C0…");
+  }
   out.params.unloaded_radius_m = optional_any(file, "UNLOADED_RADIUS", out.missing);
   out.params.rolling_resistance = optional_any(file, "ROLLING_RESISTANCE", out.missing);
   out.params.lateral_stiffness_npm = optional_any(file, "LATERAL_STIFFNESS", out.missing);
@@ -62,9 +79,9 @@ void pac_to_tir(const pac::PacParams<double>& p, TirFile& file) {
   write_set(file, kLat, 'A', p.a);
   write_set(file, kLon, 'B', p.b);
   write_set(file, kAli, 'C', p.c);
-  file.set("DIMENSION", "UNLOADED_RADIUS", p.unloaded_radius_m);
+  set_si(file, "DIMENSION", "UNLOADED_RADIUS", p.unloaded_radius_m);
   file.set("PAC_EXTRA", "ROLLING_RESISTANCE", p.rolling_resistance);
-  file.set("PAC_EXTRA", "LATERAL_STIFFNESS", p.lateral_stiffness_npm);
+  set_si(file, "PAC_EXTRA", "LATERAL_STIFFNESS", p.lateral_stiffness_npm);
 }
 
 PacCoefficients pac_from_chrono_json(const std::filesystem::path& path) {

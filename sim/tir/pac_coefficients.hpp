@@ -3,9 +3,11 @@
 //
 // .tir (Adams PAC89/PAC94 property files): [LATERAL_COEFFICIENTS] A0…A17,
 // [LONGITUDINAL_COEFFICIENTS] B0…B13, [ALIGNING_COEFFICIENTS] C0…C20 (keys case-insensitive);
-// optional anywhere: UNLOADED_RADIUS, ROLLING_RESISTANCE, LATERAL_STIFFNESS. Missing coefficients
-// are 0 (a PAC89 file has no A14…A17, B11…B13, C18…C20, which makes PAC94 reduce to PAC89) and are
-// listed in `missing`.
+// optional anywhere: UNLOADED_RADIUS, ROLLING_RESISTANCE, LATERAL_STIFFNESS (the first and last
+// converted to SI by [UNITS]). Missing coefficients are 0 (a PAC89 file has no A14…A17, B11…B13,
+// C18…C20, which makes PAC94 reduce to PAC89) and are listed in `missing`. The model comes from
+// tir::detect_model(): a Magic Formula file is refused ("use tread mf eval"), and so is a file
+// without a single PAC coefficient.
 //
 // Chrono JSON (Pac89Tire template, e.g. chrono_HMMWV_Pac89Tire.json; `//` comments allowed):
 // "Lateral Coefficients" {"a0"…}, "Longitudinal Coefficients" {"b0"…}, "Aligning Coefficients"
@@ -23,6 +25,7 @@ namespace tread::tir {
 struct PacCoefficients {
   pac::PacParams<double> params;
   std::vector<std::string> missing;  ///< keys that took their default (0)
+  bool pac94 = false;  ///< the .tir says PAC94 (PROPERTY_FILE_FORMAT, or A14…/B11…/C18… present)
   /// TYRESIDE from the .tir in upper case ('LEFT', 'RIGHT', 'SYMMETRIC'), empty if absent; apply
   /// pac::mirror_pac89/mirror_pac94 (pac/pac_mirror.hpp) for a tyre on the other side.
   std::string tyreside;

@@ -110,13 +110,39 @@ std::string entry_line(const Entry& e) {
   return out;
 }
 
-void write_line(std::string& out, const Line& l) {
+void write_line(std::string& out, const Line& l, const std::string& eol) {
   if (l.kind == Line::Kind::kEntry) {
     out += l.entry.source.empty() ? entry_line(l.entry) : l.entry.source;
   } else {
     out += l.text;
   }
-  out += '\n';
+  out += eol;
+}
+
+// True for an Adams sub-block header such as `(COMMENTS)`.
+bool is_block_header(std::string_view t) noexcept {
+  if (t.size() < 3 || t.front() != '(' || t.back() != ')') return false;
+  const std::string_view name = t.substr(1, t.size() - 2);
+  return std::all_of(name.begin(), name.end(), is_key_char);
+}
+
+// True for the lines inside such a block: `{column names}` or a quoted text line.
+bool is_block_body(std::string_view t) noexcept {
+  if (t.empty()) return false;
+  if (t.front() == '{') return t.find('}') != std::string_view::npos;
+  if (t.front() == '\'' || t.front() == '"') {
+    const std::size_t close = t.find(t.front(), 1);
+    if (close == std::string_view::npos) return false;
+    const std::string_view after = trim(t.substr(close + 1));
+    return after.empty() || is_comment_start(after.front());
+  }
+  return false;
+}
+
+// `KEY =` with nothing (or only a comment) after the '='.
+bool has_empty_value(std::string_view t) noexcept {
+  const std::string_view rest = trim(t.substr(t.find('=') + 1));
+  return rest.empty() || is_comment_start(rest.front());
 }
 
 }  // namespace
@@ -248,6 +274,18 @@ Entry& TirFile::upsert(std::string_view section, std::string_view key) {
     e->source.clear();
     return *e;
   }
+  // A `KEY =` line without a value becomes the entry (in place).
+  for (auto& s : sections_) {
+    if (!iequals(s.name, section)) continue;
+    for (auto& l : s.lines) {
+      if (l.kind == Line::Kind::kEmptyEntry && iequals(l.entry.key, key)) {
+        l.kind = Line::Kind::kEntry;
+        l.text.clear();
+        l.entry.source.clear();
+        return l.entry;
+      }
+    }
+  }
   Section* target = nullptr;
   for (auto& s : sections_) {
     if (iequals(s.name, section)) target = &s;  // the last section of that name
@@ -316,6 +354,13 @@ TirFile parse_tir(std::string_view text, const std::string& origin) {
   int line_no = 0;
   std::size_t pos = 0;
   Section* current = nullptr;
+  bool in_block = false;  // inside a `(NAME)` sub-block of the current section
+  {
+    const std::size_t first_eol = text.find('\n');
+    if (first_eol != std::string_view::npos && first_eol > 0 && text[first_eol - 1] == '\r') {
+      file.set_line_ending("\r\n");
+    }
+  }
   struct Seen {
     std::string section;  // lower-cased
     std::string key;      // lower-cased
@@ -337,6 +382,7 @@ TirFile parse_tir(std::string_view text, const std::string& origin) {
     while (!raw.empty() && raw.back() == '\r') raw.remove_suffix(1);  // CRLF (and stray CRs)
     const std::string_view t = trim(raw);
 
+    const std::size_t klen = match_key(t);
     Line l;
     l.line = line_no;
     l.text = std::string(raw);
@@ -363,8 +409,24 @@ TirFile parse_tir(std::string_view text, const std::string& origin) {
       s.line = line_no;
       file.sections().push_back(std::move(s));
       current = &file.sections().back();
+      in_block = false;
       continue;
-    } else if (const std::size_t klen = match_key(t); klen != 0) {
+    } else if (current != nullptr && !current->is_table() &&
+               (is_block_header(t) || (in_block && is_block_body(t)))) {
+      l.kind = Line::Kind::kBlockText;
+      in_block = true;
+    } else if (klen != 0 && has_empty_value(t)) {
+      l.kind = Line::Kind::kEmptyEntry;
+      l.entry.key = std::string(t.substr(0, klen));
+      l.entry.line = line_no;
+      if (current == nullptr) {
+        fail(origin, line_no, "key '" + l.entry.key + "' outside any section");
+      }
+      in_block = false;
+      file.add_warning(origin + ":" + std::to_string(line_no) + ": '" + l.entry.key +
+                       "' has no value: treated as absent");
+    } else if (klen != 0) {
+      in_block = false;
       l.kind = Line::Kind::kEntry;
       l.entry.key = std::string(t.substr(0, klen));
       l.entry.line = line_no;
@@ -397,6 +459,11 @@ TirFile parse_tir(std::string_view text, const std::string& origin) {
     // A section is either key/value or table: reject mixing (usually a typo such as a missing '=').
     if (l.kind == Line::Kind::kEntry || l.kind == Line::Kind::kTableRow) {
       const auto other = l.kind == Line::Kind::kEntry ? Line::Kind::kTableRow : Line::Kind::kEntry;
+      if (l.kind == Line::Kind::kTableRow && in_block) {
+        fail(origin, line_no,
+             "line in sub-block is neither '{...}' nor quoted text in section [" + current->name +
+                 "]: '" + std::string(t) + "'");
+      }
       for (const auto& prev : current->lines) {
         if (prev.kind == other) {
           fail(origin, line_no,
@@ -424,11 +491,12 @@ TirFile read_tir(const std::filesystem::path& path) {
 
 std::string write_tir(const TirFile& file) {
   std::string out;
-  for (const auto& l : file.preamble()) write_line(out, l);
+  const std::string& eol = file.line_ending();
+  for (const auto& l : file.preamble()) write_line(out, l, eol);
   for (const auto& s : file.sections()) {
     out += s.header.empty() ? "[" + s.name + "]" : s.header;
-    out += '\n';
-    for (const auto& l : s.lines) write_line(out, l);
+    out += eol;
+    for (const auto& l : s.lines) write_line(out, l, eol);
   }
   return out;
 }

@@ -10,19 +10,27 @@
 //   - `KEY = value` with KEY = [A-Za-z_][A-Za-z0-9_]*; value is a quoted string ('...' or "...", no
 //     escapes) or an unquoted token (number, or bare word) up to the comment/end of line.
 //   - Comments start with `$` or `!` (whole line or trailing, outside quotes).
+//   - Adams sub-blocks in key/value sections (e.g. [MDI_HEADER]): a `(NAME)` line such as
+//     `(COMMENTS)` starts a block whose following `{column names}` and quoted-text lines ('...')
+//     are kept verbatim for the round trip and carry no values (Line::Kind::kBlockText). The block
+//     ends at the next `KEY = value` line or section.
+//   - `KEY =` with nothing after the '=' (some exporters write it) is kept verbatim but treated as
+//     absent: lookups do not see it and warnings() names it with file:line.
 //   - Table sections ([SHAPE], [DEFLECTION_LOAD_CURVE], ...): lines that are not `KEY = value`
 //     (e.g. `{pen fz}` or rows of numbers) are kept verbatim as table rows. A section is either a
 //     key/value section or a table section: mixing the two in one section is an error.
-//   - Lines may end in CRLF; trailing CRs are dropped.
+//   - Lines may end in CRLF; trailing CRs are dropped, and the file remembers its line ending (that
+//     of its first line) for the writer.
 //   - Section names and keys are looked up case-insensitively (ASCII); they are kept as written.
 // Errors (TirError, message `file:line: what`):
-//   - unterminated quote, text after a closing quote, `KEY =` without a value, a malformed section
-//     header, a key (or table row) before the first section;
+//   - unterminated quote, text after a closing quote, a malformed section header, a key (or table
+//     row) before the first section;
 //   - a duplicate key within sections of the same name (the message names both lines) — the files
 //     give no rule for which one would win, so we refuse instead of guessing;
 //   - number(): the key exists but its value is not a finite number (quoted text, bare word,
 //   NaN...).
-// Round trip: write_tir(read_tir(f)) reproduces every line of f verbatim (CRLF becomes LF); entries
+// Round trip: write_tir(read_tir(f)) reproduces every line of f verbatim with the file's line
+// ending (LF or CRLF; a missing final newline is added); entries
 // changed with set() are written as `KEY = value` with the shortest text that reads back to the
 // same double, keeping their trailing comment.
 
@@ -63,9 +71,11 @@ struct Entry {
 
 /// A line of a section body (or of the preamble before the first section).
 struct Line {
-  enum class Kind { kBlank, kComment, kEntry, kTableRow };
+  /// kBlockText: a `(NAME)` sub-block line or a `{...}` / quoted line inside one (no values).
+  /// kEmptyEntry: `KEY =` without a value, treated as absent (Line::entry.key holds the key).
+  enum class Kind { kBlank, kComment, kEntry, kTableRow, kBlockText, kEmptyEntry };
   Kind kind = Kind::kBlank;
-  std::string text;  ///< verbatim text (kBlank/kComment/kTableRow); unused for kEntry
+  std::string text;  ///< verbatim text (all kinds but kEntry); unused for kEntry
   int line = 0;      ///< 1-based source line; 0 for added lines
   Entry entry;       ///< valid for kEntry
 };
@@ -100,6 +110,15 @@ class TirFile {
   std::vector<Line>& preamble() noexcept { return preamble_; }
   std::vector<Section>& sections() noexcept { return sections_; }
 
+  /// "\n" or "\r\n": the line ending the writer uses (that of the file's first line when read).
+  const std::string& line_ending() const noexcept { return line_ending_; }
+  void set_line_ending(std::string ending) { line_ending_ = std::move(ending); }
+
+  /// Things worth telling the user that are not errors, each `file:line: message` (e.g. a key
+  /// without a value, treated as absent).
+  const std::vector<std::string>& warnings() const noexcept { return warnings_; }
+  void add_warning(std::string warning) { warnings_.push_back(std::move(warning)); }
+
   /// First section of that name (case-insensitive), or nullptr.
   const Section* section(std::string_view name) const noexcept;
 
@@ -128,6 +147,8 @@ class TirFile {
   Entry& upsert(std::string_view section, std::string_view key);
 
   std::string origin_;
+  std::string line_ending_ = "\n";
+  std::vector<std::string> warnings_;
   std::vector<Line> preamble_;
   std::vector<Section> sections_;
 };

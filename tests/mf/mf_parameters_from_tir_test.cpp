@@ -23,24 +23,45 @@ TEST(MfParametersFromTir, ReadsValuesAndListsMissingKeys) {
   EXPECT_DOUBLE_EQ(r.params.fnomin_n, 6752.0);
   EXPECT_DOUBLE_EQ(r.params.longvl_mps, 16.6);
   EXPECT_DOUBLE_EQ(r.params.cammax_rad, 0.105);
-  EXPECT_TRUE(contains(r.missing, "Q_FCY2"));
-  EXPECT_FALSE(contains(r.missing, "PCX1"));
-  EXPECT_NE(r.warning.find("Q_FCY2"), std::string::npos);
+  // A complete MF 6.1 file: the MF 6.2-only and MF 5.2-only keys are not reported missing.
+  EXPECT_TRUE(r.missing.empty()) << r.warning;
+  EXPECT_TRUE(r.warning.empty()) << r.warning;
+  EXPECT_EQ(r.model, "MF 6.1");
+}
+
+TEST(MfParametersFromTir, CompleteMf62FileReportsNoMissingKeys) {
+  const MfTirParameters r =
+      load_mf_parameters(testing::refdata("tir/MagicFormula62_Parameters.tir"));
+  EXPECT_EQ(r.params.fit_type, FitType::mf62);
+  EXPECT_TRUE(r.missing.empty()) << r.warning;
+  EXPECT_TRUE(r.warning.empty()) << r.warning;
+}
+
+TEST(MfParametersFromTir, MissingKeysAreThoseOfTheFilesOwnModel) {
+  const tir::TirFile f = tir::parse_tir(
+      "[MODEL]\nFITTYP = 61\n[VERTICAL]\nFNOMIN = 4000\n[LATERAL_COEFFICIENTS]\nPCY1 = 1.3\n",
+      "m.tir");
+  const MfTirParameters r = mf_parameters_from_tir(f);
+  EXPECT_TRUE(contains(r.missing, "PKY4"));     // MF 6.1 key
+  EXPECT_FALSE(contains(r.missing, "Q_CAM1"));  // MF 6.2 only
+  EXPECT_FALSE(contains(r.missing, "PTX1"));    // MF 5.2 only
+  EXPECT_FALSE(contains(r.missing, "Q_A1"));    // optional
+  EXPECT_FALSE(contains(r.missing, "PCY1"));
 }
 
 TEST(MfParametersFromTir, Mf52FileTakesDefaults) {
   const MfTirParameters r = load_mf_parameters(testing::tyre_file("MagicFormula52_Parameters.tir"));
   EXPECT_EQ(r.params.fit_type, FitType::mf52);
   EXPECT_EQ(r.params.tyre_side, TyreSide::left);  // no TYRESIDE
-  EXPECT_TRUE(contains(r.missing, "NOMPRES"));
+  EXPECT_FALSE(contains(r.missing, "NOMPRES"));   // not an MF 5.2 key
   EXPECT_DOUBLE_EQ(r.params.nompres_pa, 220000.0);
   EXPECT_DOUBLE_EQ(r.params.longitudinal_stiffness_npm, 300000.0);
   EXPECT_DOUBLE_EQ(r.params.pdy3, -7.088);
 }
 
 TEST(MfParametersFromTir, FileWithoutFittypIsPac2002WithWarning) {
-  const tir::TirFile f =
-      tir::parse_tir("[MODEL]\nTYRESIDE = 'Right'\n[VERTICAL]\nFNOMIN = 5000\n", "x.tir");
+  const tir::TirFile f = tir::parse_tir(
+      "[MODEL]\nTYRESIDE = 'Right'\n[VERTICAL]\nFNOMIN = 5000\nPCX1 = 1.6\n", "x.tir");
   const MfTirParameters r = mf_parameters_from_tir(f);
   EXPECT_EQ(r.params.fit_type, FitType::pac2002);
   EXPECT_EQ(r.params.tyre_side, TyreSide::right);
@@ -49,13 +70,119 @@ TEST(MfParametersFromTir, FileWithoutFittypIsPac2002WithWarning) {
 }
 
 TEST(MfParametersFromTir, UnknownFittypNamesFileAndLine) {
-  const tir::TirFile f = tir::parse_tir("[MODEL]\n\nFITTYP = 5\n", "truck.tir");
+  const tir::TirFile f = tir::parse_tir("[MODEL]\n\nFITTYP = 7\nPCX1 = 1\n", "truck.tir");
   try {
     static_cast<void>(mf_parameters_from_tir(f));
     FAIL() << "no error";
   } catch (const tir::TirError& e) {
-    EXPECT_NE(std::string(e.what()).find("truck.tir:3"), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()),
+              "truck.tir:3: FITTYP 7 is not a known Magic Formula version (expected 5, 6, 21, 52, "
+              "61 or 62)");
   }
+}
+
+std::filesystem::path variant(const std::string& name) {
+  return std::filesystem::path(TREAD_SOURCE_DIR) / "tests/data/tir-variants" / name;
+}
+
+// Expects load_mf_parameters(file) to throw a TirError whose message is "<path>:<line>: <what>…".
+void expect_refused(const std::string& name, int line, const std::string& what) {
+  SCOPED_TRACE(name);
+  const auto path = variant(name);
+  try {
+    (void)load_mf_parameters(path);
+    ADD_FAILURE() << "no error";
+  } catch (const tir::TirError& e) {
+    const std::string prefix = path.string() + ":" + std::to_string(line) + ": " + what;
+    EXPECT_EQ(std::string(e.what()).rfind(prefix, 0), 0U) << e.what() << "\nexpected " << prefix;
+  }
+}
+
+TEST(MfParametersFromTir, PacFilesAreSentToTreadPac) {
+  expect_refused("pac89_header.tir", 13, "this is a PAC89 file: use tread pac eval");
+  expect_refused("pac94_header.tir", 13, "this is a PAC94 file: use tread pac eval");
+}
+
+TEST(MfParametersFromTir, OtherTyreModelsAreNotMagicFormulaFiles) {
+  expect_refused("harty_function_name.tir", 6,
+                 "not a Magic Formula file: FUNCTION_NAME 'HTire501::harty_tyre' is a Harty");
+  expect_refused("fiala.tir", 5,
+                 "not a Magic Formula file: PROPERTY_FILE_FORMAT 'FIALA' is a Fiala");
+  expect_refused("matlab_script.tir", 1, "not a Magic Formula file: not a tyre property file");
+  expect_refused("no_mf_coefficients.tir", 3,
+                 "not a Magic Formula file: FITTYP 61 but none of the Magic Formula coefficients");
+}
+
+TEST(MfParametersFromTir, Mf50IsEvaluatedOnThePac2002PathWithItsDifferencesSaid) {
+  const MfTirParameters r = load_mf_parameters(variant("mf05_fe_method.tir"));
+  EXPECT_EQ(r.params.fit_type, FitType::pac2002);
+  EXPECT_EQ(r.model, "MF-Tyre 5.0");
+  EXPECT_NE(r.warning.find("FITTYP 5 (MF-Tyre 5.0)"), std::string::npos) << r.warning;
+  EXPECT_NE(r.warning.find("FE_METHOD = 'YES'"), std::string::npos) << r.warning;
+  EXPECT_DOUBLE_EQ(r.params.fnomin_n, 25990.0);
+  const MfTirParameters feda =
+      load_mf_parameters(testing::refdata("tir/chrono_feda_335_65R22_5_G275MSA_60psi.tir"));
+  EXPECT_EQ(feda.model, "MF-Tyre 5.0");
+}
+
+TEST(MfParametersFromTir, Fittyp52IsMf52) {
+  const tir::TirFile f = tir::parse_tir("[MODEL]\nFITTYP = 52\n[L]\nPCX1 = 1.6\n", "f.tir");
+  EXPECT_EQ(mf_parameters_from_tir(f).params.fit_type, FitType::mf52);
+}
+
+TEST(MfParametersFromTir, NompresOnlyIsEvaluatedAtNompres) {
+  const MfTirParameters r = load_mf_parameters(variant("nompres_only.tir"));
+  EXPECT_DOUBLE_EQ(r.params.nompres_pa, 80000.0);
+  EXPECT_DOUBLE_EQ(r.params.inflpres_pa, 80000.0);
+  EXPECT_NE(r.warning.find("no INFLPRES: evaluated at NOMPRES (80000 Pa)"), std::string::npos)
+      << r.warning;
+  const tir::TirFile infl_only =
+      tir::parse_tir("[MODEL]\nFITTYP = 61\n[O]\nINFLPRES = 90000\nPCX1 = 1.6\n", "i.tir");
+  const MfTirParameters i = mf_parameters_from_tir(infl_only);
+  EXPECT_DOUBLE_EQ(i.params.nompres_pa, 90000.0);
+  EXPECT_NE(i.warning.find("no NOMPRES"), std::string::npos) << i.warning;
+  const tir::TirFile neither = tir::parse_tir("[MODEL]\nFITTYP = 62\n[O]\nPCX1 = 1.6\n", "n.tir");
+  const MfTirParameters n = mf_parameters_from_tir(neither);
+  EXPECT_DOUBLE_EQ(n.params.nompres_pa, n.params.inflpres_pa);
+  EXPECT_NE(n.warning.find("no INFLPRES or NOMPRES"), std::string::npos) << n.warning;
+}
+
+TEST(MfParametersFromTir, FileWarningsAreForwarded) {
+  const tir::TirFile f =
+      tir::parse_tir("[MODEL]\nFITTYP = 61\nUSE_MODE =\n[O]\nPCX1 = 1.6\n", "w.tir");
+  EXPECT_NE(mf_parameters_from_tir(f).warning.find("w.tir:3: 'USE_MODE' has no value"),
+            std::string::npos);
+}
+
+// Defective parameters are errors naming the key and file:line, never NaN outputs later.
+TEST(MfParametersFromTir, DefectiveParametersAreRefused) {
+  expect_refused("defective_zero_vertical_stiffness.tir", 6, "VERTICAL_STIFFNESS = 0 must be > 0");
+  expect_refused("defective_zero_reff.tir", 6, "BREFF, DREFF and FREFF are all 0");
+  expect_refused("defective_zero_fnomin.tir", 5, "FNOMIN = 0 must be > 0");
+  expect_refused("defective_fz_range.tir", 7, "FZMAX = 100 is not above FZMIN = 9000");
+  const auto refused = [](const std::string& text) {
+    try {
+      (void)mf_parameters_from_tir(tir::parse_tir(text, "d.tir"));
+    } catch (const tir::TirError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(refused("[M]\nFITTYP = 61\nPCX1 = 1.6\nNOMPRES = -1\nINFLPRES = 1e5\n"),
+            "d.tir:4: NOMPRES = -1 must be > 0 (the pressure terms divide by it)");
+  EXPECT_EQ(refused("[M]\nFITTYP = 61\nPCX1 = 1.6\nPCY1 = 0\n"),
+            "d.tir:4: PCY1 · LCY = 0: the Fy stiffness factor By = Ky/(Cy·Dy) divides by it");
+  EXPECT_EQ(refused("[M]\nFITTYP = 6\nPCX1 = 1.6\nLONGVL = 0\n"),
+            "d.tir:4: LONGVL = 0 must be > 0 (speeds are taken relative to it)");
+  EXPECT_EQ(refused("[M]\nFITTYP = 6\nPCX1 = 1.6\nALPMIN = 0.5\nALPMAX = 0.5\n"),
+            "d.tir:5: ALPMAX = 0.5 is not above ALPMIN = 0.5 (the range is empty)");
+  // MF 5.2 has no pressure terms: a zero NOMPRES there is not an error.
+  EXPECT_EQ(refused("[M]\nFITTYP = 6\nPCX1 = 1.6\nNOMPRES = 0\n"), "accepted");
+  const MfTirParameters w = mf_parameters_from_tir(
+      tir::parse_tir("[M]\nFITTYP = 6\nPCX1 = 1.6\nVXLOW = 0\nFNOMIN = 50\n", "w.tir"));
+  EXPECT_NE(w.warning.find("w.tir:4: VXLOW = 0"), std::string::npos) << w.warning;
+  EXPECT_NE(w.warning.find("w.tir:5: FNOMIN = 50 lies outside FZMIN"), std::string::npos)
+      << w.warning;
 }
 
 TEST(MfParametersFromTir, NonNumericValueIsAnError) {

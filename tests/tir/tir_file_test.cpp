@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
@@ -119,11 +120,75 @@ TEST(TirFile, ErrorsNameFileAndLine) {
   expect_error("1.0 2.0\n", 1, "outside any section");
   expect_error("[A]\nX = 1\nY = 2\nx = 3\n", 4, "duplicate key 'x' in [A] (first at line 2)");
   expect_error("[A]\nX = 1\n[B]\n[a]\nX = 3\n", 5, "duplicate key");
-  expect_error("[A]\nX =   $ nothing\n", 2, "missing value");
+  expect_error("[A]\n(COMMENTS)\n{comment_string}\nnot quoted\n", 4, "sub-block");
+  expect_error("(COMMENTS)\n[A]\n", 1, "outside any section");
   expect_error("[A]\nX = 'a' b\n", 2, "after closing quote");
   expect_error("[A\nX = 1\n", 1, "without ']'");
   expect_error("[A]\nX = 1\nY 2\n", 3, "neither 'KEY = value' nor a comment");
   expect_error("[A]\n1 2\nX = 1\n", 3, "table section");
+}
+
+std::filesystem::path variant(const std::string& name) {
+  return std::filesystem::path(TREAD_SOURCE_DIR) / "tests/data/tir-variants" / name;
+}
+
+std::string slurp(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+// Adams `(COMMENTS)` sub-blocks: `{comment_string}` and quoted lines parse, carry no values, and
+// are written back verbatim; keys after the block are read.
+TEST(TirFileVariants, AdamsCommentBlocks) {
+  const auto path = variant("adams_comment_block.tir");
+  const TirFile f = read_tir(path);
+  EXPECT_EQ(f.text("MDI_HEADER", "FILE_FORMAT"), "ASCII");
+  EXPECT_EQ(f.number("MODEL", "FITTYP"), 61.0);
+  EXPECT_EQ(f.number("MODEL", "LONGVL"), 16.7);
+  EXPECT_EQ(f.number("VERTICAL", "FNOMIN"), 4000.0);
+  std::size_t block_lines = 0;
+  for (const auto& s : f.sections()) {
+    for (const auto& l : s.lines) block_lines += l.kind == Line::Kind::kBlockText ? 1U : 0U;
+  }
+  EXPECT_EQ(block_lines, 7U);
+  EXPECT_TRUE(f.warnings().empty());
+  EXPECT_EQ(write_tir(f), slurp(path));
+}
+
+// `KEY =` without a value: absent for lookups, a warning with file:line, kept for the round trip;
+// set() fills the line in place.
+TEST(TirFileVariants, EmptyValuesAreAbsentWithAWarning) {
+  const auto path = variant("empty_values.tir");
+  TirFile f = read_tir(path);
+  EXPECT_EQ(f.find("MODEL", "USE_MODE"), nullptr);
+  EXPECT_EQ(f.number_any("VERTICAL_DAMPING"), std::nullopt);
+  EXPECT_EQ(f.number("VERTICAL", "FNOMIN"), 4000.0);
+  ASSERT_EQ(f.warnings().size(), 2U);
+  EXPECT_EQ(f.warnings()[0], path.string() + ":6: 'USE_MODE' has no value: treated as absent");
+  EXPECT_EQ(f.warnings()[1],
+            path.string() + ":9: 'VERTICAL_DAMPING' has no value: treated as absent");
+  EXPECT_EQ(write_tir(f), slurp(path));
+  f.set("MODEL", "USE_MODE", 14);
+  const std::string written = write_tir(f);
+  EXPECT_NE(written.find("FITTYP = 61\nUSE_MODE = 14\n[VERTICAL]"), std::string::npos) << written;
+  const TirFile again = parse_tir(written, "again");
+  EXPECT_EQ(again.number("MODEL", "USE_MODE"), 14.0);
+  EXPECT_EQ(again.warnings().size(), 1U);
+}
+
+// CRLF files are written back with CRLF, byte for byte; LF files keep LF.
+TEST(TirFileVariants, CrlfKeptOnRoundTrip) {
+  const auto path = variant("crlf.tir");
+  TirFile f = read_tir(path);
+  EXPECT_EQ(f.line_ending(), "\r\n");
+  EXPECT_EQ(write_tir(f), slurp(path));
+  f.set("VERTICAL", "FNOMIN", 4500);
+  const std::string written = write_tir(f);
+  EXPECT_NE(written.find("FNOMIN = 4500\r\n"), std::string::npos);
+  EXPECT_EQ(written.find("\r\r"), std::string::npos);
+  EXPECT_EQ(std::count(written.begin(), written.end(), '\n'),
+            std::count(written.begin(), written.end(), '\r'));
+  EXPECT_EQ(parse_tir("[A]\nX = 1\n", "lf").line_ending(), "\n");
 }
 
 TEST(TirFile, NumberWhereTextIsFoundIsAnErrorWithLine) {
