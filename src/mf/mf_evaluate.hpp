@@ -17,7 +17,10 @@
 //     lengths from PTX/PTY.
 // Where MFeval divides by zero or takes acos of more than 1 (turn slip at φt = 0, Fz = 0 with the
 // limits off, Q_FZ2 = 0) it returns NaN/Inf; here those spots take the limiting finite value, so a
-// finite input always gives a finite output. Where MFeval is finite the arithmetic is the same.
+// finite input always gives a finite output for a sound parameter set. Where MFeval is finite the
+// arithmetic is the same. Parameters no tyre has (VERTICAL_STIFFNESS, FNOMIN, UNLOADED_RADIUS,
+// LONGVL or NOMPRES 0, huge coefficients, ...) and NaN inputs can still make an output NaN or inf:
+// such an output is returned as 0 with MfOutput::status non_finite, never as NaN/inf.
 // Deliberate differences:
 //   - rho/Rl for FITTYP ≠ 61 (MF 5.2, MF 6.2): MFeval minimises (Fz62(Rl) − Fz)² with fminsearch
 //     (TolX 1e-6, start 0.3 m); here the root of Fz62(Rl) = Fz is found by bisection to the last
@@ -104,13 +107,65 @@ T div_or(const T& num, const T& den, const T& fallback) {
     return is_zero(den) ? fallback : num / den;
   }
 }
-/// Out-of-range lanes as MfOutput<T>::status.
-inline Status to_status(bool out_of_range) {
-  return out_of_range ? Status::out_of_range : Status::ok;
+/// MfOutput<T>::status from the out-of-range and non-finite truth values.
+template <typename T, typename M>
+typename StatusFor<T>::type to_status(const M& out_of_range, const M& non_finite) {
+  if constexpr (is_lanes<T>) {
+    return {out_of_range, non_finite};
+  } else {
+    if (non_finite) return Status::non_finite;
+    return out_of_range ? Status::out_of_range : Status::ok;
+  }
+}
+
+/// Every value of an MfOutput, for the finiteness check.
+template <typename T, typename F>
+void for_each_value(MfOutput<T>& o, F&& f) {
+  for (T* v : {&o.fx_n,        &o.fy_n,      &o.fz_n,
+               &o.mx_nm,       &o.my_nm,     &o.mz_nm,
+               &o.kappa,       &o.alpha_rad, &o.gamma_rad,
+               &o.phit_1pm,    &o.vx_mps,    &o.p_pa,
+               &o.re_m,        &o.rho_m,     &o.contact_length_m,
+               &o.t_m,         &o.mux,       &o.muy,
+               &o.omega_radps, &o.rl_m,      &o.contact_width_m,
+               &o.mzr_nm,      &o.cx_npm,    &o.cy_npm,
+               &o.cz_npm,      &o.kya_nprad, &o.sigmax_m,
+               &o.sigmay_m,    &o.kxk_n}) {
+    f(*v);
+  }
+}
+
+/// Whether x is finite, per lane: x − x is 0 for a finite x and NaN for NaN and ±inf. For
+/// ceres::Jet (which compares by value only) isfinite() also checks the derivatives.
+template <typename T>
+auto finite(const T& x) {
+  if constexpr (is_lanes<T> || std::is_floating_point_v<T>) {
+    return (x - x) <= T(0);
+  } else {
+    using std::isfinite;
+    return static_cast<bool>(isfinite(x));
+  }
+}
+/// a and b without a branch (bool) or per lane (masks).
+inline bool both(bool a, bool b) {
+  return a & b;
 }
 template <typename M>
-M to_status(const M& out_of_range) {
-  return out_of_range;
+M both(const M& a, const M& b) {
+  return a && b;
+}
+
+/// Replaces every non-finite output by 0 and returns the non-finite truth value (per lane): one
+/// compare per output and an AND chain; the replacement runs only when a lane needs it.
+template <typename T>
+MaskOf<T> replace_non_finite(MfOutput<T>& out) {
+  auto all = finite(out.fx_n);
+  for_each_value(out, [&all](const T& v) { all = both(all, finite(v)); });
+  const auto non_finite = !all;
+  if (any_lane(non_finite)) {
+    for_each_value(out, [](T& v) { v = if_else(finite(v), v, T(0)); });
+  }
+  return non_finite;
 }
 
 template <typename T>
@@ -621,7 +676,9 @@ constexpr bool mirrored(MountedSide side, TyreSide tyre_side) {
   return false;
 }
 
-/// One steady-state evaluation. Never allocates, never throws; finite inputs give finite outputs.
+/// One steady-state evaluation. Never allocates, never throws; never returns NaN or inf: finite
+/// inputs and a sound parameter set give finite outputs, anything else (a NaN input, zero
+/// VERTICAL_STIFFNESS, ...) gives 0 for each non-finite output and Status::non_finite.
 template <typename T, typename P>
 MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
                      const MfOptions& options) {
@@ -636,7 +693,6 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
   const Basic<T> b = basic(p, in, options);
 
   MfOutput<T> out;
-  out.status = to_status(in.out_of_range);
 
   T mux = T(0);
   T kxk = T(0);
@@ -902,6 +958,10 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
   }
 
   if (mirror) mirror_output(out, true);
+  // No NaN or inf leaves: a non-finite output (defective parameters, a NaN input) becomes 0 and
+  // the status says so.
+  const auto non_finite = replace_non_finite(out);
+  out.status = to_status<T>(in.out_of_range, non_finite);
   return out;
 }
 
