@@ -10,7 +10,8 @@
 //   - the low-speed model below VXLOW (linear κ, α and φt reduction, cosine reduction of SVx, SHx,
 //     SVy, SHy, SVyk, t, Mzr; the empirical My reduction), φt·cos α with limits on;
 //   - Fz is clamped only above FZMAX; FZMIN is used only in Mz0 (Fz low limit), Mx (Fz·(Fz/FZMIN)²)
-//     and My (Fz·Fz/FZMIN);
+//     and My (Fz·Fz/FZMIN); MF 6.2's loaded radius is solved for the load as given (unclamped),
+//     its deflection's Cz = Fz/rho with the clamped load, as MFeval 4.x;
 //   - MF 5.2 (FITTYP 6): Kyg0, SHy with PHY3, Mz = −t·(Fy − SVyk) + Mzr + s·Fx (SVyk of the
 //     combined Fy itself, as MFeval 4.3.1's output shows, not the γ = 0 one), My without the
 //     camber/pressure terms, contact length from Q_A1/Q_A2 (with MFeval's fallback), relaxation
@@ -888,8 +889,10 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
       out.rho_m = rho_z;
       out.cz_npm = fz / rho_z;
     } else {
-      // Rl with Fz62(Rl) = Fz (decreasing in Rl): bisection on [0, Romega + rtw].
-      const T fz_target = in.fz;
+      // Rl with Fz62(Rl) = Fz (decreasing in Rl): bisection on [0, Romega + rtw]. The load: MF
+      // 6.2 solves for the load as given (MFeval 4.x's calculateRhoRl62 takes uFz, not the Fz
+      // limited to FZMAX that the forces see); MF 5.2 / PAC2002 for the limited load.
+      const T fz_target = p.fit_type == FitType::mf62 ? in.ufz : in.fz;
       T lo = T(0);
       T hi = in.romega + p.width_m;
       T rho_dummy = T(0);
