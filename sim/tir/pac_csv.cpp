@@ -57,8 +57,8 @@ pac::PacOutput<double> eval_as(const pac::PacParams<T>& p, const PacCsvOptions& 
   auto r =
       o.model == PacModel::kPac89 ? pac::pac89_eval(p, in, o.slip) : pac::pac94_eval(p, in, o.slip);
   if (o.iso_w) r = pac::to_iso_w(r);
-  return {static_cast<double>(r.fx_n), static_cast<double>(r.fy_n), static_cast<double>(r.mz_nm),
-          static_cast<double>(r.mx_nm), static_cast<double>(r.my_nm)};
+  return {static_cast<double>(r.fx_n),  static_cast<double>(r.fy_n),  static_cast<double>(r.mz_nm),
+          static_cast<double>(r.mx_nm), static_cast<double>(r.my_nm), r.status};
 }
 
 }  // namespace
@@ -95,7 +95,7 @@ std::size_t evaluate_pac_csv(const pac::PacParams<double>& params, const PacCsvO
       }
       width = cells.size();
       have_header = true;
-      out << "in_Fz_N,in_kappa,in_alpha_rad,in_gamma_rad,Fx_N,Fy_N,Mz_Nm,Mx_Nm,My_Nm\n";
+      out << "in_Fz_N,in_kappa,in_alpha_rad,in_gamma_rad,Fx_N,Fy_N,Mz_Nm,Mx_Nm,My_Nm,status\n";
       continue;
     }
     if (cells.size() != width) {
@@ -114,7 +114,7 @@ std::size_t evaluate_pac_csv(const pac::PacParams<double>& params, const PacCsvO
     }
     const auto r = options.use_float ? eval_as(pf, options, v) : eval_as(params, options, v);
     out << v[0] << ',' << v[1] << ',' << v[2] << ',' << v[3] << ',' << r.fx_n << ',' << r.fy_n
-        << ',' << r.mz_nm << ',' << r.mx_nm << ',' << r.my_nm << '\n';
+        << ',' << r.mz_nm << ',' << r.mx_nm << ',' << r.my_nm << ',' << to_string(r.status) << '\n';
     ++rows;
   }
   if (!have_header) throw TirError(in_name, line_no, "no header row");

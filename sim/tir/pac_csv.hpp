@@ -8,7 +8,8 @@
 // finite number.
 // Output: in_Fz_N, in_kappa, in_alpha_rad, in_gamma_rad, Fx_N, Fy_N, Mz_Nm, Mx_Nm, My_Nm (17
 // significant digits), in the coefficient set's axes or, with `iso_w`, converted by
-// pac::to_iso_w().
+// pac::to_iso_w(); then status (PacOutput::status as text: "ok", "out of range", "non-finite
+// result" where an output came out NaN/inf and was written as 0).
 
 #include <cstddef>
 #include <iosfwd>

@@ -14,7 +14,7 @@ struct MfInput {
   T gamma_rad = T(0);  ///< inclination angle
   T vx_mps = T(0);     ///< forward speed of the wheel centre
   T phit_1pm = T(0);   ///< turn slip (used only with MfOptions::use_turn_slip)
-  T p_pa = T(0);       ///< inflation pressure; 0 (or less) → the file's INFLPRES
+  T p_pa = T(0);       ///< inflation pressure; 0 (or less, or NaN) → the file's INFLPRES
 };
 
 /// The type of MfOutput<T>::status: a Status for the scalars; the four-lane scalar of

@@ -34,13 +34,19 @@ std::vector<std::vector<double>> read_rows(const std::string& csv) {
   std::istringstream in(csv);
   std::string line;
   std::getline(in, line);
-  EXPECT_EQ(line, "in_Fz_N,in_kappa,in_alpha_rad,in_gamma_rad,Fx_N,Fy_N,Mz_Nm,Mx_Nm,My_Nm");
+  EXPECT_EQ(line, "in_Fz_N,in_kappa,in_alpha_rad,in_gamma_rad,Fx_N,Fy_N,Mz_Nm,Mx_Nm,My_Nm,status");
   std::vector<std::vector<double>> rows;
   while (std::getline(in, line)) {
     std::vector<double> r;
     std::istringstream cells(line);
     std::string cell;
-    while (std::getline(cells, cell, ',')) r.push_back(*tread::tir::parse_number(cell));
+    for (int column = 0; std::getline(cells, cell, ','); ++column) {
+      if (column == 9) {
+        EXPECT_EQ(cell, "ok");
+      } else {
+        r.push_back(*tread::tir::parse_number(cell));
+      }
+    }
     rows.push_back(r);
   }
   return rows;
