@@ -44,7 +44,9 @@
 #include "mf/mf_parameters.hpp"
 #include "mf/mf_types.hpp"
 
+#include <array>
 #include <cmath>
+#include <cstddef>
 #include <initializer_list>
 #include <type_traits>
 #include <utility>
@@ -119,21 +121,19 @@ typename StatusFor<T>::type to_status(const M& out_of_range, const M& non_finite
   }
 }
 
-/// Every value of an MfOutput, for the finiteness check.
-template <typename T, typename F>
-void for_each_value(MfOutput<T>& o, F&& f) {
-  for (T* v : {&o.fx_n,        &o.fy_n,      &o.fz_n,
-               &o.mx_nm,       &o.my_nm,     &o.mz_nm,
-               &o.kappa,       &o.alpha_rad, &o.gamma_rad,
-               &o.phit_1pm,    &o.vx_mps,    &o.p_pa,
-               &o.re_m,        &o.rho_m,     &o.contact_length_m,
-               &o.t_m,         &o.mux,       &o.muy,
-               &o.omega_radps, &o.rl_m,      &o.contact_width_m,
-               &o.mzr_nm,      &o.cx_npm,    &o.cy_npm,
-               &o.cz_npm,      &o.kya_nprad, &o.sigmax_m,
-               &o.sigmay_m,    &o.kxk_n}) {
-    f(*v);
-  }
+/// Pointers to every value of an MfOutput.
+template <typename T>
+std::array<T*, 29> output_values(MfOutput<T>& o) {
+  return {&o.fx_n,        &o.fy_n,      &o.fz_n,
+          &o.mx_nm,       &o.my_nm,     &o.mz_nm,
+          &o.kappa,       &o.alpha_rad, &o.gamma_rad,
+          &o.phit_1pm,    &o.vx_mps,    &o.p_pa,
+          &o.re_m,        &o.rho_m,     &o.contact_length_m,
+          &o.t_m,         &o.mux,       &o.muy,
+          &o.omega_radps, &o.rl_m,      &o.contact_width_m,
+          &o.mzr_nm,      &o.cx_npm,    &o.cy_npm,
+          &o.cz_npm,      &o.kya_nprad, &o.sigmax_m,
+          &o.sigmay_m,    &o.kxk_n};
 }
 
 /// Whether x is finite, per lane: x − x is 0 for a finite x and NaN for NaN and ±inf. For
@@ -147,24 +147,34 @@ auto finite(const T& x) {
     return static_cast<bool>(isfinite(x));
   }
 }
-/// a and b without a branch (bool) or per lane (masks).
-inline bool both(bool a, bool b) {
-  return a & b;
-}
-template <typename M>
-M both(const M& a, const M& b) {
-  return a && b;
+
+/// Σ (v − v) over v[B, E) as a balanced tree (no long dependency chain): 0 when every value is
+/// finite, NaN otherwise (a sum of zeros cannot overflow).
+template <std::size_t B, std::size_t E, typename T, std::size_t N>
+T zero_or_nan(const std::array<T*, N>& v) {
+  if constexpr (E - B == 1) {
+    return *v[B] - *v[B];
+  } else {
+    constexpr std::size_t kMid = B + (E - B) / 2;
+    return zero_or_nan<B, kMid>(v) + zero_or_nan<kMid, E>(v);
+  }
 }
 
 /// Replaces every non-finite output by 0 and returns the non-finite truth value (per lane): one
-/// compare per output and an AND chain; the replacement runs only when a lane needs it.
+/// subtraction per output, a tree of additions and one compare; the replacement runs only when a
+/// lane needs it.
 template <typename T>
 MaskOf<T> replace_non_finite(MfOutput<T>& out) {
-  auto all = finite(out.fx_n);
-  for_each_value(out, [&all](const T& v) { all = both(all, finite(v)); });
-  const auto non_finite = !all;
+  const std::array<T*, 29> v = output_values(out);
+  MaskOf<T> non_finite{};
+  if constexpr (is_lanes<T> || std::is_floating_point_v<T>) {
+    static_assert(offsetof(MfOutput<T>, status) == 29 * sizeof(T), "output_values: all of them");
+    non_finite = !finite(zero_or_nan<0, 29>(v));
+  } else {
+    for (T* x : v) non_finite = non_finite || !finite(*x);
+  }
   if (any_lane(non_finite)) {
-    for_each_value(out, [](T& v) { v = if_else(finite(v), v, T(0)); });
+    for (T* x : v) *x = if_else(finite(*x), *x, T(0));
   }
   return non_finite;
 }
