@@ -22,6 +22,8 @@ const char* to_string(Status status) noexcept {
       return "I/O error";
     case Status::unsupported:
       return "unsupported";
+    case Status::non_finite:
+      return "non-finite result";
   }
   return "unknown status";
 }

@@ -16,6 +16,7 @@ enum class Status : std::uint8_t {
   would_block,       ///< a non-blocking operation had nothing to do / could not proceed now
   io_error,          ///< the operating system refused an operation
   unsupported,       ///< the build or platform does not provide this feature
+  non_finite,  ///< a result came out NaN or infinite (e.g. defective parameters); replaced by 0
 };
 
 /// A short, static, human-readable name; never allocates.

@@ -10,14 +10,18 @@
 //   - the low-speed model below VXLOW (linear κ, α and φt reduction, cosine reduction of SVx, SHx,
 //     SVy, SHy, SVyk, t, Mzr; the empirical My reduction), φt·cos α with limits on;
 //   - Fz is clamped only above FZMAX; FZMIN is used only in Mz0 (Fz low limit), Mx (Fz·(Fz/FZMIN)²)
-//     and My (Fz·Fz/FZMIN);
+//     and My (Fz·Fz/FZMIN); MF 6.2's loaded radius is solved for the load as given (unclamped),
+//     its deflection's Cz = Fz/rho with the clamped load, as MFeval 4.x;
 //   - MF 5.2 (FITTYP 6): Kyg0, SHy with PHY3, Mz = −t·(Fy − SVyk) + Mzr + s·Fx (SVyk of the
 //     combined Fy itself, as MFeval 4.3.1's output shows, not the γ = 0 one), My without the
 //     camber/pressure terms, contact length from Q_A1/Q_A2 (with MFeval's fallback), relaxation
 //     lengths from PTX/PTY.
 // Where MFeval divides by zero or takes acos of more than 1 (turn slip at φt = 0, Fz = 0 with the
 // limits off, Q_FZ2 = 0) it returns NaN/Inf; here those spots take the limiting finite value, so a
-// finite input always gives a finite output. Where MFeval is finite the arithmetic is the same.
+// finite input always gives a finite output for a sound parameter set. Where MFeval is finite the
+// arithmetic is the same. Parameters no tyre has (VERTICAL_STIFFNESS, FNOMIN, UNLOADED_RADIUS,
+// LONGVL or NOMPRES 0, huge coefficients, ...) and NaN inputs can still make an output NaN or inf:
+// such an output is returned as 0 with MfOutput::status non_finite, never as NaN/inf.
 // Deliberate differences:
 //   - rho/Rl for FITTYP ≠ 61 (MF 5.2, MF 6.2): MFeval minimises (Fz62(Rl) − Fz)² with fminsearch
 //     (TolX 1e-6, start 0.3 m); here the root of Fz62(Rl) = Fz is found by bisection to the last
@@ -40,7 +44,9 @@
 #include "mf/mf_parameters.hpp"
 #include "mf/mf_types.hpp"
 
+#include <array>
 #include <cmath>
+#include <cstddef>
 #include <initializer_list>
 #include <type_traits>
 #include <utility>
@@ -104,13 +110,73 @@ T div_or(const T& num, const T& den, const T& fallback) {
     return is_zero(den) ? fallback : num / den;
   }
 }
-/// Out-of-range lanes as MfOutput<T>::status.
-inline Status to_status(bool out_of_range) {
-  return out_of_range ? Status::out_of_range : Status::ok;
+/// MfOutput<T>::status from the out-of-range and non-finite truth values.
+template <typename T, typename M>
+typename StatusFor<T>::type to_status(const M& out_of_range, const M& non_finite) {
+  if constexpr (is_lanes<T>) {
+    return {out_of_range, non_finite};
+  } else {
+    if (non_finite) return Status::non_finite;
+    return out_of_range ? Status::out_of_range : Status::ok;
+  }
 }
-template <typename M>
-M to_status(const M& out_of_range) {
-  return out_of_range;
+
+/// Pointers to every value of an MfOutput.
+template <typename T>
+std::array<T*, 29> output_values(MfOutput<T>& o) {
+  return {&o.fx_n,        &o.fy_n,      &o.fz_n,
+          &o.mx_nm,       &o.my_nm,     &o.mz_nm,
+          &o.kappa,       &o.alpha_rad, &o.gamma_rad,
+          &o.phit_1pm,    &o.vx_mps,    &o.p_pa,
+          &o.re_m,        &o.rho_m,     &o.contact_length_m,
+          &o.t_m,         &o.mux,       &o.muy,
+          &o.omega_radps, &o.rl_m,      &o.contact_width_m,
+          &o.mzr_nm,      &o.cx_npm,    &o.cy_npm,
+          &o.cz_npm,      &o.kya_nprad, &o.sigmax_m,
+          &o.sigmay_m,    &o.kxk_n};
+}
+
+/// Whether x is finite, per lane: x − x is 0 for a finite x and NaN for NaN and ±inf. For
+/// ceres::Jet (which compares by value only) isfinite() also checks the derivatives.
+template <typename T>
+auto finite(const T& x) {
+  if constexpr (is_lanes<T> || std::is_floating_point_v<T>) {
+    return (x - x) <= T(0);
+  } else {
+    using std::isfinite;
+    return static_cast<bool>(isfinite(x));
+  }
+}
+
+/// Σ (v − v) over v[B, E) as a balanced tree (no long dependency chain): 0 when every value is
+/// finite, NaN otherwise (a sum of zeros cannot overflow).
+template <std::size_t B, std::size_t E, typename T, std::size_t N>
+T zero_or_nan(const std::array<T*, N>& v) {
+  if constexpr (E - B == 1) {
+    return *v[B] - *v[B];
+  } else {
+    constexpr std::size_t kMid = B + (E - B) / 2;
+    return zero_or_nan<B, kMid>(v) + zero_or_nan<kMid, E>(v);
+  }
+}
+
+/// Replaces every non-finite output by 0 and returns the non-finite truth value (per lane): one
+/// subtraction per output, a tree of additions and one compare; the replacement runs only when a
+/// lane needs it.
+template <typename T>
+MaskOf<T> replace_non_finite(MfOutput<T>& out) {
+  const std::array<T*, 29> v = output_values(out);
+  MaskOf<T> non_finite{};
+  if constexpr (is_lanes<T> || std::is_floating_point_v<T>) {
+    static_assert(offsetof(MfOutput<T>, status) == 29 * sizeof(T), "output_values: all of them");
+    non_finite = !finite(zero_or_nan<0, 29>(v));
+  } else {
+    for (T* x : v) non_finite = non_finite || !finite(*x);
+  }
+  if (any_lane(non_finite)) {
+    for (T* x : v) *x = if_else(finite(*x), *x, T(0));
+  }
+  return non_finite;
 }
 
 template <typename T>
@@ -621,7 +687,9 @@ constexpr bool mirrored(MountedSide side, TyreSide tyre_side) {
   return false;
 }
 
-/// One steady-state evaluation. Never allocates, never throws; finite inputs give finite outputs.
+/// One steady-state evaluation. Never allocates, never throws; never returns NaN or inf: finite
+/// inputs and a sound parameter set give finite outputs, anything else (a NaN input, zero
+/// VERTICAL_STIFFNESS, ...) gives 0 for each non-finite output and Status::non_finite.
 template <typename T, typename P>
 MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
                      const MfOptions& options) {
@@ -636,7 +704,6 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
   const Basic<T> b = basic(p, in, options);
 
   MfOutput<T> out;
-  out.status = to_status(in.out_of_range);
 
   T mux = T(0);
   T kxk = T(0);
@@ -832,8 +899,10 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
       out.rho_m = rho_z;
       out.cz_npm = fz / rho_z;
     } else {
-      // Rl with Fz62(Rl) = Fz (decreasing in Rl): bisection on [0, Romega + rtw].
-      const T fz_target = in.fz;
+      // Rl with Fz62(Rl) = Fz (decreasing in Rl): bisection on [0, Romega + rtw]. The load: MF
+      // 6.2 solves for the load as given (MFeval 4.x's calculateRhoRl62 takes uFz, not the Fz
+      // limited to FZMAX that the forces see); MF 5.2 / PAC2002 for the limited load.
+      const T fz_target = p.fit_type == FitType::mf62 ? in.ufz : in.fz;
       T lo = T(0);
       T hi = in.romega + p.width_m;
       T rho_dummy = T(0);
@@ -902,6 +971,10 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
   }
 
   if (mirror) mirror_output(out, true);
+  // No NaN or inf leaves: a non-finite output (defective parameters, a NaN input) becomes 0 and
+  // the status says so.
+  const auto non_finite = replace_non_finite(out);
+  out.status = to_status<T>(in.out_of_range, non_finite);
   return out;
 }
 

@@ -127,7 +127,7 @@ void evaluate_four(const MfParameters<float>& params, const std::array<MfInput<f
       std::memcpy(reinterpret_cast<char*>(&outputs[i]) + g * sizeof(float),
                   reinterpret_cast<const char*>(&fields[g]) + i * sizeof(float), sizeof(float));
     }
-    outputs[i].status = out.status[static_cast<int>(i)] ? Status::out_of_range : Status::ok;
+    outputs[i].status = out.status[static_cast<int>(i)];
   }
 }
 

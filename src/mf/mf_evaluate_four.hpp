@@ -23,13 +23,15 @@ inline constexpr bool kVectorLanes = false;
 #endif
 
 /// Evaluates four wheels with the same parameters and options; wheel i is mounted on `sides[i]`
-/// (options.side is not used). Never allocates, never throws; finite inputs give finite outputs.
+/// (options.side is not used). Never allocates, never throws; never returns NaN or inf (a
+/// non-finite output is 0 and its wheel's status Status::non_finite, as evaluate).
 void evaluate_four(const MfParameters<float>& params, const std::array<MfInput<float>, 4>& inputs,
                    const MfOptions& options, const std::array<MountedSide, 4>& sides,
                    std::array<MfOutput<float>, 4>& outputs) noexcept;
 
-/// The same, leaving the results in lanes (wheel i in lane i of every member, status a per-lane
-/// out-of-range mask): for a caller that needs a few outputs, e.g. `out.fx_n[i]`.
+/// The same, leaving the results in lanes (wheel i in lane i of every member, status per-lane
+/// masks, out.status[i] wheel i's Status): for a caller that needs a few outputs, e.g.
+/// `out.fx_n[i]`.
 void evaluate_four(const MfParameters<float>& params, const std::array<MfInput<float>, 4>& inputs,
                    const MfOptions& options, const std::array<MountedSide, 4>& sides,
                    MfOutput<lanes::F4>& outputs) noexcept;

@@ -12,7 +12,8 @@
 //     (the scalar float path's mf_pow does the same with libm's expf/logf; its fz62 calls powf),
 //     sqrt as the vector instruction. Angles beyond the reduction's range and acos (turn slip
 //     only) go lane by lane through libm.
-//   - MfOutput<F4>::status is a Mask4 (lanes whose input left the finite-arithmetic envelope).
+//   - MfOutput<F4>::status is a LaneStatus: two Mask4s, the lanes whose input left the
+//     finite-arithmetic envelope and the lanes with a non-finite output.
 // Not for the ECU's scalar build (Cortex-M4F): there the node evaluates wheel by wheel.
 
 #include <bit>
@@ -249,8 +250,22 @@ inline F4 mf_pow(F4 x, F4 y) {
 }  // namespace tread::mf::lanes
 
 namespace tread::mf {
+
+namespace lanes {
+/// MfOutput<F4>::status: per lane, whether an input left the finite-arithmetic envelope and
+/// whether an output came out non-finite (and was replaced by 0); [i] is lane i's Status.
+struct LaneStatus {
+  Mask4 out_of_range{};
+  Mask4 non_finite{};
+  Status operator[](int i) const {
+    if (non_finite[i]) return Status::non_finite;
+    return out_of_range[i] ? Status::out_of_range : Status::ok;
+  }
+};
+}  // namespace lanes
+
 template <>
 struct StatusFor<lanes::F4> {
-  using type = lanes::Mask4;
+  using type = lanes::LaneStatus;
 };
 }  // namespace tread::mf

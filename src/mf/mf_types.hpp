@@ -14,11 +14,11 @@ struct MfInput {
   T gamma_rad = T(0);  ///< inclination angle
   T vx_mps = T(0);     ///< forward speed of the wheel centre
   T phit_1pm = T(0);   ///< turn slip (used only with MfOptions::use_turn_slip)
-  T p_pa = T(0);       ///< inflation pressure; 0 (or less) → the file's INFLPRES
+  T p_pa = T(0);       ///< inflation pressure; 0 (or less, or NaN) → the file's INFLPRES
 };
 
 /// The type of MfOutput<T>::status: a Status for the scalars; the four-lane scalar of
-/// mf_lanes.hpp holds a per-lane out-of-range mask instead.
+/// mf_lanes.hpp holds per-lane masks instead (lanes::LaneStatus).
 template <typename T>
 struct StatusFor {
   using type = Status;
@@ -45,9 +45,14 @@ struct MfOutput {
   T kya_nprad = T(0);                             ///< cornering stiffness
   T sigmax_m = T(0), sigmay_m = T(0);             ///< relaxation lengths
   T kxk_n = T(0);                                 ///< longitudinal slip stiffness
-  /// ok, or out_of_range when an input lay outside the finite-arithmetic envelope (see
-  /// mf_evaluate.hpp) and was clamped to it. The limits of useMode 1xx do not set it (MFeval
-  /// only warns).
+  /// @retval Status::ok           every output is finite and no input left the envelope
+  /// @retval Status::out_of_range an input lay outside the finite-arithmetic envelope (see
+  ///                              mf_evaluate.hpp) and was clamped to it. The limits of useMode
+  ///                              1xx do not set it (MFeval only warns).
+  /// @retval Status::non_finite   an output came out NaN or infinite (a NaN input, or parameters
+  ///                              no tyre has: VERTICAL_STIFFNESS, FNOMIN or UNLOADED_RADIUS 0,
+  ///                              ...); every such output is 0, the finite ones are kept. Takes
+  ///                              precedence over out_of_range.
   typename StatusFor<T>::type status{};
 };
 

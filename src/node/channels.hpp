@@ -20,6 +20,8 @@ struct TyreResult {
   float my_nm{0.0F};
   float rl_m{0.0F};
   bool clamped{false};  ///< an input was outside the model's limits and was clamped to them
+  /// the model gave a non-finite output (defective parameters, a NaN input): not to be sent
+  bool non_finite{false};
 };
 
 struct ContactResult {

@@ -1,7 +1,9 @@
 #pragma once
 // A road-wheel channel on the Magic Formula core (float): clamps the inputs to the property file's
 // limits (FZMAX, KPUMIN/KPUMAX, ALPMIN/ALPMAX, CAMMIN/CAMMAX) and flags it, then evaluates.
-// Fz < 0 is taken as 0 (lifted wheel: zero forces) and flagged.
+// Fz < 0 is taken as 0 (lifted wheel: zero forces) and flagged. A non-finite model output
+// (defective parameters, a NaN input) is reported as TyreResult::non_finite; the node then sends
+// zeros, flagged.
 // Optional relaxation (mf_transient.hpp): the Magic Formula sees the slips lagging the received
 // (kinematic) ones with the tyre's relaxation lengths; reset() (the node calls it while a wheel is
 // stale) restarts the lag from the next received slips.
@@ -56,7 +58,8 @@ class MfTyreChannel {
     result.mx_nm = out.mx_nm;
     result.my_nm = out.my_nm;
     result.rl_m = out.rl_m;
-    result.clamped = result.clamped || out.status != Status::ok;
+    result.clamped = result.clamped || out.status == Status::out_of_range;
+    result.non_finite = out.status == Status::non_finite;
     return result;
   }
 
@@ -190,7 +193,8 @@ class MfTyreChannel {
       r.mx_nm = out.mx_nm[lane];
       r.my_nm = out.my_nm[lane];
       r.rl_m = out.rl_m[lane];
-      r.clamped = clamped[i] || out.status[lane];
+      r.clamped = clamped[i] || out.status.out_of_range[lane];
+      r.non_finite = out.status.non_finite[lane];
       if (first->relaxation_) {
         tyres[i].transient_.set_relaxation_lengths(out.sigmax_m[lane], out.sigmay_m[lane]);
       }

@@ -153,13 +153,15 @@ class Node {
       proto::WheelOutput& out = outputs_.wheels[i];
       const TyreResult& r = results[i];
       out = proto::WheelOutput{r.fx_n, r.fy_n, r.mz_nm, r.mx_nm, r.my_nm, r.rl_m, 0};
-      if (!all_finite(out)) {
-        ++counters_.non_finite_outputs;
-        out = proto::WheelOutput{};
-      }
       if (r.clamped) {
         out.status = proto::kStatusClamped;
         clamp_mask = static_cast<std::uint8_t>(clamp_mask | bit);
+      }
+      if (r.non_finite || !all_finite(out)) {  // zeros, flagged as an output that did not fit
+        ++counters_.non_finite_outputs;
+        const std::uint8_t status = out.status;
+        out = proto::WheelOutput{};
+        out.status = static_cast<std::uint8_t>(status | proto::kStatusOutOfRange);
       }
     }
     for (std::size_t j = 0; j < config_.wheelsets; ++j) {
@@ -179,13 +181,15 @@ class Node {
       const ContactResult r = contacts_[j].evaluate(latest_.wheelsets[j]);
       out = proto::WheelsetOutput{r.r_left_mm,      r.r_right_mm,      r.delta_r_mm,
                                   r.gamma_left_rad, r.gamma_right_rad, 0};
-      if (!all_finite(out)) {
-        ++counters_.non_finite_outputs;
-        out = proto::WheelsetOutput{};
-      }
       if (r.clamped) {
         out.status = proto::kStatusClamped;
         clamp_mask = static_cast<std::uint8_t>(clamp_mask | bit);
+      }
+      if (!all_finite(out)) {  // zeros, flagged as an output that did not fit
+        ++counters_.non_finite_outputs;
+        const std::uint8_t status = out.status;
+        out = proto::WheelsetOutput{};
+        out.status = static_cast<std::uint8_t>(status | proto::kStatusOutOfRange);
       }
     }
     counters_.stale_events += static_cast<std::uint64_t>(std::popcount(stale_mask));

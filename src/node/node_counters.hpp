@@ -15,11 +15,12 @@ struct NodeCounters {
   std::uint64_t rx_error_frames{0};
   std::uint64_t lost_frames{0};  ///< gaps in accepted counters (frames the bus lost)
   std::uint64_t tx_frames{0};
-  std::uint64_t stale_events{0};        ///< channel-cycles spent stale
-  std::uint64_t clamp_events{0};        ///< channel-cycles with clamped inputs
-  std::uint64_t saturated_outputs{0};   ///< frames with a saturated output signal
-  std::uint64_t non_finite_outputs{0};  ///< channel results replaced by zeros (never expected)
-  std::uint64_t overruns{0};            ///< deadlines missed (reported by the runner)
+  std::uint64_t stale_events{0};       ///< channel-cycles spent stale
+  std::uint64_t clamp_events{0};       ///< channel-cycles with clamped inputs
+  std::uint64_t saturated_outputs{0};  ///< frames with a saturated output signal
+  /// channel results replaced by zeros and flagged (status bit 3): a non-finite model output
+  std::uint64_t non_finite_outputs{0};
+  std::uint64_t overruns{0};  ///< deadlines missed (reported by the runner)
 
   [[nodiscard]] std::uint64_t rx_rejected() const noexcept {
     return rx_bad_length + rx_bad_crc + rx_bad_counter;

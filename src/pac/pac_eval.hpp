@@ -5,7 +5,8 @@
 // Units: Fz [N] → kN, κ [-] → %, α, γ [rad] → degrees. Inputs are clamped to the limits in
 // PacParams (Fz to [0, fz_max_n], |κ| ≤ kappa_max, |α| ≤ alpha_max_rad, |γ| ≤ gamma_max_rad);
 // Fz ≤ 0 gives all-zero outputs. PacOutput::status tells whether an input was clamped
-// (out_of_range) or not finite (invalid_argument, all outputs 0).
+// (out_of_range) or not finite (invalid_argument, all outputs 0), or an output came out NaN or
+// infinite (non_finite: that output is 0).
 //
 // Combined slip. The Adams Tire help text for the PAC89/PAC94 combined-slip mode could not be
 // consulted while writing this; we use the slip-vector ("friction circle in slip space")
@@ -18,6 +19,8 @@
 //
 // Mx = −Fz · Fy / C_Fα (seed eq. 50–51; 0 when lateral_stiffness_npm is 0) and My = f · Fz · R
 // (seed eq. 52, rolling resistance coefficient f and unloaded radius R).
+
+#include <initializer_list>
 
 #include "pac/pac_math.hpp"
 #include "pac/pac_params.hpp"
@@ -88,6 +91,16 @@ PacOutput<T> evaluate(const PacParams<T>& p, const PacInput<T>& in, Slip slip) {
   }
   out.mx_nm = -fz_n * div_or_zero(out.fy_n, p.lateral_stiffness_npm);
   out.my_nm = p.rolling_resistance * fz_n * p.unloaded_radius_m;
+  // No NaN or inf leaves: coefficients no tyre has (e.g. b5 = −1e3: e^(−b5 Fz) overflows) make
+  // such an output 0 and the status non_finite.
+  bool non_finite = false;
+  for (T* v : {&out.fx_n, &out.fy_n, &out.mz_nm, &out.mx_nm, &out.my_nm}) {
+    if (!is_finite(*v)) {
+      *v = T(0);
+      non_finite = true;
+    }
+  }
+  if (non_finite) out.status = Status::non_finite;
   return out;
 }
 

@@ -51,9 +51,13 @@ struct PacOutput {
   T mz_nm{0};
   T mx_nm{0};
   T my_nm{0};
-  /// ok; out_of_range: an input lay outside the limits and was clamped (outputs valid for the
-  /// clamped input; Fz < 0 counts, Fz = 0 does not); invalid_argument: an input was NaN or
-  /// infinite (all outputs 0).
+  /// @retval Status::ok               every input within the limits, every output finite
+  /// @retval Status::out_of_range     an input lay outside the limits and was clamped (outputs
+  ///                                  valid for the clamped input; Fz < 0 counts, Fz = 0 does not)
+  /// @retval Status::invalid_argument an input was NaN or infinite (all outputs 0)
+  /// @retval Status::non_finite       an output came out NaN or infinite (coefficients no tyre
+  ///                                  has); each such output is 0. Takes precedence over
+  ///                                  out_of_range.
   Status status{Status::ok};
 };
 

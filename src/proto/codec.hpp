@@ -45,10 +45,12 @@ struct RigData {
 // ---- node -> rig ------------------------------------------------------------------------------
 /// Status bits of a wheel / wheelset output.
 enum StatusBits : std::uint8_t {
-  kStatusStale = 1U << 0U,       ///< no valid input within the timeout: outputs are zero
-  kStatusClamped = 1U << 1U,     ///< an input was outside the model's limits and was clamped
-  kStatusDisabled = 1U << 2U,    ///< the node is not enabled (Command.Enable = 0)
-  kStatusOutOfRange = 1U << 3U,  ///< an output did not fit its signal and was saturated
+  kStatusStale = 1U << 0U,     ///< no valid input within the timeout: outputs are zero
+  kStatusClamped = 1U << 1U,   ///< an input was outside the model's limits and was clamped
+  kStatusDisabled = 1U << 2U,  ///< the node is not enabled (Command.Enable = 0)
+  /// an output did not fit its signal and was saturated, or the model's output was not finite
+  /// (then every output of the channel is 0)
+  kStatusOutOfRange = 1U << 3U,
 };
 
 struct WheelOutput {

@@ -10,13 +10,15 @@ namespace {
 TEST(Status, EveryStatusHasADistinctName) {
   const Status all[] = {Status::ok,          Status::out_of_range, Status::invalid_argument,
                         Status::bad_crc,     Status::bad_counter,  Status::timeout,
-                        Status::would_block, Status::io_error,     Status::unsupported};
+                        Status::would_block, Status::io_error,     Status::unsupported,
+                        Status::non_finite};
   for (std::size_t i = 0; i < std::size(all); ++i) {
     for (std::size_t j = i + 1; j < std::size(all); ++j) {
       EXPECT_STRNE(to_string(all[i]), to_string(all[j]));
     }
   }
   EXPECT_STREQ(to_string(Status::bad_crc), "bad CRC");
+  EXPECT_STREQ(to_string(Status::non_finite), "non-finite result");
 }
 
 TEST(Result, OkOnlyWithStatusOk) {

@@ -516,8 +516,8 @@ TEST(MfEvaluateFour, ResultsLeftInLanesEqualTheUnpackedResults) {
           EXPECT_EQ(std::bit_cast<std::uint32_t>(u), std::bit_cast<std::uint32_t>(l))
               << file.name << " " << columns_f[c].name << " lane " << lane;
         }
-        EXPECT_EQ(packed.status[lane], unpacked[k].status == Status::out_of_range);
-        out_of_range_lanes += packed.status[lane] ? 1 : 0;
+        EXPECT_EQ(packed.status[lane], unpacked[k].status);
+        out_of_range_lanes += packed.status[lane] == Status::out_of_range ? 1 : 0;
       }
     }
   }

@@ -132,6 +132,35 @@ TEST(MfTyreChannel, LiftedAndStandingWheelsGiveFiniteZeroForces) {
   expect_close(r[1], tyres[1].evaluate(inputs[1], 0.001F), 1);
 }
 
+TEST(MfTyreChannel, DefectiveTyreDataIsReportedNonFiniteNeverNan) {
+  // VERTICAL_STIFFNESS = 0 (a defective file): the radii come out non-finite.
+  mf::MfParameters<double> d;
+  d.vertical_stiffness_npm = 0.0;
+  const mf::MfParameters<float> defective = mf::convert_parameters<float>(d);
+  for (const bool relaxation : {false, true}) {
+    const mf::MfOptions o = mf::options_from_use_mode(111).value;
+    std::array<MfTyreChannel, 4> tyres{
+        MfTyreChannel(defective, o, relaxation), MfTyreChannel(defective, o, relaxation),
+        MfTyreChannel(defective, o, relaxation), MfTyreChannel(defective, o, relaxation)};
+    const auto inputs = driving_inputs();
+    std::array<TyreResult, 4> together{};
+    MfTyreChannel::evaluate_wheels(tyres, inputs, 0x0F, 0.001F, together);
+    for (std::size_t i = 0; i < 4; ++i) {
+      const TyreResult alone = tyres[i].evaluate(inputs[i], 0.001F);
+      for (const TyreResult& r : {together[i], alone}) {
+        EXPECT_TRUE(r.non_finite) << i << " relaxation " << relaxation;
+        for (const float v : {r.fx_n, r.fy_n, r.mz_nm, r.mx_nm, r.my_nm, r.rl_m}) {
+          EXPECT_TRUE(std::isfinite(v)) << i;
+        }
+      }
+    }
+  }
+  // The sound tyre is not flagged.
+  const mf::MfOptions o = mf::options_from_use_mode(111).value;
+  MfTyreChannel sound(book_tyre(), o);
+  EXPECT_FALSE(sound.evaluate(driving_inputs()[0], 0.001F).non_finite);
+}
+
 TEST(MfTyreChannel, RelaxationLagsASlipStepWithTheRelaxationLength) {
   // A step in α at 20 m/s: the lateral force rises as 1 − e^(−Vx·t/σα) (σα from the tyre), equal
   // four at a time and one by one; reset() restarts from the received slips (no lag).

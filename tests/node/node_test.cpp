@@ -161,6 +161,26 @@ TEST_P(NodeLayout, OutOfRangeInputsAreClampedAndFlagged) {
   EXPECT_EQ(out.status.clamp_mask, (1U << 2U) | (1U << 4U));
 }
 
+TEST_P(NodeLayout, NonFiniteTyreResultIsSentAsZerosFlagged) {
+  Harness h(GetParam());
+  proto::RigData in = h.inputs();
+  in.wheels[1].kappa = 1.4F;  // clamped as well: both bits
+  h.tyres[1].defective = true;
+  h.tyres[3].defective = true;
+  const proto::NodeData out = h.cycle(1 * kMs, in);
+  for (const std::size_t i : {std::size_t{1}, std::size_t{3}}) {
+    const proto::WheelOutput& w = out.wheels[i];
+    for (const float v : {w.fx_n, w.fy_n, w.mz_nm, w.mx_nm, w.my_nm, w.rl_m}) {
+      EXPECT_EQ(v, 0.0F) << i;
+    }
+  }
+  EXPECT_EQ(out.wheels[1].status, proto::kStatusClamped | proto::kStatusOutOfRange);
+  EXPECT_EQ(out.wheels[3].status, proto::kStatusOutOfRange);
+  EXPECT_EQ(out.wheels[0].status, 0U);
+  EXPECT_NE(out.wheels[0].fy_n, 0.0F);
+  EXPECT_EQ(h.node.counters().non_finite_outputs, 2U);
+}
+
 TEST_P(NodeLayout, CommandDisablesEnablesAndResets) {
   Harness h(GetParam());
   const proto::RigData in = h.inputs();

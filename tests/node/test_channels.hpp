@@ -7,6 +7,7 @@ namespace tread::testing {
 struct LinearTyre {
   int resets = 0;
   float last_dt_s = -1.0F;
+  bool defective = false;  ///< report a non-finite model result (as a tyre with defective data)
   node::TyreResult evaluate(const proto::WheelInput& in, float dt_s) {
     last_dt_s = dt_s;
     node::TyreResult r;
@@ -21,6 +22,7 @@ struct LinearTyre {
     r.mx_nm = 0.001F * in.fz_n;
     r.my_nm = -0.01F * in.vx_mps;
     r.rl_m = 0.3F;
+    r.non_finite = defective;
     return r;
   }
   void reset() { ++resets; }

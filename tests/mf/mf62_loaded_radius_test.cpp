@@ -1,0 +1,158 @@
+// MF 6.2 loaded radius above FZMAX (useMode 1xx). MFeval 4.x solves MF 6.2's Rl for the load as
+// given (its calculateRhoRl62 takes the unlimited uFz), while the forces, moments and Cz see the
+// load limited to FZMAX; MF 6.1 solves its quadratic for the limited load, so its Rl stops
+// changing at FZMAX. There is no MATLAB/Octave here to run MFeval, so the expected MF 6.2 Rl is
+// derived independently: the MF-Tyre 6.2 vertical force Fz62(Rl) (deflection with the camber and
+// lateral-force terms, written out below from the equations, not from tread's fz62) is solved for
+// Rl by a secant iteration in double, with ω, Fx, Fy and γ taken from the evaluation.
+// Before, tread solved for the limited load: with MagicFormula62_Parameters.tir at Fz = 27 000 N
+// (1.5·FZMAX), κ = α = γ = 0, Vx = 16.7 m/s, Rl was 0.34050 m instead of 0.31827 m (22 mm high).
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <filesystem>
+
+#include "golden_path.hpp"
+#include "mf/mf_evaluate.hpp"
+#include "mf/mf_evaluate_four.hpp"
+#include "mf/mf_parameters_from_tir.hpp"
+
+namespace tread::mf {
+namespace {
+
+MfParameters<double> load(const char* name) {
+  return load_mf_parameters(testing::refdata(std::string("tir/") + name)).params;
+}
+
+/// The MF-Tyre 6.2 vertical force at loaded radius `rl` (MFeval's calculateFz62 equations).
+double fz62_reference(const MfParameters<double>& p, double gamma, double omega, double dpi,
+                      double fx, double fy, double rl) {
+  const double r0 = p.unloaded_radius_m;
+  const double fz0 = p.fnomin_n;
+  const double romega =
+      r0 * (p.q_re0 + p.q_v1 * (omega * r0 / p.longvl_mps) * (omega * r0 / p.longvl_mps));
+  const double a = p.vertical_stiffness_npm * r0 / fz0;
+  const double q_fz1 = std::sqrt(a * a - 4.0 * p.q_fz2);
+  const double sfyg =
+      (p.q_fys1 + p.q_fys2 * (rl / romega) + p.q_fys3 * (rl / romega) * (rl / romega)) * gamma;
+  const double rho_free = std::max(romega - rl, 0.0);
+  const double rtw = (1.075 - 0.5 * p.aspect_ratio) * p.width_m;
+  double rho_camber = 0.0;
+  if (std::fabs(gamma) > 0.0) {
+    const double num = (p.q_cam1 * rl + p.q_cam2 * rl * rl) * gamma;
+    const double den = (p.q_cam1 * romega + p.q_cam2 * romega * romega) * gamma;
+    rho_camber = (num / den) * (num / den) * (rtw / 8.0) * std::fabs(std::tan(gamma));
+  }
+  rho_camber -= p.q_cam3 * rho_free * std::fabs(gamma);
+  const double rho = std::max(rho_free + rho_camber, 0.0);
+  const double fcy = std::pow(rho / r0, p.q_fcy2) * p.q_fcy * (fy - sfyg) / fz0;
+  const double fcx = p.q_fcx * fx / fz0;
+  const double fcorr =
+      (1.0 + p.q_v2 * (r0 / p.longvl_mps) * std::fabs(omega) - fcx * fcx - fcy * fcy) *
+      (1.0 + p.pfz1 * dpi);
+  return fcorr * (q_fz1 * (rho / r0) + p.q_fz2 * (rho / r0) * (rho / r0)) * fz0;
+}
+
+/// Rl with fz62_reference(Rl) = fz_target: secant from 0.95·R0 and R0.
+double rl_reference(const MfParameters<double>& p, const MfOutput<double>& out, double fz_target) {
+  const double dpi = (out.p_pa - p.nompres_pa) / p.nompres_pa;
+  const auto f = [&](double rl) {
+    return fz62_reference(p, out.gamma_rad, out.omega_radps, dpi, out.fx_n, out.fy_n, rl) -
+           fz_target;
+  };
+  double x0 = 0.95 * p.unloaded_radius_m;
+  double x1 = p.unloaded_radius_m;
+  double y0 = f(x0);
+  double y1 = f(x1);
+  for (int i = 0; i < 100 && std::fabs(y1) > 1e-9 * p.fnomin_n; ++i) {
+    const double x2 = x1 - (x1 - x0) * y1 / (y1 - y0);
+    x0 = x1;
+    y0 = y1;
+    x1 = x2;
+    y1 = f(x1);
+  }
+  return x1;
+}
+
+MfInput<double> at_load(double fz_n, double kappa, double alpha, double gamma) {
+  MfInput<double> in;
+  in.fz_n = fz_n;
+  in.kappa = kappa;
+  in.alpha_rad = alpha;
+  in.gamma_rad = gamma;
+  in.vx_mps = 16.7;
+  return in;
+}
+
+constexpr std::array<double, 6> kLoads = {6000.0, 17999.0, 18000.0, 20000.0, 24000.0, 27000.0};
+
+TEST(Mf62LoadedRadius, AboveFzmaxSolvedForTheLoadAsGiven) {
+  const MfParameters<double> p = load("MagicFormula62_Parameters.tir");
+  ASSERT_EQ(p.fit_type, FitType::mf62);
+  ASSERT_DOUBLE_EQ(p.fzmax_n, 18000.0);
+  for (const int mode : {111, 121, 211}) {
+    const MfOptions o = options_from_use_mode(mode).value;
+    for (const double fz : kLoads) {
+      for (const auto& slip :
+           {std::array<double, 3>{0, 0, 0}, std::array<double, 3>{0.05, 0.1, 0.02},
+            std::array<double, 3>{-0.1, -0.05, -0.03}}) {
+        const MfOutput<double> out = evaluate(p, at_load(fz, slip[0], slip[1], slip[2]), o);
+        ASSERT_EQ(out.status, Status::ok);
+        const double expected = rl_reference(p, out, fz);
+        EXPECT_NEAR(out.rl_m, expected, 1e-9)
+            << "mode " << mode << " Fz " << fz << " kappa " << slip[0] << " alpha " << slip[1];
+        // Cz with the load the forces see (limited with the limits on), as MFeval.
+        const double fz_limited = o.use_limits ? std::min(fz, p.fzmax_n) : fz;
+        EXPECT_NEAR(out.cz_npm, fz_limited / out.rho_m, 1e-6 * out.cz_npm);
+      }
+    }
+  }
+}
+
+TEST(Mf62LoadedRadius, KeepsFallingAboveFzmaxWhileMf61Stops) {
+  const MfParameters<double> p62 = load("MagicFormula62_Parameters.tir");
+  const MfParameters<double> p61 = load("MagicFormula61_Parameters.tir");
+  const MfOptions o = options_from_use_mode(111).value;
+  const auto rl = [&o](const MfParameters<double>& p, double fz) {
+    return evaluate(p, at_load(fz, 0, 0, 0), o).rl_m;
+  };
+  // MF 6.1: the quadratic in the limited load, as MFeval's calculateRhoRl61 (only Romega still
+  // grows a little with ω, which comes from Re at the given load).
+  EXPECT_NEAR(rl(p61, 27000.0), rl(p61, 18000.0), 5e-5);
+  // MF 6.2: about Δ Fz / Cz lower (Cz ≈ 3.2e5 N/m here): 20 mm at 1.5·FZMAX.
+  const double drop = rl(p62, 18000.0) - rl(p62, 27000.0);
+  EXPECT_GT(drop, 0.015);
+  EXPECT_LT(drop, 0.030);
+  // Below FZMAX the two files (same tyre) agree to a fraction of a millimetre.
+  EXPECT_NEAR(rl(p62, 6000.0), rl(p61, 6000.0), 1e-4);
+}
+
+TEST(Mf62LoadedRadius, FloatAndFourLanesAgreeWithDouble) {
+  const MfParameters<double> p = load("MagicFormula62_Parameters.tir");
+  const MfParameters<float> pf = convert_parameters<float>(p);
+  const MfOptions o = options_from_use_mode(111).value;
+  std::array<MfInput<float>, 4> in{};
+  const std::array<double, 4> loads = {6000.0, 18000.0, 24000.0, 27000.0};
+  for (std::size_t k = 0; k < 4; ++k) {
+    in[k].fz_n = static_cast<float>(loads[k]);
+    in[k].kappa = 0.02F;
+    in[k].alpha_rad = 0.05F;
+    in[k].gamma_rad = 0.01F;
+    in[k].vx_mps = 16.7F;
+  }
+  std::array<MfOutput<float>, 4> four{};
+  const std::array<MountedSide, 4> sides{};
+  evaluate_four(pf, in, o, sides, four);
+  for (std::size_t k = 0; k < 4; ++k) {
+    const MfOutput<double> d = evaluate(p, at_load(loads[k], 0.02, 0.05, 0.01), o);
+    const MfOutput<float> f = evaluate(pf, in[k], o);
+    // Float: Fz62 is solved to float's resolution; Fx/Fy differ by ~1e-4 relative.
+    EXPECT_NEAR(f.rl_m, d.rl_m, 2e-5) << loads[k];
+    EXPECT_NEAR(four[k].rl_m, d.rl_m, 2e-5) << loads[k];
+    EXPECT_EQ(four[k].status, Status::ok);
+  }
+}
+
+}  // namespace
+}  // namespace tread::mf
