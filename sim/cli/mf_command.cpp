@@ -73,6 +73,7 @@ void run_mf_eval(const MfEvalArgs& args) {
   mf::MfCsvOptions csv;
   csv.use_float = args.use_float;
   csv.strict = args.strict;
+  csv.tyre_name = args.tir;
   csv.table.separator = separator(args.sep);
   csv.table.convention = *mf::parse_sign_convention(args.convention);
   std::ifstream in(args.input);
