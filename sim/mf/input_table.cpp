@@ -12,7 +12,7 @@ namespace {
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 struct Alias {
-  std::string_view name;  // lower case
+  std::string_view name;  // as shown in help; matched without regard to case
   InputQuantity quantity;
   double to_si;
   std::string_view unit;
@@ -21,45 +21,45 @@ struct Alias {
 // Units of the bare TTC names (FZ, SA, SL, IA, V, P): the FSAE Tire Test Consortium's metric
 // run files (N, deg, 1, deg, km/h, kPa).
 constexpr Alias kAliases[] = {
-    {"fz_n", InputQuantity::fz, 1.0, "N"},
-    {"fz", InputQuantity::fz, 1.0, "N"},
-    {"fzw", InputQuantity::fz, 1.0, "N"},
-    {"load_n", InputQuantity::fz, 1.0, "N"},
-    {"fz_kn", InputQuantity::fz, 1000.0, "kN"},
+    {"Fz_N", InputQuantity::fz, 1.0, "N"},
+    {"FZ", InputQuantity::fz, 1.0, "N"},
+    {"FZW", InputQuantity::fz, 1.0, "N"},
+    {"Load_N", InputQuantity::fz, 1.0, "N"},
+    {"Fz_kN", InputQuantity::fz, 1000.0, "kN"},
     {"kappa", InputQuantity::kappa, 1.0, "1"},
-    {"sl", InputQuantity::kappa, 1.0, "1"},
-    {"longslip", InputQuantity::kappa, 1.0, "1"},
-    {"slipratio", InputQuantity::kappa, 1.0, "1"},
+    {"SL", InputQuantity::kappa, 1.0, "1"},
+    {"LongSlip", InputQuantity::kappa, 1.0, "1"},
+    {"SlipRatio", InputQuantity::kappa, 1.0, "1"},
     {"kappa_pct", InputQuantity::kappa, 0.01, "%"},
-    {"sl_pct", InputQuantity::kappa, 0.01, "%"},
+    {"SL_pct", InputQuantity::kappa, 0.01, "%"},
     {"alpha_rad", InputQuantity::alpha, 1.0, "rad"},
     {"alpha", InputQuantity::alpha, 1.0, "rad"},
-    {"sa_rad", InputQuantity::alpha, 1.0, "rad"},
+    {"SA_rad", InputQuantity::alpha, 1.0, "rad"},
     {"alpha_deg", InputQuantity::alpha, kDeg, "deg"},
-    {"sa", InputQuantity::alpha, kDeg, "deg"},
-    {"sa_deg", InputQuantity::alpha, kDeg, "deg"},
+    {"SA", InputQuantity::alpha, kDeg, "deg"},
+    {"SA_deg", InputQuantity::alpha, kDeg, "deg"},
     {"gamma_rad", InputQuantity::gamma, 1.0, "rad"},
     {"gamma", InputQuantity::gamma, 1.0, "rad"},
-    {"ia_rad", InputQuantity::gamma, 1.0, "rad"},
+    {"IA_rad", InputQuantity::gamma, 1.0, "rad"},
     {"gamma_deg", InputQuantity::gamma, kDeg, "deg"},
-    {"ia", InputQuantity::gamma, kDeg, "deg"},
-    {"ia_deg", InputQuantity::gamma, kDeg, "deg"},
+    {"IA", InputQuantity::gamma, kDeg, "deg"},
+    {"IA_deg", InputQuantity::gamma, kDeg, "deg"},
     {"camber_deg", InputQuantity::gamma, kDeg, "deg"},
-    {"vx_mps", InputQuantity::vx, 1.0, "m/s"},
-    {"vx", InputQuantity::vx, 1.0, "m/s"},
-    {"v_mps", InputQuantity::vx, 1.0, "m/s"},
-    {"vx_kph", InputQuantity::vx, 1.0 / 3.6, "km/h"},
-    {"vx_kmh", InputQuantity::vx, 1.0 / 3.6, "km/h"},
-    {"v", InputQuantity::vx, 1.0 / 3.6, "km/h"},
-    {"v_kph", InputQuantity::vx, 1.0 / 3.6, "km/h"},
-    {"v_kmh", InputQuantity::vx, 1.0 / 3.6, "km/h"},
+    {"Vx_mps", InputQuantity::vx, 1.0, "m/s"},
+    {"Vx", InputQuantity::vx, 1.0, "m/s"},
+    {"V_mps", InputQuantity::vx, 1.0, "m/s"},
+    {"Vx_kph", InputQuantity::vx, 1.0 / 3.6, "km/h"},
+    {"Vx_kmh", InputQuantity::vx, 1.0 / 3.6, "km/h"},
+    {"V", InputQuantity::vx, 1.0 / 3.6, "km/h"},
+    {"V_kph", InputQuantity::vx, 1.0 / 3.6, "km/h"},
+    {"V_kmh", InputQuantity::vx, 1.0 / 3.6, "km/h"},
     {"phit_1pm", InputQuantity::phit, 1.0, "1/m"},
     {"phit", InputQuantity::phit, 1.0, "1/m"},
-    {"p_pa", InputQuantity::pressure, 1.0, "Pa"},
-    {"p_kpa", InputQuantity::pressure, 1000.0, "kPa"},
-    {"p", InputQuantity::pressure, 1000.0, "kPa"},
-    {"p_bar", InputQuantity::pressure, 1.0e5, "bar"},
-    {"p_psi", InputQuantity::pressure, 6894.757293168361, "psi"},  // 1 psi = 6894.757... Pa
+    {"P_Pa", InputQuantity::pressure, 1.0, "Pa"},
+    {"P_kPa", InputQuantity::pressure, 1000.0, "kPa"},
+    {"P", InputQuantity::pressure, 1000.0, "kPa"},
+    {"P_bar", InputQuantity::pressure, 1.0e5, "bar"},
+    {"P_psi", InputQuantity::pressure, 6894.757293168361, "psi"},  // 1 psi = 6894.757... Pa
 };
 
 constexpr std::array<std::string_view, kInputQuantityCount> kSiNames = {
@@ -91,9 +91,29 @@ std::string_view si_name(InputQuantity q) {
 std::optional<InputColumn> recognise_input_column(std::string_view name) {
   const std::string key = lower(trim(name));
   for (const Alias& a : kAliases) {
-    if (a.name == key) return InputColumn{a.quantity, a.to_si, a.unit};
+    if (lower(a.name) == key) return InputColumn{a.quantity, a.to_si, a.unit};
   }
   return std::nullopt;
+}
+
+std::string input_column_help() {
+  std::string help;
+  for (std::size_t q = 0; q < kInputQuantityCount; ++q) {
+    if (!help.empty()) help += "; ";
+    std::string_view unit;
+    for (const Alias& a : kAliases) {
+      if (index(a.quantity) != q) continue;
+      if (a.unit != unit) {
+        if (!unit.empty()) help += " [" + std::string(unit) + "], ";
+        unit = a.unit;
+      } else {
+        help += "|";
+      }
+      help += a.name;
+    }
+    help += " [" + std::string(unit) + "]";
+  }
+  return help;
 }
 
 std::optional<SignConvention> parse_sign_convention(std::string_view text) {

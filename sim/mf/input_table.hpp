@@ -60,6 +60,10 @@ struct InputColumn {
 /// The input a column name stands for (case-insensitive, surrounding blanks ignored).
 std::optional<InputColumn> recognise_input_column(std::string_view name);
 
+/// The accepted names grouped by quantity and unit, for --help ("Fz_N|FZ|FZW|Load_N [N], Fz_kN
+/// [kN]; kappa|SL|... [1], ...").
+std::string input_column_help();
+
 enum class SignConvention { iso_w, sae, adapted_iso };
 
 /// "iso-w", "sae", "adapted-iso" (case-insensitive).

@@ -88,6 +88,26 @@ TEST(InputTable, CaseInsensitiveUnitsInNamesAndTabs) {
   EXPECT_DOUBLE_EQ((*tb.next())[InputQuantity::pressure], 220000.0);
 }
 
+TEST(InputTable, HelpListsEveryNameByUnit) {
+  const std::string help = tread::mf::input_column_help();
+  for (const char* group : {"Fz_N|FZ|FZW|Load_N [N], Fz_kN [kN]", "alpha_deg|SA|SA_deg [deg]",
+                            "Vx_kph|Vx_kmh|V|V_kph|V_kmh [km/h]", "P_kPa|P [kPa]", "P_psi [psi]"}) {
+    EXPECT_NE(help.find(group), std::string::npos) << group << "\n" << help;
+  }
+  // Every name in the help is recognised.
+  std::string name;
+  for (char c : help + ";") {
+    if (c == '|' || c == ' ' || c == ';' || c == ',') {
+      if (!name.empty() && name.front() != '[') {
+        EXPECT_TRUE(tread::mf::recognise_input_column(name)) << name;
+      }
+      name.clear();
+    } else {
+      name += c;
+    }
+  }
+}
+
 TEST(InputTable, ExplicitSeparatorAndAdaptedIso) {
   std::istringstream in("Fz_N;kappa;alpha_rad;gamma_rad;Vx_mps\n4000;0.1;0.05;0.02;10\n");
   InputTableOptions o;
