@@ -169,6 +169,7 @@ InputTable::InputTable(std::istream& in, std::string name, InputTableOptions opt
   std::string line;
   while (std::getline(in_, line)) {
     ++line_;
+    if (line_ == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // UTF-8 BOM
     const std::string t = trim(line);
     if (t.empty() || t.front() == '#') continue;
     separator_ = options_.separator;

@@ -18,7 +18,8 @@
 //
 // Separator: ',' (default), ';' or tab, chosen with `separator` or detected from the header line
 // (';' or tab when the header holds no ','). With ';' or tab a cell's decimal comma is read as a
-// point ("0,05" = 0.05). Blank lines and lines starting with '#' are skipped. Columns that name no
+// point ("0,05" = 0.05). A UTF-8 byte order mark (spreadsheet exports) is skipped, as are blank
+// lines and lines starting with '#'. Columns that name no
 // input are ignored (and listed by ignored_columns()).
 //
 // Sign conventions (the file's, converted to ISO-W = TYDEX W, the axes of MFeval and of every

@@ -108,6 +108,16 @@ TEST(InputTable, HelpListsEveryNameByUnit) {
   }
 }
 
+TEST(InputTable, Utf8ByteOrderMarkBeforeTheHeader) {
+  std::istringstream in(
+      "\xEF\xBB\xBF"
+      "FZ,SL,SA,IA,V\n1000,0,1,0,36\n");
+  InputTable t(in, "excel.csv", {});
+  EXPECT_TRUE(t.ignored_columns().empty());
+  EXPECT_EQ(t.column_name(InputQuantity::fz), "FZ");
+  EXPECT_DOUBLE_EQ((*t.next())[InputQuantity::fz], 1000.0);
+}
+
 TEST(InputTable, ExplicitSeparatorAndAdaptedIso) {
   std::istringstream in("Fz_N;kappa;alpha_rad;gamma_rad;Vx_mps\n4000;0.1;0.05;0.02;10\n");
   InputTableOptions o;
