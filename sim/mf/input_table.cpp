@@ -62,6 +62,39 @@ constexpr Alias kAliases[] = {
     {"P_psi", InputQuantity::pressure, 6894.757293168361, "psi"},  // 1 psi = 6894.757... Pa
 };
 
+// Units a units row (the line under the header, as in FSAE TTC run files) may name.
+struct UnitName {
+  std::string_view name;  // lower case
+  InputQuantity quantity;
+  double to_si;
+  std::string_view unit;  // as shown
+};
+
+constexpr UnitName kUnits[] = {
+    {"n", InputQuantity::fz, 1.0, "N"},
+    {"kn", InputQuantity::fz, 1000.0, "kN"},
+    {"lbf", InputQuantity::fz, 4.4482216152605, "lbf"},  // 1 lbf = 4.4482216152605 N
+    {"1", InputQuantity::kappa, 1.0, "1"},
+    {"-", InputQuantity::kappa, 1.0, "1"},
+    {"unitless", InputQuantity::kappa, 1.0, "1"},
+    {"%", InputQuantity::kappa, 0.01, "%"},
+    {"deg", InputQuantity::alpha, kDeg, "deg"},
+    {"rad", InputQuantity::alpha, 1.0, "rad"},
+    {"deg", InputQuantity::gamma, kDeg, "deg"},
+    {"rad", InputQuantity::gamma, 1.0, "rad"},
+    {"m/s", InputQuantity::vx, 1.0, "m/s"},
+    {"mps", InputQuantity::vx, 1.0, "m/s"},
+    {"km/h", InputQuantity::vx, 1.0 / 3.6, "km/h"},
+    {"kph", InputQuantity::vx, 1.0 / 3.6, "km/h"},
+    {"kmh", InputQuantity::vx, 1.0 / 3.6, "km/h"},
+    {"mph", InputQuantity::vx, 0.44704, "mph"},  // 1 mph = 0.44704 m/s
+    {"1/m", InputQuantity::phit, 1.0, "1/m"},
+    {"pa", InputQuantity::pressure, 1.0, "Pa"},
+    {"kpa", InputQuantity::pressure, 1000.0, "kPa"},
+    {"bar", InputQuantity::pressure, 1.0e5, "bar"},
+    {"psi", InputQuantity::pressure, 6894.757293168361, "psi"},
+};
+
 constexpr std::array<std::string_view, kInputQuantityCount> kSiNames = {
     "Fz_N", "kappa", "alpha_rad", "gamma_rad", "Vx_mps", "phit_1pm", "P_Pa"};
 
@@ -225,6 +258,43 @@ std::vector<std::string> InputTable::split(const std::string& line) const {
   return cells;
 }
 
+bool InputTable::apply_units_row(const std::vector<std::string>& cells) {
+  // A units row: every input column holds text that is not a number (or "1").
+  bool any = false;
+  for (std::size_t q = 0; q < kInputQuantityCount; ++q) {
+    if (column_[q] < 0) continue;
+    const std::string& cell = cells[static_cast<std::size_t>(column_[q])];
+    if (cell == "1") continue;  // the unit of a ratio, or a number: decided by the others
+    if (cell.empty() || tir::parse_number(cell)) return false;
+    any = true;
+  }
+  if (!any) return false;
+  for (std::size_t q = 0; q < kInputQuantityCount; ++q) {
+    if (column_[q] < 0) continue;
+    std::string unit = lower(cells[static_cast<std::size_t>(column_[q])]);
+    if (unit.size() >= 2 && (unit.front() == '[' || unit.front() == '(')) {
+      unit = trim(std::string_view(unit).substr(1, unit.size() - 2));
+    }
+    const UnitName* found = nullptr;
+    std::string expected;
+    for (const UnitName& u : kUnits) {
+      if (index(u.quantity) != q) continue;
+      if (u.name == unit) found = &u;
+      expected += (expected.empty() ? "" : ", ") + std::string(u.name);
+    }
+    if (found == nullptr) {
+      throw tir::TirError(name_, line_,
+                          "unit '" + cells[static_cast<std::size_t>(column_[q])] + "' of column '" +
+                              header_[static_cast<std::size_t>(column_[q])] +
+                              "' is not a unit of " + std::string(kSiNames[q]) + " (expected " +
+                              expected + ")");
+    }
+    spec_[q].to_si = found->to_si;
+    spec_[q].unit = found->unit;
+  }
+  return true;
+}
+
 std::optional<InputRow> InputTable::next() {
   std::string line;
   while (std::getline(in_, line)) {
@@ -236,6 +306,10 @@ std::optional<InputRow> InputTable::next() {
       throw tir::TirError(
           name_, line_,
           "expected " + std::to_string(cells_) + " cells, found " + std::to_string(cells.size()));
+    }
+    if (!seen_row_) {
+      seen_row_ = true;
+      if (apply_units_row(cells)) continue;
     }
     InputRow row;
     row.line = line_;

@@ -140,7 +140,6 @@ MfCsvReport evaluate_csv(const MfParameters<double>& params, const MfOptions& op
   const MfParameters<float> params_f = convert_parameters<float>(params);
   InputTable table(in, in_name, csv.table);
   MfCsvReport report;
-  report.mapping = table.mapping();
   report.ignored = table.ignored_columns();
 
   using Q = InputQuantity;
@@ -196,6 +195,7 @@ MfCsvReport evaluate_csv(const MfParameters<double>& params, const MfOptions& op
   for (const MfRangeCount& c : counts) {
     if (c.rows > 0) report.out_of_range.push_back(c);
   }
+  report.mapping = table.mapping();  // after a units row, if any, was read
   return report;
 }
 
