@@ -49,8 +49,8 @@ void run_synthesize(const FitCliState& s) {
   grid.noise_rel = s.noise;
   const fit::MeasurementSet data = fit::synthesize_measurements(truth.params, grid, s.seed);
   std::ofstream out(s.output);
-  out << "# synthetic measurements from " << s.synthesize << ", noise " << s.noise
-      << " x peak per channel and load, seed " << s.seed << "\n";
+  out << "# synthetic measurements (ISO-W axes, SI units) from " << s.synthesize << ", noise "
+      << s.noise << " x peak per channel and load, seed " << s.seed << "\n";
   fit::write_measurement_csv(data, out);
   if (!out) throw std::runtime_error(s.output + ": cannot write");
   std::cerr << "tread fit: " << data.points.size() << " synthetic points -> " << s.output << "\n";
@@ -178,9 +178,9 @@ void add_fit_command(CLI::App& app) {
       ->check(CLI::IsMember({"simple", "pac2002", "mf61"}))
       ->capture_default_str();
   fit->add_option("--input", state.input,
-                  "measurements: .csv (the input columns tread mf eval accepts, e.g. Fz_N|FZ, "
-                  "kappa|SL, alpha_rad|alpha_deg|SA, gamma_rad|IA, Vx_mps|V, and Fx_N|FX, "
-                  "Fy_N|FY, Mz_Nm|MZ) or .tdx")
+                  "measurements: .tdx, or .csv with Fx_N|FX|FXW, Fy_N|FY|FYW, Mz_Nm|MZ|MZW [N, "
+                  "N m] and the inputs: " +
+                      mf::input_column_help())
       ->check(CLI::ExistingFile);
   fit->add_option("--output", state.output,
                   "result: per-load constants (.csv) for simple, a .tir for mf61/pac2002, the "

@@ -26,13 +26,11 @@ constexpr const char* kAxesNote =
     "Axes: ISO-W (TYDEX W, as MFeval): x forward, y left, z up; load Fz > 0; alpha > 0 when the "
     "contact patch moves towards +y (a normal tyre gives Fy < 0, Mz > 0); SI units.";
 
-constexpr const char* kInputHelp =
-    "CSV of inputs. Column names (any case, any order): Fz_N|Fz|FZ|FZW [N], Fz_kN; "
-    "kappa|SL|LongSlip|SlipRatio [1], kappa_pct|SL_pct [%]; alpha_rad|alpha|SA_rad [rad], "
-    "alpha_deg|SA|SA_deg [deg]; gamma_rad|gamma|IA_rad [rad], gamma_deg|IA|IA_deg|camber_deg "
-    "[deg]; Vx_mps|Vx|V_mps [m/s], Vx_kph|Vx_kmh|V|V_kph|V_kmh [km/h]; optional phit_1pm|phit "
-    "[1/m]; optional P_Pa [Pa], P_kPa|P [kPa], P_bar, P_psi (absent or 0: the file's INFLPRES). "
-    "Other columns are ignored";
+std::string input_help() {
+  return "CSV of inputs. Column names (any case, any order; Fz, kappa, alpha, gamma, Vx required, "
+         "phit and P optional, P absent or 0: the file's INFLPRES; other columns ignored): " +
+         mf::input_column_help();
+}
 
 struct MfEvalArgs {
   std::string tir;
@@ -73,6 +71,7 @@ void run_mf_eval(const MfEvalArgs& args) {
   mf::MfCsvOptions csv;
   csv.use_float = args.use_float;
   csv.strict = args.strict;
+  csv.tyre_name = args.tir;
   csv.table.separator = separator(args.sep);
   csv.table.convention = *mf::parse_sign_convention(args.convention);
   std::ifstream in(args.input);
@@ -147,7 +146,7 @@ void add_mf_command(CLI::App& app) {
   eval->add_option("--side", args.side,
                    "Mounted side: as-measured (default, like MFeval), left, right")
       ->check(CLI::IsMember({"as-measured", "left", "right"}));
-  eval->add_option("--input", args.input, kInputHelp)->required();
+  eval->add_option("--input", args.input, input_help())->required();
   eval->add_option("--output", args.output, "CSV to write (ISO-W, SI)")->required();
   eval->add_option("--sep", args.sep,
                    "Input separator: auto (default: ',' unless the header has only ';' or tabs), "

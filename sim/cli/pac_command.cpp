@@ -167,9 +167,8 @@ void add_pac_eval(CLI::App* pac) {
       ->check(CLI::IsMember({"auto", ",", ";", "tab"}))
       ->capture_default_str();
   eval->add_option("--input", opt.input,
-                   "CSV with the inputs Fz, kappa, alpha, gamma under the names tread mf eval "
-                   "accepts (Fz_N|FZ, kappa|SL, alpha_rad|alpha_deg|SA, gamma_rad|gamma_deg|IA, "
-                   "...; see tread mf eval --help); other columns are ignored")
+                   "CSV with the inputs Fz, kappa, alpha, gamma (other columns ignored); names: " +
+                       mf::input_column_help())
       ->required()
       ->check(CLI::ExistingFile);
   eval->add_option("--output", opt.output, "CSV to write")->required();

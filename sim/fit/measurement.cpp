@@ -161,6 +161,7 @@ MeasurementSet read_measurement_csv(std::istream& in, const std::string& name,
   while (std::getline(in, raw)) {
     ++line;
     if (!raw.empty() && raw.back() == '\r') raw.pop_back();
+    if (line == 1 && raw.rfind("\xEF\xBB\xBF", 0) == 0) raw.erase(0, 3);  // UTF-8 BOM
     const std::string t = trim(raw);
     if (t.empty() || t.front() == '#') continue;
     const std::vector<std::string> cells = split(t, ',');

@@ -12,7 +12,7 @@ namespace {
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 struct Alias {
-  std::string_view name;  // lower case
+  std::string_view name;  // as shown in help; matched without regard to case
   InputQuantity quantity;
   double to_si;
   std::string_view unit;
@@ -21,45 +21,78 @@ struct Alias {
 // Units of the bare TTC names (FZ, SA, SL, IA, V, P): the FSAE Tire Test Consortium's metric
 // run files (N, deg, 1, deg, km/h, kPa).
 constexpr Alias kAliases[] = {
-    {"fz_n", InputQuantity::fz, 1.0, "N"},
-    {"fz", InputQuantity::fz, 1.0, "N"},
-    {"fzw", InputQuantity::fz, 1.0, "N"},
-    {"load_n", InputQuantity::fz, 1.0, "N"},
-    {"fz_kn", InputQuantity::fz, 1000.0, "kN"},
+    {"Fz_N", InputQuantity::fz, 1.0, "N"},
+    {"FZ", InputQuantity::fz, 1.0, "N"},
+    {"FZW", InputQuantity::fz, 1.0, "N"},
+    {"Load_N", InputQuantity::fz, 1.0, "N"},
+    {"Fz_kN", InputQuantity::fz, 1000.0, "kN"},
     {"kappa", InputQuantity::kappa, 1.0, "1"},
-    {"sl", InputQuantity::kappa, 1.0, "1"},
-    {"longslip", InputQuantity::kappa, 1.0, "1"},
-    {"slipratio", InputQuantity::kappa, 1.0, "1"},
+    {"SL", InputQuantity::kappa, 1.0, "1"},
+    {"LongSlip", InputQuantity::kappa, 1.0, "1"},
+    {"SlipRatio", InputQuantity::kappa, 1.0, "1"},
     {"kappa_pct", InputQuantity::kappa, 0.01, "%"},
-    {"sl_pct", InputQuantity::kappa, 0.01, "%"},
+    {"SL_pct", InputQuantity::kappa, 0.01, "%"},
     {"alpha_rad", InputQuantity::alpha, 1.0, "rad"},
     {"alpha", InputQuantity::alpha, 1.0, "rad"},
-    {"sa_rad", InputQuantity::alpha, 1.0, "rad"},
+    {"SA_rad", InputQuantity::alpha, 1.0, "rad"},
     {"alpha_deg", InputQuantity::alpha, kDeg, "deg"},
-    {"sa", InputQuantity::alpha, kDeg, "deg"},
-    {"sa_deg", InputQuantity::alpha, kDeg, "deg"},
+    {"SA", InputQuantity::alpha, kDeg, "deg"},
+    {"SA_deg", InputQuantity::alpha, kDeg, "deg"},
     {"gamma_rad", InputQuantity::gamma, 1.0, "rad"},
     {"gamma", InputQuantity::gamma, 1.0, "rad"},
-    {"ia_rad", InputQuantity::gamma, 1.0, "rad"},
+    {"IA_rad", InputQuantity::gamma, 1.0, "rad"},
     {"gamma_deg", InputQuantity::gamma, kDeg, "deg"},
-    {"ia", InputQuantity::gamma, kDeg, "deg"},
-    {"ia_deg", InputQuantity::gamma, kDeg, "deg"},
+    {"IA", InputQuantity::gamma, kDeg, "deg"},
+    {"IA_deg", InputQuantity::gamma, kDeg, "deg"},
     {"camber_deg", InputQuantity::gamma, kDeg, "deg"},
-    {"vx_mps", InputQuantity::vx, 1.0, "m/s"},
-    {"vx", InputQuantity::vx, 1.0, "m/s"},
-    {"v_mps", InputQuantity::vx, 1.0, "m/s"},
-    {"vx_kph", InputQuantity::vx, 1.0 / 3.6, "km/h"},
-    {"vx_kmh", InputQuantity::vx, 1.0 / 3.6, "km/h"},
-    {"v", InputQuantity::vx, 1.0 / 3.6, "km/h"},
-    {"v_kph", InputQuantity::vx, 1.0 / 3.6, "km/h"},
-    {"v_kmh", InputQuantity::vx, 1.0 / 3.6, "km/h"},
+    {"Vx_mps", InputQuantity::vx, 1.0, "m/s"},
+    {"Vx", InputQuantity::vx, 1.0, "m/s"},
+    {"V_mps", InputQuantity::vx, 1.0, "m/s"},
+    {"Vx_kph", InputQuantity::vx, 1.0 / 3.6, "km/h"},
+    {"Vx_kmh", InputQuantity::vx, 1.0 / 3.6, "km/h"},
+    {"V", InputQuantity::vx, 1.0 / 3.6, "km/h"},
+    {"V_kph", InputQuantity::vx, 1.0 / 3.6, "km/h"},
+    {"V_kmh", InputQuantity::vx, 1.0 / 3.6, "km/h"},
     {"phit_1pm", InputQuantity::phit, 1.0, "1/m"},
     {"phit", InputQuantity::phit, 1.0, "1/m"},
-    {"p_pa", InputQuantity::pressure, 1.0, "Pa"},
-    {"p_kpa", InputQuantity::pressure, 1000.0, "kPa"},
-    {"p", InputQuantity::pressure, 1000.0, "kPa"},
-    {"p_bar", InputQuantity::pressure, 1.0e5, "bar"},
-    {"p_psi", InputQuantity::pressure, 6894.757293168361, "psi"},  // 1 psi = 6894.757... Pa
+    {"P_Pa", InputQuantity::pressure, 1.0, "Pa"},
+    {"P_kPa", InputQuantity::pressure, 1000.0, "kPa"},
+    {"P", InputQuantity::pressure, 1000.0, "kPa"},
+    {"P_bar", InputQuantity::pressure, 1.0e5, "bar"},
+    {"P_psi", InputQuantity::pressure, 6894.757293168361, "psi"},  // 1 psi = 6894.757... Pa
+};
+
+// Units a units row (the line under the header, as in FSAE TTC run files) may name.
+struct UnitName {
+  std::string_view name;  // lower case
+  InputQuantity quantity;
+  double to_si;
+  std::string_view unit;  // as shown
+};
+
+constexpr UnitName kUnits[] = {
+    {"n", InputQuantity::fz, 1.0, "N"},
+    {"kn", InputQuantity::fz, 1000.0, "kN"},
+    {"lbf", InputQuantity::fz, 4.4482216152605, "lbf"},  // 1 lbf = 4.4482216152605 N
+    {"1", InputQuantity::kappa, 1.0, "1"},
+    {"-", InputQuantity::kappa, 1.0, "1"},
+    {"unitless", InputQuantity::kappa, 1.0, "1"},
+    {"%", InputQuantity::kappa, 0.01, "%"},
+    {"deg", InputQuantity::alpha, kDeg, "deg"},
+    {"rad", InputQuantity::alpha, 1.0, "rad"},
+    {"deg", InputQuantity::gamma, kDeg, "deg"},
+    {"rad", InputQuantity::gamma, 1.0, "rad"},
+    {"m/s", InputQuantity::vx, 1.0, "m/s"},
+    {"mps", InputQuantity::vx, 1.0, "m/s"},
+    {"km/h", InputQuantity::vx, 1.0 / 3.6, "km/h"},
+    {"kph", InputQuantity::vx, 1.0 / 3.6, "km/h"},
+    {"kmh", InputQuantity::vx, 1.0 / 3.6, "km/h"},
+    {"mph", InputQuantity::vx, 0.44704, "mph"},  // 1 mph = 0.44704 m/s
+    {"1/m", InputQuantity::phit, 1.0, "1/m"},
+    {"pa", InputQuantity::pressure, 1.0, "Pa"},
+    {"kpa", InputQuantity::pressure, 1000.0, "kPa"},
+    {"bar", InputQuantity::pressure, 1.0e5, "bar"},
+    {"psi", InputQuantity::pressure, 6894.757293168361, "psi"},
 };
 
 constexpr std::array<std::string_view, kInputQuantityCount> kSiNames = {
@@ -91,9 +124,29 @@ std::string_view si_name(InputQuantity q) {
 std::optional<InputColumn> recognise_input_column(std::string_view name) {
   const std::string key = lower(trim(name));
   for (const Alias& a : kAliases) {
-    if (a.name == key) return InputColumn{a.quantity, a.to_si, a.unit};
+    if (lower(a.name) == key) return InputColumn{a.quantity, a.to_si, a.unit};
   }
   return std::nullopt;
+}
+
+std::string input_column_help() {
+  std::string help;
+  for (std::size_t q = 0; q < kInputQuantityCount; ++q) {
+    if (!help.empty()) help += "; ";
+    std::string_view unit;
+    for (const Alias& a : kAliases) {
+      if (index(a.quantity) != q) continue;
+      if (a.unit != unit) {
+        if (!unit.empty()) help += " [" + std::string(unit) + "], ";
+        unit = a.unit;
+      } else {
+        help += "|";
+      }
+      help += a.name;
+    }
+    help += " [" + std::string(unit) + "]";
+  }
+  return help;
 }
 
 std::optional<SignConvention> parse_sign_convention(std::string_view text) {
@@ -149,6 +202,7 @@ InputTable::InputTable(std::istream& in, std::string name, InputTableOptions opt
   std::string line;
   while (std::getline(in_, line)) {
     ++line_;
+    if (line_ == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // UTF-8 BOM
     const std::string t = trim(line);
     if (t.empty() || t.front() == '#') continue;
     separator_ = options_.separator;
@@ -204,6 +258,43 @@ std::vector<std::string> InputTable::split(const std::string& line) const {
   return cells;
 }
 
+bool InputTable::apply_units_row(const std::vector<std::string>& cells) {
+  // A units row: every input column holds text that is not a number (or "1").
+  bool any = false;
+  for (std::size_t q = 0; q < kInputQuantityCount; ++q) {
+    if (column_[q] < 0) continue;
+    const std::string& cell = cells[static_cast<std::size_t>(column_[q])];
+    if (cell == "1") continue;  // the unit of a ratio, or a number: decided by the others
+    if (cell.empty() || tir::parse_number(cell)) return false;
+    any = true;
+  }
+  if (!any) return false;
+  for (std::size_t q = 0; q < kInputQuantityCount; ++q) {
+    if (column_[q] < 0) continue;
+    std::string unit = lower(cells[static_cast<std::size_t>(column_[q])]);
+    if (unit.size() >= 2 && (unit.front() == '[' || unit.front() == '(')) {
+      unit = trim(std::string_view(unit).substr(1, unit.size() - 2));
+    }
+    const UnitName* found = nullptr;
+    std::string expected;
+    for (const UnitName& u : kUnits) {
+      if (index(u.quantity) != q) continue;
+      if (u.name == unit) found = &u;
+      expected += (expected.empty() ? "" : ", ") + std::string(u.name);
+    }
+    if (found == nullptr) {
+      throw tir::TirError(name_, line_,
+                          "unit '" + cells[static_cast<std::size_t>(column_[q])] + "' of column '" +
+                              header_[static_cast<std::size_t>(column_[q])] +
+                              "' is not a unit of " + std::string(kSiNames[q]) + " (expected " +
+                              expected + ")");
+    }
+    spec_[q].to_si = found->to_si;
+    spec_[q].unit = found->unit;
+  }
+  return true;
+}
+
 std::optional<InputRow> InputTable::next() {
   std::string line;
   while (std::getline(in_, line)) {
@@ -215,6 +306,10 @@ std::optional<InputRow> InputTable::next() {
       throw tir::TirError(
           name_, line_,
           "expected " + std::to_string(cells_) + " cells, found " + std::to_string(cells.size()));
+    }
+    if (!seen_row_) {
+      seen_row_ = true;
+      if (apply_units_row(cells)) continue;
     }
     InputRow row;
     row.line = line_;

@@ -16,9 +16,15 @@
 // The bare TTC / TYDEX-style names (FZ, SA, SL, IA, V, P) carry the units of the FSAE Tire Test
 // Consortium's metric files: N, deg, 1, deg, km/h, kPa.
 //
+// Units row: when the line under the header holds text (or "1") in every input column (e.g. "N deg
+// deg kph kPa", as FSAE TTC run files have), it names the units and overrides the ones the names
+// imply: N, kN, lbf; 1, -, unitless, %; deg, rad; m/s, mps, km/h, kph, kmh, mph; 1/m; Pa, kPa, bar,
+// psi (any case, optionally in [] or ()). A unit not in that list for its column is an error.
+//
 // Separator: ',' (default), ';' or tab, chosen with `separator` or detected from the header line
 // (';' or tab when the header holds no ','). With ';' or tab a cell's decimal comma is read as a
-// point ("0,05" = 0.05). Blank lines and lines starting with '#' are skipped. Columns that name no
+// point ("0,05" = 0.05). A UTF-8 byte order mark (spreadsheet exports) is skipped, as are blank
+// lines and lines starting with '#'. Columns that name no
 // input are ignored (and listed by ignored_columns()).
 //
 // Sign conventions (the file's, converted to ISO-W = TYDEX W, the axes of MFeval and of every
@@ -60,6 +66,10 @@ struct InputColumn {
 /// The input a column name stands for (case-insensitive, surrounding blanks ignored).
 std::optional<InputColumn> recognise_input_column(std::string_view name);
 
+/// The accepted names grouped by quantity and unit, for --help ("Fz_N|FZ|FZW|Load_N [N], Fz_kN
+/// [kN]; kappa|SL|... [1], ...").
+std::string input_column_help();
+
 enum class SignConvention { iso_w, sae, adapted_iso };
 
 /// "iso-w", "sae", "adapted-iso" (case-insensitive).
@@ -89,10 +99,11 @@ struct InputRow {
   double operator[](InputQuantity q) const { return value[static_cast<std::size_t>(q)]; }
 };
 
-/// Reads the header on construction and one row per next(). Errors: tir::TirError (a
+/// Reads the header on construction and one row per next() (an optional units row is taken and
+/// skipped; mapping() reports the units then). Errors: tir::TirError (a
 /// std::runtime_error, `file:line: message`): no header row, a column repeated (also under two
 /// names, e.g. SA and alpha_deg), a required input without a column, a row with the wrong number
-/// of cells, a cell of an input column that is not a finite number.
+/// of cells, a cell of an input column that is not a finite number, an unknown unit in a units row.
 class InputTable {
  public:
   InputTable(std::istream& in, std::string name, InputTableOptions options);
@@ -113,12 +124,15 @@ class InputTable {
 
  private:
   std::vector<std::string> split(const std::string& line) const;
+  /// Takes the units of a units row (see the file comment); false if `cells` is not one.
+  bool apply_units_row(const std::vector<std::string>& cells);
 
   std::istream& in_;
   std::string name_;
   InputTableOptions options_;
   char separator_ = ',';
   int line_ = 0;
+  bool seen_row_ = false;
   std::size_t cells_ = 0;
   std::vector<std::string> header_;
   std::array<int, kInputQuantityCount> column_{};

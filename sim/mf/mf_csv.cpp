@@ -68,8 +68,9 @@ std::string format(double v) {
 }
 
 template <typename T>
-void write_row(std::ostream& out, const std::array<double, kColumnCount>& values,
-               const MfParameters<T>& params, const MfOptions& options) {
+// Returns the first output column that is not finite under status ok ("" when none).
+std::string write_row(std::ostream& out, const std::array<double, kColumnCount>& values,
+                      const MfParameters<T>& params, const MfOptions& options) {
   MfInput<T> in;
   in.fz_n = static_cast<T>(values[kFz]);
   in.kappa = static_cast<T>(values[kKappa]);
@@ -79,10 +80,16 @@ void write_row(std::ostream& out, const std::array<double, kColumnCount>& values
   in.phit_1pm = static_cast<T>(values[kPhit]);
   in.p_pa = static_cast<T>(values[kP]);
   const MfOutput<T> result = evaluate(params, in, options);
+  std::string non_finite;
   for (double v : values) out << format(v) << ',';
-  for (const auto& c : out_columns<T>())
-    out << format(static_cast<double>(result.*(c.member))) << ',';
+  for (const auto& c : out_columns<T>()) {
+    const double v = static_cast<double>(result.*(c.member));
+    if (!std::isfinite(v) && non_finite.empty())
+      non_finite = std::string(c.name) + " = " + format(v);
+    out << format(v) << ',';
+  }
   out << to_string(result.status) << '\n';
+  return result.status == Status::ok ? non_finite : std::string();
 }
 
 // One limit of the model's range, checked on the SI ISO-W inputs.
@@ -133,7 +140,6 @@ MfCsvReport evaluate_csv(const MfParameters<double>& params, const MfOptions& op
   const MfParameters<float> params_f = convert_parameters<float>(params);
   InputTable table(in, in_name, csv.table);
   MfCsvReport report;
-  report.mapping = table.mapping();
   report.ignored = table.ignored_columns();
 
   using Q = InputQuantity;
@@ -173,16 +179,23 @@ MfCsvReport evaluate_csv(const MfParameters<double>& params, const MfOptions& op
     }
     std::array<double, kColumnCount> values{};
     for (std::size_t q = 0; q < kColumnCount; ++q) values[q] = row->value[q];
-    if (csv.use_float) {
-      write_row(out, values, params_f, options);
-    } else {
-      write_row(out, values, params, options);
+    const std::string non_finite = csv.use_float ? write_row(out, values, params_f, options)
+                                                 : write_row(out, values, params, options);
+    if (!non_finite.empty()) {
+      // Never a NaN or Inf under status ok: a defective parameter set (e.g. a zero vertical
+      // stiffness or BREFF/DREFF/FREFF) that the loader let through.
+      throw tir::TirError(in_name, row->line,
+                          non_finite +
+                              " under status ok: the tyre's parameters give no finite "
+                              "result for this row (check the .tir for zero or missing "
+                              "stiffnesses and radii)");
     }
     ++report.rows;
   }
   for (const MfRangeCount& c : counts) {
     if (c.rows > 0) report.out_of_range.push_back(c);
   }
+  report.mapping = table.mapping();  // after a units row, if any, was read
   return report;
 }
 

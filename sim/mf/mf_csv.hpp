@@ -7,11 +7,12 @@
 // the model's ranges (FZMIN/FZMAX, KPUMIN/KPUMAX, ALPMIN/ALPMAX, CAMMIN/CAMMAX, PRESMIN/PRESMAX);
 // rows outside are counted per limit (limit checks on: the model clamps them as MFeval does) or,
 // with `strict`, refused at the first one with a hint at the likely cause (degrees in a radian
-// column, SAE signs). Errors: tir::TirError (`file:line: message`). Output: a '#' line stating the
-// axes (ISO-W, SI), then a header: the inputs as evaluated, in SI and ISO-W (in_Fz_N, in_kappa,
-// in_alpha_rad, in_gamma_rad, in_Vx_mps, in_phit_1pm, in_P_Pa), every MfOutput value under MFeval's
-// column names (Fx_N, Fy_N, Fz_N, Mx_Nm, My_Nm, Mz_Nm, Rl_m, Re_m, kappa_1, ...), then status.
-// Numbers are written with 17 significant digits.
+// column, SAE signs). Errors: tir::TirError (`file:line: message`), also for a row with a NaN or
+// Inf output under status ok (a defective parameter set: never written as ok). Output: a '#' line
+// stating the axes (ISO-W, SI), then a header: the inputs as evaluated, in SI and ISO-W (in_Fz_N,
+// in_kappa, in_alpha_rad, in_gamma_rad, in_Vx_mps, in_phit_1pm, in_P_Pa), every MfOutput value
+// under MFeval's column names (Fx_N, Fy_N, Fz_N, Mx_Nm, My_Nm, Mz_Nm, Rl_m, Re_m, kappa_1, ...),
+// then status. Numbers are written with 17 significant digits.
 
 #include <cstddef>
 #include <iosfwd>
@@ -27,6 +28,7 @@ namespace tread::mf {
 struct MfCsvOptions {
   bool use_float = false;  ///< evaluate in float (parameters converted once), as on the ECU
   bool strict = false;     ///< a row outside the model's range is an error
+  std::string tyre_name;   ///< the .tir, for messages
   InputTableOptions table;
 };
 

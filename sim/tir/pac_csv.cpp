@@ -1,6 +1,7 @@
 #include "tir/pac_csv.hpp"
 
 #include <array>
+#include <cmath>
 #include <istream>
 #include <ostream>
 #include <vector>
@@ -59,6 +60,13 @@ std::size_t evaluate_pac_csv(const pac::PacParams<double>& params, const PacCsvO
     const std::array<double, 4> v = {(*row)[Q::fz], (*row)[Q::kappa], (*row)[Q::alpha],
                                      (*row)[Q::gamma]};
     const auto r = options.use_float ? eval_as(pf, options, v) : eval_as(params, options, v);
+    const bool finite = std::isfinite(r.fx_n) && std::isfinite(r.fy_n) && std::isfinite(r.mz_nm) &&
+                        std::isfinite(r.mx_nm) && std::isfinite(r.my_nm);
+    if (!finite && r.status == Status::ok) {
+      // Never a NaN or Inf under status ok (a defective coefficient set).
+      throw TirError(in_name, row->line,
+                     "the coefficients give a non-finite output under status ok for this row");
+    }
     out << v[0] << ',' << v[1] << ',' << v[2] << ',' << v[3] << ',' << r.fx_n << ',' << r.fy_n
         << ',' << r.mz_nm << ',' << r.mx_nm << ',' << r.my_nm << ',' << to_string(r.status) << '\n';
     ++rows;

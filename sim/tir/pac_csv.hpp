@@ -5,7 +5,7 @@
 // units, separator, the file's sign convention). Required inputs: Fz, kappa, alpha, gamma (ISO-W
 // after conversion); other columns (e.g. Vx_mps of an MF input file) are ignored. Errors (TirError,
 // `file:line: message`): a missing or repeated input column, a row with the wrong number of
-// cells, an input cell that is not a finite number.
+// cells, an input cell that is not a finite number, a non-finite output under status ok.
 // Output: a '#' line naming the axes, then in_Fz_N, in_kappa, in_alpha_rad, in_gamma_rad, Fx_N,
 // Fy_N, Mz_Nm, Mx_Nm, My_Nm (17 significant digits) and status (PacOutput::status as text: "ok",
 // "out of range", "non-finite result" where an output came out NaN/inf and was written as 0). With `iso_w` (the default, as

@@ -24,6 +24,8 @@ using tread::mf::SignConvention;
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
+void expect_error(const std::string& text, int line, const std::string& what);
+
 TEST(InputTable, SiNamesAreReadAsTheyAre) {
   std::istringstream in(
       "# comment\nFz_N,kappa,alpha_rad,gamma_rad,Vx_mps,phit_1pm,P_Pa\n\n"
@@ -86,6 +88,63 @@ TEST(InputTable, CaseInsensitiveUnitsInNamesAndTabs) {
   std::istringstream bar("Fz,SL,SA,IA,Vx,P_bar\n1,0,0,0,1,2.2\n");
   InputTable tb(bar, "bar.csv", {});
   EXPECT_DOUBLE_EQ((*tb.next())[InputQuantity::pressure], 220000.0);
+}
+
+TEST(InputTable, HelpListsEveryNameByUnit) {
+  const std::string help = tread::mf::input_column_help();
+  for (const char* group : {"Fz_N|FZ|FZW|Load_N [N], Fz_kN [kN]", "alpha_deg|SA|SA_deg [deg]",
+                            "Vx_kph|Vx_kmh|V|V_kph|V_kmh [km/h]", "P_kPa|P [kPa]", "P_psi [psi]"}) {
+    EXPECT_NE(help.find(group), std::string::npos) << group << "\n" << help;
+  }
+  // Every name in the help is recognised.
+  std::string name;
+  for (char c : help + ";") {
+    if (c == '|' || c == ' ' || c == ';' || c == ',') {
+      if (!name.empty() && name.front() != '[') {
+        EXPECT_TRUE(tread::mf::recognise_input_column(name)) << name;
+      }
+      name.clear();
+    } else {
+      name += c;
+    }
+  }
+}
+
+TEST(InputTable, Utf8ByteOrderMarkBeforeTheHeader) {
+  std::istringstream in(
+      "\xEF\xBB\xBF"
+      "FZ,SL,SA,IA,V\n1000,0,1,0,36\n");
+  InputTable t(in, "excel.csv", {});
+  EXPECT_TRUE(t.ignored_columns().empty());
+  EXPECT_EQ(t.column_name(InputQuantity::fz), "FZ");
+  EXPECT_DOUBLE_EQ((*t.next())[InputQuantity::fz], 1000.0);
+}
+
+// The line under the header names the units (FSAE TTC run files): they override the units the
+// names imply; an unknown unit is an error naming the line.
+TEST(InputTable, UnitsRow) {
+  std::istringstream in(
+      "ET\tV\tSA\tIA\tP\tFZ\tSL\ns\tmph\t[rad]\tdeg\tpsi\tlbf\tunitless\n"
+      "0.1\t25\t0.1\t2\t12\t-200\t0.05\n");
+  InputTable t(in, "ttc.dat", {});
+  const auto row = t.next();
+  ASSERT_TRUE(row);
+  EXPECT_EQ(row->line, 3);
+  EXPECT_DOUBLE_EQ((*row)[InputQuantity::vx], 25 * 0.44704);
+  EXPECT_DOUBLE_EQ((*row)[InputQuantity::alpha], 0.1);  // [rad] overrides SA's degrees
+  EXPECT_DOUBLE_EQ((*row)[InputQuantity::gamma], 2 * kDeg);
+  EXPECT_NEAR((*row)[InputQuantity::pressure], 82737.1, 0.1);
+  EXPECT_DOUBLE_EQ((*row)[InputQuantity::fz], -200 * 4.4482216152605);
+  EXPECT_DOUBLE_EQ((*row)[InputQuantity::kappa], 0.05);
+  EXPECT_FALSE(t.next());
+  std::string mapping;
+  for (const auto& m : t.mapping()) mapping += m + "\n";
+  EXPECT_NE(mapping.find("'V' → Vx_mps (mph → m/s)"), std::string::npos) << mapping;
+  EXPECT_NE(mapping.find("'SA' → alpha_rad (in rad)"), std::string::npos) << mapping;
+  // Only the first data row can be a units row; a unit foreign to its column is an error.
+  expect_error("FZ,SL,SA,IA,V\nN,1,deg,deg,furlong/fortnight\n", 2,
+               "unit 'furlong/fortnight' of column 'V' is not a unit of Vx_mps");
+  expect_error("FZ,SL,SA,IA,V\n1,0,0,0,1\nN,1,deg,deg,kph\n", 3, "FZ: 'N' is not a finite number");
 }
 
 TEST(InputTable, ExplicitSeparatorAndAdaptedIso) {

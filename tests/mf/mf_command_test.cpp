@@ -370,4 +370,45 @@ TEST(MfCommand, PlotAtGivenLoadsWarnsAboutInvertedCurves) {
             0);
 }
 
+// A defective tyre (zero vertical stiffness and BREFF/DREFF/FREFF): `mf eval` never writes a NaN
+// or Inf under status ok with exit 0 — either the row gets a non-ok status or the command fails
+// naming the row, the column and the .tir, leaving no output.
+TEST(MfCommand, NoNonFiniteOutputUnderStatusOk) {
+  const auto dir = tmp_dir();
+  tread::tir::TirFile file =
+      tread::tir::read_tir(tread::testing::refdata("tir/MagicFormula61_Parameters.tir"));
+  file.set("VERTICAL", "VERTICAL_STIFFNESS", 0.0);
+  for (const char* key : {"BREFF", "DREFF", "FREFF"}) file.set("VERTICAL", key, 0.0);
+  const auto tir = dir / "defective.tir";
+  tread::tir::write_tir(file, tir);
+  const auto in = dir / "defective_in.csv";
+  write(in, "Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps\n4000,0,0.05,0,16\n4000,0.05,0,0,16\n");
+  const auto out = dir / "defective_out.csv";
+  std::filesystem::remove(out);
+  const int status =
+      run("mf eval --tir " + tir.string() + " --input " + in.string() + " --output " + out.string(),
+          dir / "defective.txt");
+  const std::string err = slurp(dir / "defective.txt");
+  if (status != 0) {
+    EXPECT_NE(err.find("defective_in.csv:2: "), std::string::npos) << err;
+    EXPECT_NE(err.find("under status ok"), std::string::npos) << err;
+    EXPECT_NE(err.find("defective.tir"), std::string::npos) << err;
+    EXPECT_FALSE(std::filesystem::exists(out));
+    return;
+  }
+  // Exit 0 is allowed only if every non-finite row says so in its status.
+  std::ifstream csv(out);
+  std::string line;
+  int rows = 0;
+  while (std::getline(csv, line)) {
+    if (line.empty() || line[0] == '#' || line.rfind("in_Fz_N", 0) == 0) continue;
+    ++rows;
+    const std::string status_cell = line.substr(line.rfind(',') + 1);
+    if (line.find("nan") != std::string::npos || line.find("inf") != std::string::npos) {
+      EXPECT_NE(status_cell, "ok") << line;
+    }
+  }
+  EXPECT_EQ(rows, 2);
+}
+
 }  // namespace

@@ -108,4 +108,33 @@ TEST(PacCsv, ErrorsNameFileAndLine) {
   expect_error("# only a comment\n", 1, "no header row");
 }
 
+// A defective coefficient set (Fx's peak D overflows to Inf, B = BCD / (C D) to 0, D sin(0) is
+// NaN): never a NaN or Inf under status ok — either the row's status says so or the evaluation
+// fails naming the row.
+TEST(PacCsv, NoNonFiniteOutputUnderStatusOk) {
+  PacParams<double> defective = params();
+  defective.b[1] = 1e308;
+  defective.b[2] = 1e308;
+  std::istringstream in("Fz_N,kappa,alpha_rad,gamma_rad\n4000,0.05,0.05,0\n");
+  std::ostringstream out;
+  try {
+    (void)tread::tir::evaluate_pac_csv(defective, {}, in, "defective.csv", out);
+  } catch (const tread::tir::TirError& e) {
+    EXPECT_EQ(e.line(), 2) << e.what();
+    EXPECT_NE(std::string(e.what()).find("non-finite output under status ok"), std::string::npos);
+    return;
+  }
+  std::istringstream lines(out.str());
+  std::string line;
+  bool non_finite = false;
+  while (std::getline(lines, line)) {
+    if (line.empty() || line[0] == '#' || line.rfind("in_", 0) == 0) continue;
+    if (line.find("nan") != std::string::npos || line.find("inf") != std::string::npos) {
+      non_finite = true;
+      EXPECT_NE(line.substr(line.rfind(',') + 1), "ok") << line;
+    }
+  }
+  EXPECT_TRUE(non_finite) << "the premise: this set gives a non-finite output\n" << out.str();
+}
+
 }  // namespace
