@@ -111,7 +111,7 @@ void expect_safe(const std::string& args, const fs::path& out, const std::string
 /// not have one of the keys (the MF 5.2 file has no NOMPRES, Q_FZ2).
 fs::path defective_tir(const std::string& file, const std::vector<std::string>& keys,
                        const std::string& value) {
-  const std::string text = slurp(tread::testing::refdata("tir/" + file));
+  const std::string text = slurp(tread::testing::tyre_file(file));
   std::string out = text;
   for (const std::string& key : keys) {
     // "\nKEY   =   value   $comment": the value token is replaced.
@@ -181,7 +181,7 @@ TEST(CliNonFinite, MfEvalOnDefectiveTirFiles) {
 }
 
 TEST(CliNonFinite, MfEvalOnBadCells) {
-  const auto tir = tread::testing::refdata("tir/MagicFormula61_Parameters.tir");
+  const auto tir = tread::testing::tyre_file("MagicFormula61_Parameters.tir");
   for (const char* cell : {"nan", "NaN", "inf", "-inf", "1e400", "", " ", "0x1p99999"}) {
     const fs::path in = write_csv("cells.csv", std::string("Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps\n"
                                                            "5000,0.05,") +

@@ -22,7 +22,7 @@ namespace tread::mf {
 namespace {
 
 MfParameters<double> load(const char* name) {
-  return load_mf_parameters(testing::refdata(std::string("tir/") + name)).params;
+  return load_mf_parameters(testing::tyre_file(name)).params;
 }
 
 /// The MF-Tyre 6.2 vertical force at loaded radius `rl` (MFeval's calculateFz62 equations).

@@ -376,7 +376,7 @@ TEST(MfCommand, PlotAtGivenLoadsWarnsAboutInvertedCurves) {
 TEST(MfCommand, NoNonFiniteOutputUnderStatusOk) {
   const auto dir = tmp_dir();
   tread::tir::TirFile file =
-      tread::tir::read_tir(tread::testing::refdata("tir/MagicFormula61_Parameters.tir"));
+      tread::tir::read_tir(tread::testing::tyre_file("MagicFormula61_Parameters.tir"));
   file.set("VERTICAL", "VERTICAL_STIFFNESS", 0.0);
   for (const char* key : {"BREFF", "DREFF", "FREFF"}) file.set("VERTICAL", key, 0.0);
   const auto tir = dir / "defective.tir";

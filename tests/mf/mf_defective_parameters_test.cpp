@@ -40,7 +40,7 @@ std::vector<Key> all_keys() {
 }
 
 MfParameters<double> load(const std::string& name) {
-  return load_mf_parameters(testing::refdata("tir/" + name)).params;
+  return load_mf_parameters(testing::tyre_file(name)).params;
 }
 
 template <typename T>
