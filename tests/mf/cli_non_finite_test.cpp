@@ -19,8 +19,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
+/// This test's own directory (CTest runs the tests of this file in parallel).
 fs::path tmp_dir() {
-  return tread::testing::test_dir("cli_non_finite_test");
+  const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+  return tread::testing::test_dir(std::string("cli_non_finite_test_") + test->name());
 }
 
 std::string slurp(const fs::path& path) {
