@@ -54,9 +54,10 @@ echo "=== format check ==="
 if ! cmake --build --preset host --target format-check; then failed_steps+=("format-check"); fi
 
 echo "=== summary ($(($(date +%s) - start)) s) ==="
+echo "test-all: $total_passed passed, $total_failed failed" >"$log_dir/summary.txt"
 if ((${#failed_steps[@]})); then
   echo "test-all: FAILED steps: ${failed_steps[*]} (logs in $log_dir)"
-  echo "test-all: $total_passed passed, $total_failed failed"
+  cat "$log_dir/summary.txt"
   exit 1
 fi
-echo "test-all: $total_passed passed, $total_failed failed"
+cat "$log_dir/summary.txt"

@@ -10,8 +10,8 @@
 
 namespace tread::cli {
 
-#ifndef TREAD_DEFAULT_REFDATA_DIR
-#define TREAD_DEFAULT_REFDATA_DIR "../shared/refdata"
+#ifndef TREAD_DATA_DIR
+#define TREAD_DATA_DIR "data"  // the project's data/ folder; CMake compiles in its absolute path
 #endif
 
 struct NodeCliState {
@@ -29,7 +29,7 @@ inline void add_node_options(CLI::App& cmd, NodeCliState& s, bool tir_required) 
   if (tir_required) {
     tir->required();
   } else {
-    s.settings.tir = std::string(TREAD_DEFAULT_REFDATA_DIR) + "/tir/MagicFormula61_Parameters.tir";
+    s.settings.tir = std::string(TREAD_DATA_DIR) + "/tyres/MagicFormula61_Parameters.tir";
     tir->capture_default_str();
   }
   cmd.add_flag("--fd", s.fd, "CAN FD layout (fewer, larger frames) instead of classic CAN");

@@ -1,5 +1,9 @@
 // `tread profile`: an EN 13715 wheel profile (S1002, EPS, 1/40) as the seed's ASCII table, CSV
 // (y_mm,z_mm,tan) or a SIMPACK .prw file, optionally plotted (profile, slope, the three families).
+// With --input, a profile file (CSV y_mm,z_mm or SIMPACK .prw/.prr) is converted instead: its
+// points as read (SIMPACK processing settings applied, this project's convention) are written as
+// CSV or SIMPACK.
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -30,9 +34,60 @@ struct ProfileOptions {
   std::string format = "table";
   std::string output;
   std::string plot;
+  std::string input;
 };
 
+void write_output(const ProfileOptions& o, const std::string& text) {
+  if (o.output.empty()) {
+    std::cout << text;
+    return;
+  }
+  std::ofstream out(o.output);
+  out << text;
+  if (!out) {
+    throw std::runtime_error("cannot write " + o.output);
+  }
+}
+
+// --input: read a profile file and write its points in another format.
+void convert_profile(const ProfileOptions& o) {
+  const std::filesystem::path path = o.input;
+  const std::string ext = path.extension().string();
+  profile::SampledProfile s;
+  profile::SimpackProfileType type = profile::SimpackProfileType::kWheel;
+  std::string comment;
+  if (ext == ".prw" || ext == ".prr") {
+    profile::SimpackProfile read = profile::read_simpack_profile(path);
+    s = std::move(read.profile);
+    type = read.type;
+    comment = read.comment;
+  } else {
+    s = profile::read_profile_csv(path);
+  }
+  std::ostringstream text;
+  if (o.format == "csv") {
+    profile::write_profile_csv(text, s, {}, 9);
+  } else if (o.format == "prw" || o.format == "prr") {
+    const auto out_type = o.format == "prw" ? profile::SimpackProfileType::kWheel
+                                            : profile::SimpackProfileType::kRail;
+    if ((ext == ".prw" || ext == ".prr") && out_type != type) {
+      throw std::invalid_argument(o.input + ": a " +
+                                  (type == profile::SimpackProfileType::kWheel ? "wheel" : "rail") +
+                                  " profile cannot be written as --format " + o.format);
+    }
+    profile::write_simpack_profile(text, s, out_type, comment.empty() ? s.name : comment);
+  } else {
+    throw std::invalid_argument("--format with --input must be csv, prw or prr, got '" + o.format +
+                                "'");
+  }
+  write_output(o, text.str());
+}
+
 void run_profile(const ProfileOptions& o) {
+  if (!o.input.empty()) {
+    convert_profile(o);
+    return;
+  }
   profile::WheelParameters p;
   p.family = profile::parse_wheel_family(o.family);
   p.flange_height_mm = o.flange_height_mm;
@@ -69,15 +124,7 @@ void run_profile(const ProfileOptions& o) {
     throw std::invalid_argument("--format must be table, csv or prw, got '" + o.format + "'");
   }
 
-  if (o.output.empty()) {
-    std::cout << text.str();
-  } else {
-    std::ofstream out(o.output);
-    out << text.str();
-    if (!out) {
-      throw std::runtime_error("cannot write " + o.output);
-    }
-  }
+  write_output(o, text.str());
   if (!o.plot.empty()) {
     profile::plot_wheel_profile(wheel, o.step_mm, o.plot);
   }
@@ -104,6 +151,10 @@ void add_profile_command(CLI::App& app) {
                   "(y_mm,z_mm,tan) or prw (SIMPACK wheel profile)")
       ->capture_default_str();
   cmd->add_option("--output", options->output, "output file (default: standard output)");
+  cmd->add_option("--input", options->input,
+                  "convert a profile file (CSV y_mm,z_mm or SIMPACK .prw/.prr) to --format csv, "
+                  "prw or prr instead of constructing an EN 13715 profile")
+      ->check(CLI::ExistingFile);
   cmd->add_option("--plot", options->plot,
                   "PNG: profile, slope, and the slopes of the three families (gnuplot)");
   cmd->callback([options] { run_profile(*options); });

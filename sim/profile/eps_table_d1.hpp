@@ -3,7 +3,7 @@
 // (x = -26.0) at 0.5 mm steps, one column per flange thickness e = 28.5, 29.0, ... 32.5 mm. This is
 // part of the definition of the EPS profile (as the UIC coefficients are of S1002), entered from
 // the standard as transcribed in github.com/rohrbecka/EN13715 (commit f1fd63c7). The golden test
-// checks every value against ../shared/refdata/rail/en13715/tableD1_EPS_transition_D1_to_C1b.csv.
+// checks every value against tests/data/rail/en13715/tableD1_EPS_transition_D1_to_C1b.csv.
 
 #include <array>
 #include <cstddef>

@@ -1,7 +1,7 @@
 #pragma once
 // Rail heads 60E1 and 54E1 (EN 13674-1) built from their arcs: R300 crown, R80 shoulders, R13 gauge
-// corners, 1:20 sides (../shared/refdata/rail/DEFINITIONS.md §3), upright or inclined 1:20 / 1:40
-// toward the track centre, and placed into the track frame.
+// corners, 1:20 sides (the rail definitions in data/PROVENANCE.md §3), upright or inclined 1:20 /
+// 1:40 toward the track centre, and placed into the track frame.
 //
 // Upright frame: x (here y) lateral, < 0 on the gauge side, z up, origin on the rail axis at the
 // top of the upright head. Inclination rotates the head about that origin toward the track centre.

@@ -2,7 +2,7 @@
 // UIC 510-2 / DIN 5573 closed form of the S1002 wheel profile (h = 28, e = 32.5), "courtesy of
 // Dr. H. Netter, DLR": F(S) per section, S lateral from D0 (+ field side), F + toward the flange
 // tip. The sign pattern of each polynomial is written into the coefficients below, so
-// F(S) = Σ c[i] S^i. Source and checks: ../shared/refdata/rail/DEFINITIONS.md §1.
+// F(S) = Σ c[i] S^i. Source and checks: the rail definitions in data/PROVENANCE.md §1.
 
 #include <array>
 

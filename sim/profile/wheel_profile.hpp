@@ -7,7 +7,7 @@
 // Convention: y lateral from the taping line D0 (70 mm from the wheel back), + toward the field
 // side; z = radius increase, + toward the flange tip (r = r0 + z); tan = dz/dy.
 //
-// Construction (../shared/refdata/rail/DEFINITIONS.md, every point derived from geometry):
+// Construction (the rail definitions in data/PROVENANCE.md, every point derived from geometry):
 // - Flange (Annex A), s = 32.5 - e, dh = h - 28: R20.5 flange back centred (-49.5, AH + dh) tangent
 //   to the wheel back at y = -70 and internally to the R12 tip arc centred (-55, 16 + dh); the face
 //   side R12 arc centred (-55 - s, 16 + dh) (the two meet in a cusp S for s > 0); the flange outer

@@ -5,7 +5,7 @@
 // Every coefficient comes from one list, TREAD_MF_PARAMETER_LIST(X), with one row per .tir key:
 //   X(member, "SECTION", "KEY", default, "description")
 // The defaults are MFeval 4.3.1's: a key missing from a .tir file takes the Pacejka-book 205/60R15
-// value (../shared/refdata/tir/PacejkaBook_Defaults.tir). Keys that file does not have (the MF 5.2
+// value (data/tyres/PacejkaBook_Defaults.tir). Keys that file does not have (the MF 5.2
 // and MF 6.2 extras) default to 0, scale factors to 1. One exception, found against MFeval's
 // output: LONGITUDINAL_STIFFNESS defaults to 300000 N/m (MFeval's Cx for a file without the key),
 // not the book file's 400000. Members carry units where they have one (fnomin_n,

@@ -55,7 +55,7 @@ std::vector<std::vector<double>> read_csv(const fs::path& file, std::string* hea
 }
 
 std::string en15302_args() {
-  const fs::path dir = tread::testing::refdata("rail/en15302");
+  const fs::path dir = tread::testing::test_data("rail/en15302");
   EXPECT_TRUE(fs::exists(dir / "WheelA.csv")) << dir;
   return "--wheel-file " + (dir / "WheelA.csv").string() + " --rail-file " +
          (dir / "RailA.csv").string() + " --rail-frame track --b2b 1360 --r0 460";
@@ -79,7 +79,7 @@ TEST(ContactCommand, En15302TableMatchesAnnexJ) {
     EXPECT_NEAR(row[3], row[1] - row[2], 2e-6);
     ours[std::lround(row[0] * 10.0)] = row[3];
   }
-  const auto ref = read_csv(tread::testing::refdata("rail/en15302/WheelARailA_deltaR.csv"));
+  const auto ref = read_csv(tread::testing::test_data("rail/en15302/WheelARailA_deltaR.csv"));
   ASSERT_EQ(ref.size(), 137u);
   for (const auto& row : ref) {
     const long key = std::lround(row[0] * 10.0);
@@ -108,7 +108,7 @@ TEST(ContactCommand, En15302ConicityMatchesAnnexK) {
 
 TEST(ContactCommand, BadInputFailsWithAMessage) {
   const fs::path err = tmp_dir() / "bad.log";
-  const fs::path dir = tread::testing::refdata("rail/en15302");
+  const fs::path dir = tread::testing::test_data("rail/en15302");
   EXPECT_NE(run("contact --wheel-file /nonexistent.csv --rail-file " +
                     (dir / "RailA.csv").string() + " --rail-frame track",
                 tmp_dir() / "bad.out", err),
@@ -124,7 +124,7 @@ TEST(ContactCommand, BadInputFailsWithAMessage) {
 // (delta r itself differs by up to a few 0.01 mm next to the contact jumps: S1002 on 60E1 1:40 is
 // nearly conformal and the file's linear interpolation moves the jumps slightly.)
 TEST(ContactCommand, BuiltinS1002MatchesTheManchesterS1002File) {
-  const fs::path prw = tread::testing::refdata("rail/manchester_benchmark/MBench_S1002_v3.prw");
+  const fs::path prw = tread::testing::test_data("rail/manchester_benchmark/MBench_S1002_v3.prw");
   ASSERT_TRUE(fs::exists(prw)) << prw;
   const std::string common =
       " --rail 60E1 --cant 1:40 --gauge 1435 --b2b 1360 --r0 460 --amplitudes 1,2,3,4,5,6";

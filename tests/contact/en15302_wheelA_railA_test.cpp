@@ -46,7 +46,7 @@ std::vector<Row> read_rows(const std::filesystem::path& file) {
 }
 
 std::filesystem::path en15302(const std::string& name) {
-  const auto p = tread::testing::refdata("rail/en15302/" + name);
+  const auto p = tread::testing::test_data("rail/en15302/" + name);
   EXPECT_TRUE(std::filesystem::exists(p)) << "missing reference file " << p;
   return p;
 }

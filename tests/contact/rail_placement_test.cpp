@@ -1,6 +1,6 @@
 // Rail placement: a 60E1 head built here from its arcs (EN 13674-1 radii and tangency, as tabulated
-// in refdata/rail/DEFINITIONS.md), inclined 1:20 and placed at gauge 1435.16, must land on EN 15302
-// rail A (which is 60E1 at 1:20 in the running-circle frame).
+// in the rail definitions in data/PROVENANCE.md), inclined 1:20 and placed at gauge 1435.16, must
+// land on EN 15302 rail A (which is 60E1 at 1:20 in the running-circle frame).
 #include "contact/rail_placement.hpp"
 
 #include <gtest/gtest.h>
@@ -61,7 +61,7 @@ TEST(RailPlacement, UprightHeadHasGaugePointAt35_981) {
 }
 
 TEST(RailPlacement, SixtyE1At1To20IsEn15302RailA) {
-  const auto rail_a_file = tread::testing::refdata("rail/en15302/RailA.csv");
+  const auto rail_a_file = tread::testing::test_data("rail/en15302/RailA.csv");
   ASSERT_TRUE(std::filesystem::exists(rail_a_file)) << rail_a_file;
   const auto rail_a = read_profile_csv(rail_a_file);
   RailPlacement at_1_20;

@@ -13,7 +13,7 @@
 namespace {
 
 tread::contact::RigidContact make_contact() {
-  const auto dir = tread::testing::refdata("rail/en15302");
+  const auto dir = tread::testing::test_data("rail/en15302");
   const auto wheel = tread::contact::read_profile_csv(dir / "WheelA.csv");
   const auto rail = tread::contact::read_profile_csv(dir / "RailA.csv");
   return tread::contact::RigidContact(wheel, wheel, rail, {1360.0, 460.0, 460.0});

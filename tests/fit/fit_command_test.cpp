@@ -195,7 +195,7 @@ double fy_of(const tread::mf::MfParameters<double>& p, double fz, double alpha) 
 // Stage 2: --model mf61 fits the pure lateral coefficients from a neutral start .tir and writes a
 // .tir that the Magic Formula reader (the one `tread mf eval` uses) reads back.
 TEST(FitCommand, Mf61PureLateralWritesTir) {
-  const auto tir = tread::testing::refdata("tir/MagicFormula61_Parameters.tir");
+  const auto tir = tread::testing::tyre_file("MagicFormula61_Parameters.tir");
   ASSERT_TRUE(std::filesystem::exists(tir)) << tir;
   const tread::mf::MfParameters<double> truth = tread::mf::load_mf_parameters(tir).params;
   const auto dir = tmp_dir();
@@ -245,7 +245,7 @@ TEST(FitCommand, Mf61PureLateralWritesTir) {
 
 // --synthesize writes the same file for the same --seed and a different one for another seed.
 TEST(FitCommand, SynthesizeIsDeterministicPerSeed) {
-  const auto tir = tread::testing::refdata("tir/chrono_Sedan_Pac02Tire.tir");
+  const auto tir = tread::testing::tyre_file("chrono_Sedan_Pac02Tire.tir");
   ASSERT_TRUE(std::filesystem::exists(tir)) << tir;
   const auto dir = tmp_dir();
   const auto err = dir / "stderr_synth.txt";
@@ -282,7 +282,7 @@ double value_of(const tread::mf::MfParameters<double>& p, double fz, double kapp
 // file; the written .tir is read back by the reader `tread mf eval` uses (and by `tread mf eval`
 // itself); report, plots and progress lines are written.
 TEST(FitCommand, Pac2002StagedFitFromSynthesizedData) {
-  const auto tir = tread::testing::refdata("tir/chrono_Sedan_Pac02Tire.tir");
+  const auto tir = tread::testing::tyre_file("chrono_Sedan_Pac02Tire.tir");
   ASSERT_TRUE(std::filesystem::exists(tir)) << tir;
   const auto dir = tmp_dir();
   const auto data = dir / "pac2002_data.csv";

@@ -23,7 +23,7 @@ double fy(const mf::MfParameters<double>& p, double fz, double alpha) {
 }
 
 void BM_Mf61PureLateralFit5000(benchmark::State& state) {
-  const auto path = tread::testing::refdata("tir/MagicFormula61_Parameters.tir");
+  const auto path = tread::testing::tyre_file("MagicFormula61_Parameters.tir");
   const mf::MfParameters<double> truth = mf::load_mf_parameters(path).params;
   const mf::MfParameters<double> start = tread::testing::book_lateral_start(truth);
   std::mt19937_64 rng(5);

@@ -31,7 +31,7 @@ double peak(const mf::MfParameters<double>& p, double fz) {
 }
 
 TEST(MfLateralFit, RecoversMf61PureLateralFromNeutralStart) {
-  const auto path = tread::testing::refdata("tir/MagicFormula61_Parameters.tir");
+  const auto path = tread::testing::tyre_file("MagicFormula61_Parameters.tir");
   ASSERT_TRUE(std::filesystem::exists(path)) << path;
   const mf::MfParameters<double> truth = mf::load_mf_parameters(path).params;
   // Neutral start: the file's non-lateral data (FNOMIN, scalings), book-default lateral terms.

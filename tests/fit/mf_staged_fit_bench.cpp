@@ -13,7 +13,7 @@ namespace {
 using namespace tread;
 
 void BM_Mf61StagedFit(benchmark::State& state) {
-  const auto path = tread::testing::refdata("tir/MagicFormula61_Parameters.tir");
+  const auto path = tread::testing::tyre_file("MagicFormula61_Parameters.tir");
   const mf::MfParameters<double> truth = mf::load_mf_parameters(path).params;
   const fit::MeasurementSet data =
       fit::synthesize_measurements(truth, fit::SyntheticGrid{}, 20261121);

@@ -1,5 +1,5 @@
 // The acceptance test of `tread fit` Stage 2 (issue 7, "Done when"): for every .tir of
-// ../shared/refdata/tir the core supports, synthetic measurements on a test-rig-like grid
+// data/tyres the core supports, synthetic measurements on a test-rig-like grid
 // (synthetic_measurements.hpp: Fz 0.5/1/1.5 × FNOMIN, pure κ and α sweeps at five cambers, combined
 // sweeps; Gaussian noise 1 % of the peak, fixed seed) are fitted by the staged fit from a neutral
 // start (every fitted coefficient at its book value; FNOMIN, R0, scalings and limits from the
@@ -78,7 +78,7 @@ class MfStagedFit : public ::testing::TestWithParam<Case> {};
 
 TEST_P(MfStagedFit, RecoversStiffnessFrictionAndCurvesFromNeutralStart) {
   const Case c = GetParam();
-  const auto path = tread::testing::refdata(std::string("tir/") + c.file);
+  const auto path = tread::testing::tyre_file(c.file);
   ASSERT_TRUE(std::filesystem::exists(path)) << path;
   const mf::MfParameters<double> truth = mf::load_mf_parameters(path).params;
   check_model(truth, c.model, c.file);

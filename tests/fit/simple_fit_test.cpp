@@ -52,7 +52,7 @@ struct Truth {
 };
 
 Truth load_truth() {
-  const auto path = tread::testing::refdata("tir/MagicFormula61_Parameters.tir");
+  const auto path = tread::testing::tyre_file("MagicFormula61_Parameters.tir");
   if (!std::filesystem::exists(path)) throw std::runtime_error("missing " + path.string());
   Truth t;
   t.params = mf::load_mf_parameters(path).params;

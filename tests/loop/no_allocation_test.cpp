@@ -45,7 +45,7 @@ TEST(NoAllocation, TheCounterSeesNewAndMalloc) {  // the measurement itself is n
 
 TEST(NoAllocation, HundredThousandCyclesOfTheFullLoopAllocateNothing) {
   // ---- init: may allocate ----
-  const auto tir = testing::refdata("tir/MagicFormula61_Parameters.tir");
+  const auto tir = testing::tyre_file("MagicFormula61_Parameters.tir");
   const mf::MfParameters<float> params =
       mf::convert_parameters<float>(mf::load_mf_parameters(tir).params);
   std::array<node::MfTyreChannel, 4> tyres;

@@ -57,7 +57,7 @@ void run_cycles(benchmark::State& state, std::array<Tyre, 4>& tyres) {
 /// The full cycle with MF 6.1 (float, combined, with Rl) on four wheels.
 void BM_NodeCycle(benchmark::State& state) {
   const mf::MfParameters<float> params = mf::convert_parameters<float>(
-      mf::load_mf_parameters(testing::refdata("tir/MagicFormula61_Parameters.tir")).params);
+      mf::load_mf_parameters(testing::tyre_file("MagicFormula61_Parameters.tir")).params);
   std::array<node::MfTyreChannel, 4> tyres;
   for (auto& t : tyres) t = node::MfTyreChannel(params, mf::MfOptions{});
   run_cycles(state, tyres);

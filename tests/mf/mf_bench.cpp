@@ -1,6 +1,6 @@
 // Google Benchmark of src/mf: ns per evaluation (one wheel, one instant), float and double, pure
 // and combined slip, forces and moments only (extras off) and with the extras (Re, Rl, patch...).
-// Parameters: ../shared/refdata/tir/MagicFormula61_Parameters.tir (MF 6.1), useMode 111.
+// Parameters: data/tyres/MagicFormula61_Parameters.tir (MF 6.1), useMode 111.
 // Inputs cycle through 1024 precomputed physical operating points, so branches are not trivially
 // predicted. Target (issue 3): MF 6.1 combined Fx, Fy, Mz, Mx, My in float ≤ 100 ns per wheel.
 #include <benchmark/benchmark.h>
@@ -37,7 +37,7 @@ std::array<MfInput<T>, kInputs> make_inputs() {
 template <typename T>
 void bench(benchmark::State& state, const char* tir, bool combined, bool extras) {
   const MfParameters<T> p =
-      convert_parameters<T>(load_mf_parameters(testing::refdata(std::string("tir/") + tir)).params);
+      convert_parameters<T>(load_mf_parameters(testing::tyre_file(tir)).params);
   MfOptions o = options_from_use_mode(111).value;
   o.combined = combined;
   o.extras = extras;
@@ -54,8 +54,8 @@ void bench(benchmark::State& state, const char* tir, bool combined, bool extras)
 /// Four wheels per call (evaluate_four: four float lanes, results left in the lanes); items are
 /// wheels, so the reported time per item is per wheel.
 void bench_four(benchmark::State& state, const char* tir, bool combined, bool extras) {
-  const MfParameters<float> p = convert_parameters<float>(
-      load_mf_parameters(testing::refdata(std::string("tir/") + tir)).params);
+  const MfParameters<float> p =
+      convert_parameters<float>(load_mf_parameters(testing::tyre_file(tir)).params);
   MfOptions o = options_from_use_mode(111).value;
   o.combined = combined;
   o.extras = extras;

@@ -34,8 +34,8 @@ std::string slurp(const std::filesystem::path& path) {
 
 TEST(MfCommand, EvalMatchesMfevalGrid) {
   const auto ref_path =
-      tread::testing::refdata("mfeval/mfeval_MagicFormula61_Parameters_mode111.csv");
-  const auto tir = tread::testing::refdata("tir/MagicFormula61_Parameters.tir");
+      tread::testing::test_data("mfeval/mfeval_MagicFormula61_Parameters_mode111.csv");
+  const auto tir = tread::testing::tyre_file("MagicFormula61_Parameters.tir");
   ASSERT_TRUE(std::filesystem::exists(ref_path)) << ref_path;
   const tread::testing::CsvTable ref = tread::testing::read_csv(ref_path.string());
   const auto dir = tmp_dir();
@@ -80,7 +80,7 @@ TEST(MfCommand, EvalMatchesMfevalGrid) {
 }
 
 TEST(MfCommand, BadInputNamesFileAndLine) {
-  const auto tir = tread::testing::refdata("tir/MagicFormula61_Parameters.tir");
+  const auto tir = tread::testing::tyre_file("MagicFormula61_Parameters.tir");
   const auto dir = tmp_dir();
   const auto bad = dir / "bad.csv";
   {
@@ -115,7 +115,7 @@ TEST(MfCommand, BadInputNamesFileAndLine) {
 }
 
 TEST(MfCommand, PlotWritesPngAndSvg) {
-  const auto tir = tread::testing::refdata("tir/MagicFormula52_Parameters.tir");
+  const auto tir = tread::testing::tyre_file("MagicFormula52_Parameters.tir");
   const auto dir = tmp_dir();
   const auto png = dir / "curves.png";
   const auto svg = dir / "curves.svg";

@@ -109,8 +109,8 @@ const std::vector<GoldenCase>& golden_cases() {
 void golden_four(const GoldenCase& gc, std::uint64_t shuffle_seed) {
   const testing::CsvTable table = testing::load_golden(gc.csv);
   ASSERT_EQ(table.rows.size(), gc.rows);
-  const MfParameters<float> pf = convert_parameters<float>(
-      load_mf_parameters(testing::refdata(std::string("tir/") + gc.tir)).params);
+  const MfParameters<float> pf =
+      convert_parameters<float>(load_mf_parameters(testing::tyre_file(gc.tir)).params);
   for (int mode : gc.modes) {
     const Result<MfOptions> options = options_from_use_mode(mode);
     ASSERT_TRUE(options.ok());
@@ -173,7 +173,7 @@ struct LoadedTir {
 };
 
 std::vector<LoadedTir> loadable_tir_files() {
-  const auto dir = testing::refdata("tir");
+  const auto dir = testing::tyres_dir();
   EXPECT_TRUE(std::filesystem::is_directory(dir)) << dir << " is missing";
   std::vector<std::filesystem::path> paths;
   if (std::filesystem::is_directory(dir)) {
@@ -190,7 +190,7 @@ std::vector<LoadedTir> loadable_tir_files() {
       std::printf("[ not MF   ] %s: %s\n", path.filename().string().c_str(), e.what());
     }
   }
-  // The eight MF 5.2 / 6.1 / 6.2 / PAC2002 files of ../shared/refdata/tir at the time of writing.
+  // The eight MF 5.2 / 6.1 / 6.2 / PAC2002 files of data/tyres at the time of writing.
   EXPECT_GE(files.size(), 8U);
   return files;
 }
@@ -535,7 +535,7 @@ TEST(MfEvaluateFour, OutOfEnvelopeInOneLaneSetsOutOfRangeInThatLaneOnly) {
   // .tir's polynomials in dFz cancel, e.g. μx = PDX1 + PDX2·dFz, and a small Fx carries the
   // rounding of large terms).
   const MfTirParameters loaded =
-      load_mf_parameters(testing::refdata("tir/MagicFormula61_Parameters.tir"));
+      load_mf_parameters(testing::tyre_file("MagicFormula61_Parameters.tir"));
   const MfParameters<float> pf = convert_parameters<float>(loaded.params);
   Inputs4 clean;
   clean[0] = {4000.0f, 0.05f, 0.03f, 0.01f, 20.0f, 0.0f, 0.0f};

@@ -22,7 +22,7 @@ using testing::wild;
 
 template <typename T>
 void fuzz(const std::string& tir_name, int cases) {
-  const auto path = testing::refdata("tir/" + tir_name);
+  const auto path = testing::tyre_file(tir_name);
   ASSERT_TRUE(std::filesystem::exists(path)) << path;
   const MfParameters<T> p = convert_parameters<T>(load_mf_parameters(path).params);
   std::mt19937_64 rng(0x7ead + static_cast<std::uint64_t>(cases));

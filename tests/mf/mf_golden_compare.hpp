@@ -1,6 +1,6 @@
 #pragma once
 // Test helper: the float comparison of tread's Magic Formula against MFeval 4.3.1's tables
-// (../shared/refdata/mfeval), shared by mf_golden_test (scalar float) and mf_evaluate_four_test
+// (tests/data/mfeval), shared by mf_golden_test (scalar float) and mf_evaluate_four_test
 // (four lanes): which rows and values are references, the float scales (the grid's largest |force|
 // for forces, |moment| for moments, the column's largest |value| otherwise) and the check of one
 // row's outputs within 2e-4 × scale.
@@ -27,9 +27,9 @@ namespace tread::testing {
 /// The float tolerance against MFeval, relative to the scale of the column.
 inline constexpr double kGoldenFloatTolerance = 2e-4;
 
-/// An MFeval table of ../shared/refdata/mfeval; a missing file fails the test.
+/// An MFeval table of tests/data/mfeval; a missing file fails the test.
 inline CsvTable load_golden(const std::string& name) {
-  const auto path = refdata("mfeval/" + name);
+  const auto path = test_data("mfeval/" + name);
   EXPECT_TRUE(std::filesystem::exists(path)) << path << " is missing";
   return read_csv(path.string());
 }

@@ -1,4 +1,4 @@
-// Golden tests of src/mf against MFeval 4.3.1 (../shared/refdata/mfeval): every output column both
+// Golden tests of src/mf against MFeval 4.3.1 (tests/data/mfeval): every output column both
 // define, in double within 1e-9·max(|ref|, 1); in float within 2e-4 × the file's largest |force|
 // (forces), largest |moment| (moments) or the column's largest |value| (other columns). Rows where
 // MFeval is NaN/Inf are compared only for tread being finite. iKya_Nprad is ignored.
@@ -24,7 +24,8 @@ namespace tread::mf {
 namespace {
 
 using testing::CsvTable;
-using testing::refdata;
+using testing::test_data;
+using testing::tyre_file;
 
 struct Worst {
   double double_rel = 0.0;  // max |d| / max(|ref|, 1)
@@ -35,7 +36,7 @@ struct Worst {
 /// Compares every row of `table` (rows with useMode == mode, or all rows if the table has no
 /// useMode column) and returns the worst errors. Fails the test for any violation.
 Worst compare(const std::string& tir, const CsvTable& table, int mode) {
-  const MfTirParameters loaded = load_mf_parameters(refdata("tir/" + tir));
+  const MfTirParameters loaded = load_mf_parameters(tyre_file(tir));
   const MfParameters<double> pd = loaded.params;
   const MfParameters<float> pf = convert_parameters<float>(pd);
   const Result<MfOptions> options = options_from_use_mode(mode);

@@ -1,5 +1,5 @@
 #pragma once
-// Test helper: MFeval's output column names (units in the names, as in ../shared/refdata/mfeval)
+// Test helper: MFeval's output column names (units in the names, as in tests/data/mfeval)
 // mapped onto tread::mf::MfOutput members.
 
 #include <array>

@@ -18,7 +18,7 @@ namespace tread::mf {
 namespace {
 
 MfParameters<double> load(const char* name) {
-  const auto path = testing::refdata(std::string("tir/") + name);
+  const auto path = testing::tyre_file(name);
   EXPECT_TRUE(std::filesystem::exists(path)) << path;
   return load_mf_parameters(path).params;
 }

@@ -15,7 +15,7 @@ bool contains(const std::vector<std::string>& v, const std::string& s) {
 }
 
 TEST(MfParametersFromTir, ReadsValuesAndListsMissingKeys) {
-  const auto path = testing::refdata("tir/MagicFormula61_Parameters.tir");
+  const auto path = testing::tyre_file("MagicFormula61_Parameters.tir");
   ASSERT_TRUE(std::filesystem::exists(path)) << path;
   const MfTirParameters r = load_mf_parameters(path);
   EXPECT_EQ(r.params.fit_type, FitType::mf61);
@@ -50,8 +50,7 @@ TEST(MfParametersFromTir, MissingKeysAreThoseOfTheFilesOwnModel) {
 }
 
 TEST(MfParametersFromTir, Mf52FileTakesDefaults) {
-  const MfTirParameters r =
-      load_mf_parameters(testing::refdata("tir/MagicFormula52_Parameters.tir"));
+  const MfTirParameters r = load_mf_parameters(testing::tyre_file("MagicFormula52_Parameters.tir"));
   EXPECT_EQ(r.params.fit_type, FitType::mf52);
   EXPECT_EQ(r.params.tyre_side, TyreSide::left);  // no TYRESIDE
   EXPECT_FALSE(contains(r.missing, "NOMPRES"));   // not an MF 5.2 key

@@ -26,8 +26,7 @@ MfInput<double> input(double kappa, double alpha, double vx) {
 class MfTransientTest : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(MfTransientTest, StepResponseTimeConstantIsSigmaOverVx) {
-  const MfParameters<double> p =
-      load_mf_parameters(testing::refdata(std::string("tir/") + GetParam())).params;
+  const MfParameters<double> p = load_mf_parameters(testing::tyre_file(GetParam())).params;
   const MfOptions o = options_from_use_mode(111).value;
   const double vx = 20.0;
   const double dt = 1e-3;

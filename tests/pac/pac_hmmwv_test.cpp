@@ -1,6 +1,6 @@
-// PAC89 with the Chrono HMMWV coefficients (../shared/refdata/tir/chrono_HMMWV_Pac89Tire.json):
-// values computed by hand from the seed's equations, plausibility of the curves, and the loaders
-// (JSON, and .tir written from it and read back).
+// PAC89 with the Chrono HMMWV coefficients (data/tyres/chrono_HMMWV_Pac89Tire.tir; tests/data/tyres
+// for the JSON): values computed by hand from the seed's equations, plausibility of the curves, and
+// the loaders (JSON, and .tir written from it and read back).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -24,7 +24,7 @@ using tread::pac::PacParams;
 using tread::pac::Slip;
 
 PacParams<double> hmmwv() {
-  const auto path = tread::testing::refdata("tir/chrono_HMMWV_Pac89Tire.json");
+  const auto path = tread::testing::test_data("tyres/chrono_HMMWV_Pac89Tire.json");
   EXPECT_TRUE(std::filesystem::exists(path)) << path << " is missing";
   return tread::tir::pac_from_chrono_json(path).params;
 }
@@ -119,7 +119,7 @@ TEST(Pac89Hmmwv, CombinedSlipStaysInsideTheFrictionCircle) {
 }
 
 TEST(PacLoaders, ChronoJsonValues) {
-  const auto path = tread::testing::refdata("tir/chrono_HMMWV_Pac89Tire.json");
+  const auto path = tread::testing::test_data("tyres/chrono_HMMWV_Pac89Tire.json");
   ASSERT_TRUE(std::filesystem::exists(path)) << path;
   const auto c = tread::tir::pac_from_chrono_json(path);
   // Values as printed in the file.

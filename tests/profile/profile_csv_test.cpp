@@ -65,7 +65,7 @@ TEST(ProfileCsv, RoundTripIsExactAtSeventeenDigits) {
 }
 
 TEST(ProfileCsvGolden, ReadsEn15302RailAAndWheelA) {
-  const auto rail_path = testing::refdata("rail/en15302/RailA.csv");
+  const auto rail_path = testing::test_data("rail/en15302/RailA.csv");
   ASSERT_TRUE(std::filesystem::exists(rail_path)) << rail_path;
   const SampledProfile rail = read_profile_csv(rail_path);
   EXPECT_EQ(rail.name, "RailA");
@@ -73,7 +73,7 @@ TEST(ProfileCsvGolden, ReadsEn15302RailAAndWheelA) {
   EXPECT_DOUBLE_EQ(rail.y_mm.front(), -32.634);
   EXPECT_DOUBLE_EQ(rail.z_mm.front(), -15.521274);
   check_sampled_profile(rail);
-  const auto wheel_path = testing::refdata("rail/en15302/WheelA.csv");
+  const auto wheel_path = testing::test_data("rail/en15302/WheelA.csv");
   ASSERT_TRUE(std::filesystem::exists(wheel_path)) << wheel_path;
   const SampledProfile wheel = read_profile_csv(wheel_path);
   EXPECT_DOUBLE_EQ(wheel.y_mm.front(), -70.0);

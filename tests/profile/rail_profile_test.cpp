@@ -75,7 +75,7 @@ TEST(RailProfile, TrackFramePlacesTheGaugePoint) {
 }
 
 TEST(RailProfileGolden, En15302RailAIs60E1InclinedOneInTwenty) {
-  const auto path = testing::refdata("rail/en15302/RailA.csv");
+  const auto path = testing::test_data("rail/en15302/RailA.csv");
   ASSERT_TRUE(std::filesystem::exists(path)) << path;
   const SampledProfile a = read_profile_csv(path);
   // EN 15302 conditions: gauge 1435.16 mm, b2b 1360 (running circles ±750).
@@ -162,7 +162,7 @@ Deviation head_deviation(const SampledProfile& m, const RailProfile& rail) {
 }
 
 TEST(RailProfileGolden, ManchesterBenchmarkRailIs60E1InclinedOneInForty) {
-  const auto path = testing::refdata("rail/manchester_benchmark/MBench_UIC60_v3.prr");
+  const auto path = testing::test_data("rail/manchester_benchmark/MBench_UIC60_v3.prr");
   ASSERT_TRUE(std::filesystem::exists(path)) << path;
   const SampledProfile m = read_simpack_profile(path).profile;
   const Deviation d40 = head_deviation(m, RailProfile(RailSection::k60E1, RailInclination::k1in40));

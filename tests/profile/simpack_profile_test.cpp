@@ -73,7 +73,7 @@ TEST(SimpackProfile, WriteReadRoundTripForWheelAndRail) {
 }
 
 TEST(SimpackProfileGolden, ReadsManchesterWheelAndRail) {
-  const auto wheel_path = testing::refdata("rail/manchester_benchmark/MBench_S1002_v3.prw");
+  const auto wheel_path = testing::test_data("rail/manchester_benchmark/MBench_S1002_v3.prw");
   ASSERT_TRUE(std::filesystem::exists(wheel_path)) << wheel_path;
   const SimpackProfile wheel = read_simpack_profile(wheel_path);
   EXPECT_EQ(wheel.type, SimpackProfileType::kWheel);
@@ -86,7 +86,7 @@ TEST(SimpackProfileGolden, ReadsManchesterWheelAndRail) {
   const auto tip = std::max_element(wheel.profile.z_mm.begin(), wheel.profile.z_mm.end());
   EXPECT_NEAR(*tip, 28.0, 1e-3);  // flange height of S1002
 
-  const auto rail_path = testing::refdata("rail/manchester_benchmark/MBench_UIC60_v3.prr");
+  const auto rail_path = testing::test_data("rail/manchester_benchmark/MBench_UIC60_v3.prr");
   ASSERT_TRUE(std::filesystem::exists(rail_path)) << rail_path;
   const SimpackProfile rail = read_simpack_profile(rail_path);
   EXPECT_EQ(rail.type, SimpackProfileType::kRail);

@@ -20,7 +20,7 @@
 namespace tread::profile {
 namespace {
 
-using ::tread::testing::refdata;
+using ::tread::testing::test_data;
 
 std::vector<WheelParameters> every_variant() {
   std::vector<WheelParameters> all;
@@ -169,7 +169,7 @@ TEST(WheelProfile, QrOfTheNewProfiles) {
 }
 
 TEST(WheelProfileGolden, FlangeCharacteristicPointsOfEveryHeightAndThickness) {
-  const auto path = refdata("rail/en13715/flange_characteristic_points.csv");
+  const auto path = test_data("rail/en13715/flange_characteristic_points.csv");
   ASSERT_TRUE(std::filesystem::exists(path)) << path;
   const auto rows = csv_rows(path);
   ASSERT_GT(rows.size(), 300u);
@@ -220,7 +220,7 @@ const ProfilePoint& point(const WheelProfile& w, const std::string& name) {
 }
 
 TEST(WheelProfileGolden, FlangeArcCentresOfEveryHeightAndThickness) {
-  const auto path = refdata("rail/en13715/flange_characteristic_points.csv");
+  const auto path = test_data("rail/en13715/flange_characteristic_points.csv");
   ASSERT_TRUE(std::filesystem::exists(path)) << path;
   double worst = 0.0;
   std::size_t checked = 0;
@@ -285,7 +285,7 @@ TEST(WheelProfile, TreadPointsOfOneInFortyAndEps) {
 }
 
 TEST(WheelProfileGolden, S1002WithinOneMicrometreOfTheManchesterBenchmarkWheel) {
-  const auto path = refdata("rail/manchester_benchmark/MBench_S1002_v3.prw");
+  const auto path = test_data("rail/manchester_benchmark/MBench_S1002_v3.prw");
   ASSERT_TRUE(std::filesystem::exists(path)) << path;
   const SimpackProfile file = read_simpack_profile(path);
   const WheelProfile w({WheelFamily::kS1002, 28.0, 32.5, OuterSlope::k1in15, 135.0, false});
@@ -300,8 +300,8 @@ TEST(WheelProfileGolden, S1002WithinOneMicrometreOfTheManchesterBenchmarkWheel) 
 }
 
 TEST(WheelProfileGolden, S1002ThroughTablesC1AndC2AtEveryThickness) {
-  const auto c1 = refdata("rail/en13715/tableC1_S1002_D1_to_T1.csv");
-  const auto c2 = refdata("rail/en13715/tableC2_S1002_D0_to_B1.csv");
+  const auto c1 = test_data("rail/en13715/tableC1_S1002_D1_to_T1.csv");
+  const auto c2 = test_data("rail/en13715/tableC2_S1002_D0_to_B1.csv");
   ASSERT_TRUE(std::filesystem::exists(c1)) << c1;
   ASSERT_TRUE(std::filesystem::exists(c2)) << c2;
   const auto rows1 = csv_rows(c1);
@@ -330,7 +330,7 @@ TEST(WheelProfileGolden, S1002ThroughTablesC1AndC2AtEveryThickness) {
 }
 
 TEST(WheelProfileGolden, EpsThroughTableD1AtEveryThickness) {
-  const auto path = refdata("rail/en13715/tableD1_EPS_transition_D1_to_C1b.csv");
+  const auto path = test_data("rail/en13715/tableD1_EPS_transition_D1_to_C1b.csv");
   ASSERT_TRUE(std::filesystem::exists(path)) << path;
   const auto rows = csv_rows(path);
   ASSERT_EQ(rows.size(), 207u);
@@ -368,32 +368,16 @@ struct SeedRow {
   double tan;
 };
 
-/// The seed's appendix table ("Vzor ASCII tabulky": S1002, e 32.5, h 28). Its header says
+/// The seed's appendix table ("Vzor ASCII tabulky": S1002, e 32.5, h 28), shipped as
+/// tests/data/seed/s1002_h28_e32.5_slope6.7_appendix.csv. The seed's header says
 /// "z [mm] y [mm] tan-g" but the first column runs 70.0 … 25.6 at 0.1 mm: it is y.
 std::vector<SeedRow> seed_appendix() {
-  const auto path = std::filesystem::path(::tread::testing::refdata_dir()).parent_path() / "seeds" /
-                    "001_a2af4bf31fc62f5e.txt";
-  std::ifstream in(path);
+  std::ifstream in(test_data("seed/s1002_h28_e32.5_slope6.7_appendix.csv"));
   std::vector<SeedRow> rows;
   std::string line;
-  bool in_table = false;
   while (std::getline(in, line)) {
-    if (line.find("Vzor ASCII tabulky") != std::string::npos) {
-      in_table = true;
-      continue;
-    }
-    if (!in_table) {
-      continue;
-    }
-    double a = 0.0;
-    double b = 0.0;
-    double c = 0.0;
-    char extra = 0;
-    if (std::sscanf(line.c_str(), "%lf %lf %lf %c", &a, &b, &c, &extra) == 3) {
-      rows.push_back({a, b, c});
-    } else if (!rows.empty() && line.find("Změna") != std::string::npos) {
-      break;
-    }
+    SeedRow r{};
+    if (std::sscanf(line.c_str(), "%lf,%lf,%lf", &r.y, &r.z, &r.tan) == 3) rows.push_back(r);
   }
   return rows;
 }

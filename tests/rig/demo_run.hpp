@@ -1,6 +1,6 @@
 #pragma once
-// The rig tests' set-up: the HIL demo in process (stub bus, simulated clock) on the refdata tyre
-// and a wheelset profile, one scenario list, its traces in the test's temporary directory.
+// The rig tests' set-up: the HIL demo in process (stub bus, simulated clock) on the shipped example
+// tyre and a wheelset profile, one scenario list, its traces in the test's temporary directory.
 
 #include <cstdlib>
 #include <filesystem>
@@ -21,7 +21,7 @@ inline host::DemoSettings demo_settings(
     const std::vector<std::string>& scenarios, const std::string& out_name,
     const std::string& wheelset_profile = "wheel=S1002,rail=60E1,cant=1:40") {
   host::DemoSettings s;
-  s.node.tir = refdata("tir/MagicFormula61_Parameters.tir");
+  s.node.tir = tyre_file("MagicFormula61_Parameters.tir");
   s.node.node.wheels = 4;
   s.node.node.wheelsets = 2;
   s.node.wheelset_profile = wheelset_profile;

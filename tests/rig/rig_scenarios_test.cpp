@@ -90,7 +90,7 @@ TEST(RigScenarios, BrakingDecelerationIsBoundedByThePeakFrictionOfTheNodesTyre) 
   // cannot decelerate by more than mu_peak g with every wheel at its own peak.
   const Csv c = read_csv(o->trace_csv);
   const mf::MfParameters<double> tyre =
-      mf::load_mf_parameters(testing::refdata("tir/MagicFormula61_Parameters.tir")).params;
+      mf::load_mf_parameters(testing::tyre_file("MagicFormula61_Parameters.tir")).params;
   double fz_front = 0.0;
   double fz_rear = 0.0;
   const std::size_t mid = c.rows.size() / 2;  // steady braking

@@ -40,7 +40,7 @@ void expect_identical(const tread::mf::MfParameters<T>& a, const tread::mf::MfPa
 }
 
 TEST(MfHeader, GeneratedParametersEqualTheLoader) {
-  const auto path = tread::testing::refdata("tir/MagicFormula61_Parameters.tir");
+  const auto path = tread::testing::tyre_file("MagicFormula61_Parameters.tir");
   ASSERT_TRUE(std::filesystem::exists(path)) << path;
   const auto loaded = tread::mf::load_mf_parameters(path).params;
   expect_identical(tyres::kMf61Double, loaded);

@@ -22,7 +22,7 @@ std::filesystem::path tmp_dir() {
 }
 
 tread::pac::PacParams<double> hmmwv() {
-  const auto path = tread::testing::refdata("tir/chrono_HMMWV_Pac89Tire.json");
+  const auto path = tread::testing::test_data("tyres/chrono_HMMWV_Pac89Tire.json");
   EXPECT_TRUE(std::filesystem::exists(path)) << path;
   return tread::tir::pac_from_chrono_json(path).params;
 }

@@ -59,7 +59,7 @@ class NodeEmulation {
 class DelayCompensation : public ::testing::Test {
  protected:
   void SetUp() override {
-    const auto path = testing::refdata("tir/MagicFormula61_Parameters.tir");
+    const auto path = testing::tyre_file("MagicFormula61_Parameters.tir");
     ASSERT_TRUE(std::filesystem::exists(path)) << "missing reference data: " << path;
     tir_ = mf::load_mf_parameters(path).params;
     p_.wheel_radius_m = tir_.unloaded_radius_m;

@@ -29,7 +29,7 @@ struct Setup {
 const Setup& setup() {
   static const Setup s = [] {
     Setup out;
-    const auto path = testing::refdata("tir/MagicFormula61_Parameters.tir");
+    const auto path = testing::tyre_file("MagicFormula61_Parameters.tir");
     if (!std::filesystem::exists(path)) return out;  // each test asserts the file first
     const mf::MfTirParameters tir = mf::load_mf_parameters(path);
     out.params.wheel_radius_m = tir.params.unloaded_radius_m;
@@ -40,7 +40,7 @@ const Setup& setup() {
 }
 
 void assert_refdata() {
-  const auto path = testing::refdata("tir/MagicFormula61_Parameters.tir");
+  const auto path = testing::tyre_file("MagicFormula61_Parameters.tir");
   ASSERT_TRUE(std::filesystem::exists(path)) << "missing reference data: " << path;
 }
 

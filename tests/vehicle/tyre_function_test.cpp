@@ -25,7 +25,7 @@ TEST(TyreFunction, PeakBrakingSlipIsTheArgmaxOfTheBrakingForce) {
 }
 
 TEST(TyreFunction, MagicFormulaWrapperIsEvaluate) {
-  const auto path = testing::refdata("tir/MagicFormula61_Parameters.tir");
+  const auto path = testing::tyre_file("MagicFormula61_Parameters.tir");
   ASSERT_TRUE(std::filesystem::exists(path)) << "missing reference data: " << path;
   const mf::MfParameters<double> params = mf::load_mf_parameters(path).params;
   const TyreFunction tyre = mf_tyre_function(params);

@@ -31,7 +31,7 @@ BENCHMARK(BM_VehicleModelCycle);
 
 void BM_StepSteerInProcess(benchmark::State& state) {
   const auto tir =
-      tread::mf::load_mf_parameters(tread::testing::refdata("tir/MagicFormula61_Parameters.tir"));
+      tread::mf::load_mf_parameters(tread::testing::tyre_file("MagicFormula61_Parameters.tir"));
   VehicleParams p;
   p.wheel_radius_m = tir.params.unloaded_radius_m;
   const TyreFunction tyre = mf_tyre_function(tir.params);

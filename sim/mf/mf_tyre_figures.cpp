@@ -1,0 +1,72 @@
+#include "mf/mf_tyre_figures.hpp"
+
+#include <cmath>
+
+#include "mf/mf_evaluate.hpp"
+
+namespace tread::mf {
+
+namespace {
+
+struct Point {
+  double kappa = 0.0;
+  double alpha_rad = 0.0;
+};
+
+}  // namespace
+
+MfTyreFigures tyre_figures(const MfParameters<double>& params, const MfOptions& options,
+                           double fz_n, double vx_mps) {
+  MfTyreFigures f;
+  f.fz_n = fz_n > 0.0 ? fz_n : params.fnomin_n;
+  f.vx_mps = vx_mps > 0.0 ? vx_mps : params.longvl_mps > 0.0 ? params.longvl_mps : 16.7;
+  MfOptions o = options;
+  o.combined = true;
+  o.extras = true;
+  const auto eval = [&](Point pt) {
+    MfInput<double> in;
+    in.fz_n = f.fz_n;
+    in.kappa = pt.kappa;
+    in.alpha_rad = pt.alpha_rad;
+    in.vx_mps = f.vx_mps;
+    const MfOutput<double> out = evaluate(params, in, o);
+    for (const double v : {out.fx_n, out.fy_n, out.mz_nm, out.re_m, out.rl_m}) {
+      if (!std::isfinite(v)) f.finite = false;
+    }
+    return out;
+  };
+
+  const MfOutput<double> free = eval({});
+  f.p_pa = free.p_pa;
+  f.re_m = free.re_m;
+  f.rl_m = free.rl_m;
+
+  constexpr int kSteps = 1000;
+  for (int i = -kSteps; i <= kSteps; ++i) {
+    const double kappa = static_cast<double>(i) / kSteps;
+    const double mu = eval({kappa, 0.0}).fx_n / f.fz_n;
+    if (kappa > 0.0 && mu > f.mux_drive) {
+      f.mux_drive = mu;
+      f.kappa_drive = kappa;
+    }
+    if (kappa < 0.0 && -mu > f.mux_brake) {
+      f.mux_brake = -mu;
+      f.kappa_brake = kappa;
+    }
+    const double alpha = 0.5 * static_cast<double>(i) / kSteps;
+    const double muy = std::fabs(eval({0.0, alpha}).fy_n) / f.fz_n;
+    if (muy > f.muy) {
+      f.muy = muy;
+      f.alpha_muy_rad = alpha;
+    }
+  }
+
+  // The model's own stiffnesses (MFeval's Kxk and Kya outputs) at the free-rolling point.
+  f.kxk_n = free.kxk_n;
+  f.kya_nprad = -free.kya_nprad;
+  const double small_alpha = 0.5 * 3.14159265358979323846 / 180.0;
+  f.trail_m = eval({0.0, small_alpha}).t_m;
+  return f;
+}
+
+}  // namespace tread::mf

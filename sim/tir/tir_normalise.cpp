@@ -1,0 +1,68 @@
+#include "tir/tir_normalise.hpp"
+
+#include <cstddef>
+#include <string_view>
+
+namespace tread::tir {
+
+namespace {
+
+constexpr std::size_t kKeyWidth = 25;  // "KEY" padded so the '=' line up, as TNO files do
+
+std::string_view trim(std::string_view s) noexcept {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) {
+    s.remove_suffix(1);
+  }
+  return s;
+}
+
+// A table row without its trailing `$`/`!` comment.
+std::string_view row_without_comment(std::string_view row) noexcept {
+  const std::size_t c = row.find_first_of("$!");
+  return trim(c == std::string_view::npos ? row : row.substr(0, c));
+}
+
+void append_entry(std::string& out, const Entry& e) {
+  out += e.key;
+  if (e.key.size() < kKeyWidth) out.append(kKeyWidth - e.key.size(), ' ');
+  out += "= ";
+  if (e.is_quoted()) {
+    out += e.quote;
+    out += e.value;
+    out += e.quote;
+  } else {
+    out += e.value;
+  }
+  out += '\n';
+}
+
+}  // namespace
+
+std::string write_normalised_tir(const TirFile& file, const std::string& note) {
+  std::string out;
+  if (!note.empty()) {
+    out += "$ ";
+    for (const char c : note) out += (c == '\n' || c == '\r') ? ' ' : c;
+    out += '\n';
+  }
+  for (const Section& s : file.sections()) {
+    out += '[';
+    out += s.name;
+    out += "]\n";
+    for (const Line& l : s.lines) {
+      if (l.kind == Line::Kind::kEntry) {
+        append_entry(out, l.entry);
+      } else if (l.kind == Line::Kind::kTableRow) {
+        const std::string_view row = row_without_comment(l.text);
+        if (!row.empty()) {
+          out += row;
+          out += '\n';
+        }
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace tread::tir

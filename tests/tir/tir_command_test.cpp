@@ -1,0 +1,148 @@
+// End-to-end tests of `tread tir convert` (sim/cli/tir_command.cpp): a normalised rewrite keeps
+// every section, key, value text and table row, drops every comment, and evaluates the same; a
+// Chrono PAC89 JSON becomes a PAC89 property file; failures leave no output behind.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "golden_path.hpp"
+#include "mf/mf_evaluate.hpp"
+#include "mf/mf_parameters_from_tir.hpp"
+#include "test_dir.hpp"
+#include "tir/pac_coefficients.hpp"
+#include "tir/tir_file.hpp"
+
+namespace tread {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path tmp_dir() {
+  return testing::test_dir("tir_command_test");
+}
+
+int run(const std::string& args, const fs::path& stderr_file) {
+  const std::string command = std::string(TREAD_CLI) + " " + args + " 2> " + stderr_file.string();
+  return std::system(command.c_str());
+}
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(TirConvert, KeepsEveryValueDropsEveryComment) {
+  const fs::path dir = tmp_dir();
+  // Comments everywhere a .tir has them, CRLF line ends, a table section with a trailing comment.
+  const fs::path in = dir / "commented.tir";
+  {
+    std::ofstream f(in, std::ios::binary);
+    f << "$ a vendor's banner\r\n"
+         "[MDI_HEADER]   $ header comment\r\n"
+         "FILE_TYPE = 'tir'\r\n"
+         "FILE_VERSION = 3.0   ! bang comment\r\n"
+         "$----------------------------------model\r\n"
+         "[MODEL]\r\n"
+         "FITTYP = 61  $ Magic Formula version\r\n"
+         "TYRESIDE = \"LEFT\"\r\n"
+         "[VERTICAL]\r\n"
+         "FNOMIN = 4.85D+03 $ Fortran exponent kept as written\r\n"
+         "[DEFLECTION_LOAD_CURVE]\r\n"
+         "{pen     fz}\r\n"
+         " 0.000   0.0   $ first row\r\n"
+         " 0.001   212\r\n";
+  }
+  const fs::path out = dir / "normalised.tir";
+  ASSERT_EQ(run("tir convert " + in.string() + " " + out.string() + " --note 'made in a test'",
+                dir / "stderr.txt"),
+            0)
+      << slurp(dir / "stderr.txt");
+  EXPECT_EQ(slurp(out),
+            "$ made in a test\n"
+            "[MDI_HEADER]\n"
+            "FILE_TYPE                = 'tir'\n"
+            "FILE_VERSION             = 3.0\n"
+            "[MODEL]\n"
+            "FITTYP                   = 61\n"
+            "TYRESIDE                 = \"LEFT\"\n"
+            "[VERTICAL]\n"
+            "FNOMIN                   = 4.85D+03\n"
+            "[DEFLECTION_LOAD_CURVE]\n"
+            "{pen     fz}\n"
+            "0.000   0.0\n"
+            "0.001   212\n");
+  EXPECT_DOUBLE_EQ(*tir::read_tir(out).number("VERTICAL", "FNOMIN"), 4850.0);
+}
+
+TEST(TirConvert, NormalisedTyreEvaluatesTheSame) {
+  const fs::path dir = tmp_dir();
+  for (const char* name : {"MagicFormula61_Parameters.tir", "MagicFormula62_Parameters.tir",
+                           "chrono_VW_mf_185_80R14_PAC2002.tir"}) {
+    const fs::path src = testing::tyre_file(name);
+    const fs::path out = dir / name;
+    ASSERT_EQ(run("tir convert " + src.string() + " " + out.string(), dir / "stderr.txt"), 0)
+        << slurp(dir / "stderr.txt");
+    EXPECT_EQ(slurp(out).rfind("$ normalised by tread tir convert from " + std::string(name), 0),
+              0u);
+    const auto a = mf::load_mf_parameters(src).params;
+    const auto b = mf::load_mf_parameters(out).params;
+    mf::MfInput<double> x;
+    x.fz_n = 4500.0;
+    x.kappa = 0.05;
+    x.alpha_rad = -0.07;
+    x.gamma_rad = 0.02;
+    x.vx_mps = 20.0;
+    const auto ra = mf::evaluate(a, x, mf::MfOptions{});
+    const auto rb = mf::evaluate(b, x, mf::MfOptions{});
+    EXPECT_EQ(ra.fx_n, rb.fx_n) << name;
+    EXPECT_EQ(ra.fy_n, rb.fy_n) << name;
+    EXPECT_EQ(ra.mz_nm, rb.mz_nm) << name;
+  }
+}
+
+TEST(TirConvert, ChronoPac89JsonBecomesAPac89File) {
+  const fs::path dir = tmp_dir();
+  const fs::path json = testing::test_data("tyres/chrono_HMMWV_Pac89Tire.json");
+  const fs::path out = dir / "hmmwv.tir";
+  ASSERT_EQ(run("tir convert " + json.string() + " " + out.string(), dir / "stderr.txt"), 0)
+      << slurp(dir / "stderr.txt");
+  const tir::TirFile f = tir::read_tir(out);
+  EXPECT_EQ(f.text("MODEL", "PROPERTY_FILE_FORMAT"), "PAC89");
+  const auto from_json = tir::pac_from_chrono_json(json);
+  const auto from_tir = tir::pac_from_tir(f);
+  EXPECT_EQ(from_tir.params.a, from_json.params.a);
+  EXPECT_EQ(from_tir.params.b, from_json.params.b);
+  EXPECT_EQ(from_tir.params.c, from_json.params.c);
+  EXPECT_EQ(from_tir.params.unloaded_radius_m, from_json.params.unloaded_radius_m);
+}
+
+TEST(TirConvert, BadInputFailsWithFileAndLineAndWritesNothing) {
+  const fs::path dir = tmp_dir();
+  const fs::path in = dir / "broken.tir";
+  {
+    std::ofstream f(in);
+    f << "[MODEL]\nFITTYP = 61\nPDX1 = 'unterminated\n";
+  }
+  const fs::path out = dir / "broken_out.tir";
+  fs::remove(out);
+  EXPECT_NE(run("tir convert " + in.string() + " " + out.string(), dir / "stderr.txt"), 0);
+  EXPECT_NE(slurp(dir / "stderr.txt").find("broken.tir:3:"), std::string::npos)
+      << slurp(dir / "stderr.txt");
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_FALSE(fs::exists(dir / "broken_out.tir.tmp"));
+  // An unwritable destination: an error, and the destination directory is left as it was.
+  EXPECT_NE(run("tir convert " + testing::tyre_file("MagicFormula61_Parameters.tir").string() +
+                    " " + (dir / "no_such_dir" / "x.tir").string(),
+                dir / "stderr.txt"),
+            0);
+  EXPECT_NE(slurp(dir / "stderr.txt").find("cannot write"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace tread
