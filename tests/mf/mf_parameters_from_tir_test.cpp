@@ -31,7 +31,7 @@ TEST(MfParametersFromTir, ReadsValuesAndListsMissingKeys) {
 
 TEST(MfParametersFromTir, CompleteMf62FileReportsNoMissingKeys) {
   const MfTirParameters r =
-      load_mf_parameters(testing::refdata("tir/MagicFormula62_Parameters.tir"));
+      load_mf_parameters(testing::tyre_file("MagicFormula62_Parameters.tir"));
   EXPECT_EQ(r.params.fit_type, FitType::mf62);
   EXPECT_TRUE(r.missing.empty()) << r.warning;
   EXPECT_TRUE(r.warning.empty()) << r.warning;
@@ -121,7 +121,7 @@ TEST(MfParametersFromTir, Mf50IsEvaluatedOnThePac2002PathWithItsDifferencesSaid)
   EXPECT_NE(r.warning.find("FE_METHOD = 'YES'"), std::string::npos) << r.warning;
   EXPECT_DOUBLE_EQ(r.params.fnomin_n, 25990.0);
   const MfTirParameters feda =
-      load_mf_parameters(testing::refdata("tir/chrono_feda_335_65R22_5_G275MSA_60psi.tir"));
+      load_mf_parameters(testing::tyre_file("chrono_feda_335_65R22_5_G275MSA_60psi.tir"));
   EXPECT_EQ(feda.model, "MF-Tyre 5.0");
 }
 

@@ -71,10 +71,10 @@ TEST(TirModel, PacLoaderRoutesAndRefuses) {
   const PacCoefficients p89 = pac_from_tir(read_tyre_property_file(variant("pac89_header.tir")));
   EXPECT_FALSE(p89.pac94);
   try {
-    (void)pac_from_tir(read_tir(testing::refdata("tir/MagicFormula61_Parameters.tir")));
+    (void)pac_from_tir(read_tir(testing::tyre_file("MagicFormula61_Parameters.tir")));
     ADD_FAILURE() << "MF file accepted";
   } catch (const TirError& e) {
-    EXPECT_NE(std::string(e.what()).find(":14: this is an MF 6.1 file, not PAC89/PAC94: use tread "
+    EXPECT_NE(std::string(e.what()).find(":13: this is an MF 6.1 file, not PAC89/PAC94: use tread "
                                          "mf eval"),
               std::string::npos)
         << e.what();

@@ -85,7 +85,7 @@ TEST(TirKeys, TableCoversEveryMfParameterOnce) {
 
 // The same tyre in mm/kN/deg and in inch/lbf evaluates to the SI original's forces and moments.
 TEST(TirUnits, NonSiFilesEvaluateLikeTheSiOriginal) {
-  const auto si = mf::load_mf_parameters(testing::refdata("tir/MagicFormula61_Parameters.tir"));
+  const auto si = mf::load_mf_parameters(testing::tyre_file("MagicFormula61_Parameters.tir"));
   for (const char* name : {"mf61_mm_kN_deg.tir", "mf61_inch_lbf.tir"}) {
     SCOPED_TRACE(name);
     const auto other = mf::load_mf_parameters(variant(name));
@@ -137,7 +137,7 @@ TEST(TirUnits, RoundTripKeepsTheFileUnitsAndSetSiConverts) {
 
 // convert_to_si: every dimensional value in SI, [UNITS] SI, the MF coefficients untouched.
 TEST(TirUnits, ConvertToSiMatchesTheSiOriginal) {
-  const TirFile si = read_tir(testing::refdata("tir/MagicFormula61_Parameters.tir"));
+  const TirFile si = read_tir(testing::tyre_file("MagicFormula61_Parameters.tir"));
   TirFile f = read_tir(variant("mf61_mm_kN_deg.tir"));
   const std::vector<std::string> unknown = convert_to_si(f);
   EXPECT_TRUE(unknown.empty()) << unknown.front();
