@@ -10,12 +10,15 @@
 #include <iostream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "cli/commands.hpp"
 #include "fit/measurement.hpp"
+#include "fit/mf61_from_mf52.hpp"
 #include "fit/mf_staged_fit.hpp"
 #include "fit/simple_fit.hpp"
 #include "fit/synthetic_measurements.hpp"
+#include "mf/input_table.hpp"
 #include "mf/mf_parameters_from_tir.hpp"
 #include "tir/tir_file.hpp"
 
@@ -29,7 +32,12 @@ struct FitCliState {
   double noise = 0.01;
   bool asymmetric_e = false;
   bool neutral_start = false;
+  std::string convention = "iso-w";
 };
+
+mf::SignConvention convention_of(const FitCliState& s) {
+  return *mf::parse_sign_convention(s.convention);
+}
 
 void progress_line(const std::string& line) {
   std::cerr << "tread fit: " << line << "\n";
@@ -61,19 +69,43 @@ void run_staged(const FitCliState& s) {
   }
   tir::TirFile file = tir::read_tir(s.start);
   mf::MfParameters<double> start = mf::mf_parameters_from_tir(file).params;
+  const bool from_mf52 = model == fit::MfFitModel::mf61 && (start.fit_type == mf::FitType::mf52 ||
+                                                            start.fit_type == mf::FitType::pac2002);
+  if (from_mf52) {
+    std::vector<std::string> notes;
+    start = fit::mf61_start_from_mf52(start, notes);
+    std::cerr << "tread fit: " << s.start
+              << ": a PAC2002 / MF 5.2 start, refitted as MF 6.1 (shared coefficients kept, MF "
+                 "6.1's own at their book values)\n";
+    for (const std::string& n : notes) std::cerr << "tread fit: note: " << n << "\n";
+  }
   fit::check_model(start, model, s.start);
   if (s.neutral_start) start = fit::neutral_start(start, model);
-  const fit::MeasurementSet data = fit::load_measurements(s.input);
+  const fit::MeasurementSet data = fit::load_measurements(s.input, convention_of(s));
   std::cerr << "tread fit: " << data.points.size() << " points from " << data.source << "; staged "
             << s.model << " fit\n";
   const fit::StagedFit result = fit::fit_mf_staged(data, start, model, progress_line);
   if (result.stages.empty()) {
     throw std::runtime_error(data.source + ": no pure-slip sweep with enough points to fit");
   }
+  if (from_mf52) {
+    const std::vector<std::string> removed = fit::rewrite_as_mf61(file, result.params);
+    if (!removed.empty()) {
+      std::cerr << "tread fit: written as FITTYP 61; keys MF 6.1 does not read, removed:";
+      for (const std::string& k : removed) std::cerr << ' ' << k;
+      std::cerr << "\n";
+    }
+  }
   fit::set_fitted_coefficients(file, result);
   tir::write_tir(file, s.output);
   std::cerr << "tread fit: " << result.stages.size() << " stages in " << result.seconds << " s -> "
             << s.output << "\n";
+  for (const auto& st : fit::final_stats(result, data)) {
+    std::cerr << "tread fit: fit error " << fit::fit_channel_name(st.channel)
+              << " at Fz = " << st.fz_n << " N: RMS " << st.rms << ' '
+              << fit::fit_channel_unit(st.channel) << ", R² " << st.r2 << " (" << st.points
+              << " points)\n";
+  }
   if (!s.report.empty()) {
     std::ofstream out(s.report);
     fit::write_staged_report(result, data, out);
@@ -101,7 +133,7 @@ void run_fit(const FitCliState& s) {
                              ": --model simple writes the per-load constants as .csv (a .tir needs "
                              "a full coefficient set: --model mf61 or pac2002)");
   }
-  const fit::MeasurementSet data = fit::load_measurements(s.input);
+  const fit::MeasurementSet data = fit::load_measurements(s.input, convention_of(s));
   std::cerr << "tread fit: " << data.points.size() << " points from " << data.source << "\n";
   fit::SimpleFitSettings settings;
   settings.asymmetric_e = s.asymmetric_e;
@@ -128,12 +160,27 @@ void run_fit(const FitCliState& s) {
 void add_fit_command(CLI::App& app) {
   auto* fit = app.add_subcommand("fit", "Fit Magic Formula coefficients to measurements");
   static FitCliState state;
+  fit->footer(
+      "Axes: ISO-W (TYDEX W, as tread mf eval and MFeval): x forward, y left, z up; load Fz > 0; "
+      "alpha > 0 when the contact patch moves towards +y (a normal tyre gives Fy < 0, Mz > 0); SI "
+      "units. Measurements in other axes: --convention. Written .tir files and synthetic "
+      "measurements are ISO-W.");
+  fit->add_option("--convention", state.convention,
+                  "sign convention of a CSV --input: iso-w (default), sae (SAE J670, e.g. FSAE "
+                  "TTC data: Fz, alpha, Fy, My, Mz change sign), adapted-iso (alpha, Fy, Mz "
+                  "change sign); .tdx files are TYDEX W (ISO-W)")
+      ->check(CLI::IsMember({"iso-w", "sae", "adapted-iso"}))
+      ->capture_default_str();
   fit->add_option("--model", state.model,
                   "simple (Stage 1: basic formula per load), mf61 or pac2002 (Stage 2: staged "
-                  "pure and combined slip coefficient set; pac2002 also for MF 5.2 files)")
+                  "pure and combined slip coefficient set; pac2002 also for MF 5.2 files; mf61 "
+                  "also from a PAC2002 / MF 5.2 --start, written as an MF 6.1 file)")
       ->check(CLI::IsMember({"simple", "pac2002", "mf61"}))
       ->capture_default_str();
-  fit->add_option("--input", state.input, "measurements: .csv (tread mf eval columns) or .tdx")
+  fit->add_option("--input", state.input,
+                  "measurements: .csv (the input columns tread mf eval accepts, e.g. Fz_N|FZ, "
+                  "kappa|SL, alpha_rad|alpha_deg|SA, gamma_rad|IA, Vx_mps|V, and Fx_N|FX, "
+                  "Fy_N|FY, Mz_Nm|MZ) or .tdx")
       ->check(CLI::ExistingFile);
   fit->add_option("--output", state.output,
                   "result: per-load constants (.csv) for simple, a .tir for mf61/pac2002, the "

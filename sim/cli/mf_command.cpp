@@ -1,12 +1,18 @@
 // `tread mf eval`: evaluate a Magic Formula .tir (MF 5.2 / 6.1 / 6.2, PAC2002) on a CSV of inputs.
+// `tread mf plot`: its pure-slip curves at several loads and a Fx(κ, Fz) map, with warnings for
+// inverted curves. Both work in ISO-W axes (TYDEX W: x forward, y left, z up), SI units, as MFeval.
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "cli/commands.hpp"
+#include "io/replace_file.hpp"
+#include "mf/input_table.hpp"
 #include "mf/mf_csv.hpp"
+#include "mf/mf_curve_checks.hpp"
 #include "mf/mf_options.hpp"
 #include "mf/mf_parameters_from_tir.hpp"
 #include "mf/mf_plot.hpp"
@@ -16,6 +22,18 @@ namespace tread::cli {
 
 namespace {
 
+constexpr const char* kAxesNote =
+    "Axes: ISO-W (TYDEX W, as MFeval): x forward, y left, z up; load Fz > 0; alpha > 0 when the "
+    "contact patch moves towards +y (a normal tyre gives Fy < 0, Mz > 0); SI units.";
+
+constexpr const char* kInputHelp =
+    "CSV of inputs. Column names (any case, any order): Fz_N|Fz|FZ|FZW [N], Fz_kN; "
+    "kappa|SL|LongSlip|SlipRatio [1], kappa_pct|SL_pct [%]; alpha_rad|alpha|SA_rad [rad], "
+    "alpha_deg|SA|SA_deg [deg]; gamma_rad|gamma|IA_rad [rad], gamma_deg|IA|IA_deg|camber_deg "
+    "[deg]; Vx_mps|Vx|V_mps [m/s], Vx_kph|Vx_kmh|V|V_kph|V_kmh [km/h]; optional phit_1pm|phit "
+    "[1/m]; optional P_Pa [Pa], P_kPa|P [kPa], P_bar, P_psi (absent or 0: the file's INFLPRES). "
+    "Other columns are ignored";
+
 struct MfEvalArgs {
   std::string tir;
   int mode = 111;
@@ -23,50 +41,91 @@ struct MfEvalArgs {
   std::string side = "as-measured";
   std::string input;
   std::string output;
+  std::string sep = "auto";
+  std::string convention = "iso-w";
+  bool strict = false;
 };
+
+mf::MfOptions options_for(int mode, const char* command) {
+  const Result<mf::MfOptions> options = mf::options_from_use_mode(mode);
+  if (!options.ok()) {
+    throw std::runtime_error(std::string(command) + ": --mode " + std::to_string(mode) +
+                             ": expected MFeval's three digits: 1|2 (limits on|off), 1|2 "
+                             "(alpha* off|on), 1|2 (turn slip off|on)");
+  }
+  return options.value;
+}
+
+char separator(const std::string& sep) {
+  if (sep == "auto") return '\0';
+  if (sep == "," || sep == "comma") return ',';
+  if (sep == ";" || sep == "semicolon") return ';';
+  if (sep == "\\t" || sep == "\t" || sep == "tab") return '\t';
+  throw std::runtime_error("--sep " + sep + ": expected auto, ',', ';' or tab");
+}
 
 void run_mf_eval(const MfEvalArgs& args) {
   const mf::MfTirParameters loaded = mf::load_mf_parameters(args.tir);
   if (!loaded.warning.empty()) std::cerr << "tread mf eval: warning: " << loaded.warning << '\n';
-  const Result<mf::MfOptions> options = mf::options_from_use_mode(args.mode);
-  if (!options.ok()) {
-    throw std::runtime_error("--mode " + std::to_string(args.mode) +
-                             ": expected MFeval's three digits: 1|2 (limits on|off), 1|2 "
-                             "(alpha* off|on), 1|2 (turn slip off|on)");
-  }
-  mf::MfOptions o = options.value;
+  mf::MfOptions o = options_for(args.mode, "tread mf eval");
   if (args.side == "left") o.side = mf::MountedSide::left;
   if (args.side == "right") o.side = mf::MountedSide::right;
+  mf::MfCsvOptions csv;
+  csv.use_float = args.use_float;
+  csv.strict = args.strict;
+  csv.table.separator = separator(args.sep);
+  csv.table.convention = *mf::parse_sign_convention(args.convention);
   std::ifstream in(args.input);
   if (!in) throw std::runtime_error(args.input + ": cannot open");
-  std::ofstream out(args.output);
-  if (!out) throw std::runtime_error(args.output + ": cannot write");
-  const std::size_t rows = mf::evaluate_csv(loaded.params, o, args.use_float, in, args.input, out);
-  out.close();
-  if (!out) throw std::runtime_error(args.output + ": write failed");
-  std::cerr << "tread mf eval: " << rows << " rows → " << args.output << '\n';
+  host::ReplaceFile out(args.output);
+  const mf::MfCsvReport report =
+      mf::evaluate_csv(loaded.params, o, csv, in, args.input, out.stream());
+  out.commit();
+  for (const std::string& m : report.mapping) std::cerr << "tread mf eval: column " << m << '\n';
+  if (!report.ignored.empty()) {
+    std::cerr << "tread mf eval: ignored columns:";
+    for (const std::string& c : report.ignored) std::cerr << " '" << c << "'";
+    std::cerr << '\n';
+  }
+  for (const mf::MfRangeCount& c : report.out_of_range) {
+    std::cerr << "tread mf eval: warning: " << c.rows
+              << " rows outside the model's range: " << c.limit << " (first: " << args.input << ':'
+              << c.first_line << ")" << (o.use_limits ? "; evaluated clamped" : "") << '\n';
+  }
+  std::cerr << "tread mf eval: " << report.rows << " rows → " << args.output << " (ISO-W, SI)\n";
 }
 
 struct MfPlotArgs {
   std::string tir;
   int mode = 111;
   std::string output;
+  std::vector<double> loads;
+  double vx_mps = 16.7;
 };
 
 void run_mf_plot(const MfPlotArgs& args) {
   const mf::MfTirParameters loaded = mf::load_mf_parameters(args.tir);
   if (!loaded.warning.empty()) std::cerr << "tread mf plot: warning: " << loaded.warning << '\n';
-  const Result<mf::MfOptions> options = mf::options_from_use_mode(args.mode);
-  if (!options.ok()) throw std::runtime_error("--mode " + std::to_string(args.mode) + ": invalid");
+  const mf::MfOptions options = options_for(args.mode, "tread mf plot");
+  for (double fz : args.loads) {
+    if (!(fz > 0.0)) {
+      throw std::runtime_error("--loads: " + std::to_string(fz) + " is not a positive load in N");
+    }
+  }
   std::filesystem::path png = args.output;
   if (png.extension() != ".png") throw std::runtime_error(args.output + ": expected a .png name");
   std::filesystem::path svg = png;
   svg.replace_extension(".svg");
+  for (const std::string& w : mf::curve_warnings(loaded.params, options, args.loads, args.vx_mps)) {
+    std::cerr << "tread mf plot: warning: " << args.tir << ": " << w << '\n';
+  }
   mf::MfPlotOptions plot;
+  plot.loads_n = args.loads;
+  plot.vx_mps = args.vx_mps;
   plot.title = std::filesystem::path(args.tir).filename().string() + " (useMode " +
-               std::to_string(args.mode) + ")";
+               std::to_string(args.mode) + ", ISO-W)";
   for (const auto& out : {png, svg}) {
-    host::run_gnuplot(mf::mf_plot_script(loaded.params, options.value, plot, out), out.string());
+    host::run_gnuplot(mf::mf_plot_script(loaded.params, options, plot, out), out.string());
     std::cerr << "tread mf plot: wrote " << out.string() << '\n';
   }
 }
@@ -74,25 +133,50 @@ void run_mf_plot(const MfPlotArgs& args) {
 void add_mf_command(CLI::App& app) {
   auto* mf_cmd = app.add_subcommand("mf", "Magic Formula tyre model (MF 5.2 / 6.1 / 6.2, PAC2002)");
   mf_cmd->require_subcommand(1);
+  mf_cmd->footer(kAxesNote);
   static MfEvalArgs args;
   auto* eval = mf_cmd->add_subcommand("eval", "Evaluate a .tir on a CSV of inputs");
+  eval->footer(std::string(kAxesNote) +
+               " Outputs are always ISO-W; --convention says in which axes the input file is "
+               "written. Rows outside the file's FZMIN/FZMAX, KPUMIN/KPUMAX, ALPMIN/ALPMAX, "
+               "CAMMIN/CAMMAX, PRESMIN/PRESMAX are counted on stderr (--strict: an error). The "
+               "output is written whole or not at all.");
   eval->add_option("--tir", args.tir, "Tyre property file (.tir)")->required();
   eval->add_option("--mode", args.mode, "MFeval useMode: 111 (default) … 222");
   eval->add_flag("--float", args.use_float, "Evaluate in float (as on the ECU) instead of double");
   eval->add_option("--side", args.side,
                    "Mounted side: as-measured (default, like MFeval), left, right")
       ->check(CLI::IsMember({"as-measured", "left", "right"}));
-  eval->add_option("--input", args.input,
-                   "CSV with Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps[,phit_1pm][,P_Pa]")
-      ->required();
-  eval->add_option("--output", args.output, "CSV to write")->required();
+  eval->add_option("--input", args.input, kInputHelp)->required();
+  eval->add_option("--output", args.output, "CSV to write (ISO-W, SI)")->required();
+  eval->add_option("--sep", args.sep,
+                   "Input separator: auto (default: ',' unless the header has only ';' or tabs), "
+                   "',', ';' or tab; with ';' or tab a decimal comma is accepted")
+      ->capture_default_str();
+  eval->add_option("--convention", args.convention,
+                   "Sign convention of the input file: iso-w (default), sae (SAE J670, e.g. FSAE "
+                   "TTC data: Fz and alpha change sign), adapted-iso (positive alpha gives "
+                   "positive Fy: alpha changes sign)")
+      ->check(CLI::IsMember({"iso-w", "sae", "adapted-iso"}))
+      ->capture_default_str();
+  eval->add_flag("--strict", args.strict,
+                 "A row outside the model's range is an error naming the row (default: counted "
+                 "on stderr)");
   eval->callback([] { run_mf_eval(args); });
 
   static MfPlotArgs plot_args;
   auto* plot = mf_cmd->add_subcommand(
       "plot", "Plot Fx(κ), Fy(α), Mz(α) at several loads and a Fx(κ, Fz) map (PNG + SVG)");
+  plot->footer(std::string(kAxesNote) +
+               " Warnings on stderr for inverted curves: Fx peak or slip stiffness of the wrong "
+               "sign below FZMAX, a cornering stiffness of the wrong sign, friction rising with "
+               "load or above 3.");
   plot->add_option("--tir", plot_args.tir, "Tyre property file (.tir)")->required();
   plot->add_option("--mode", plot_args.mode, "MFeval useMode: 111 (default) … 222");
+  plot->add_option("--loads", plot_args.loads,
+                   "Wheel loads in N, e.g. 2000,4000,6000 (default: 0.5, 1, 1.5, 2 × FNOMIN)")
+      ->delimiter(',');
+  plot->add_option("--vx", plot_args.vx_mps, "Forward speed in m/s")->capture_default_str();
   plot->add_option("--output", plot_args.output, "PNG to write; an SVG is written beside it")
       ->required();
   plot->callback([] { run_mf_plot(plot_args); });

@@ -1,12 +1,17 @@
 // `tread pac plot`: draw PAC89/PAC94 curves (Fx(κ), Fy(α), Mz(α) at several loads, combined-slip
 // envelope) from a Chrono JSON coefficient file or an Adams .tir file, to PNG or SVG via gnuplot.
+// `tread pac eval`: evaluate them on a CSV of inputs. Both in ISO-W axes by default, as `tread mf`.
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "io/replace_file.hpp"
+#include "mf/input_table.hpp"
 #include "plot/gnuplot.hpp"
 #include "tir/pac_coefficients.hpp"
 #include "tir/pac_csv.hpp"
@@ -18,7 +23,48 @@ namespace tread::cli {
 
 namespace {
 
+constexpr const char* kPacAxesNote =
+    "Axes: ISO-W (TYDEX W, as tread mf and MFeval) unless --axes model: x forward, y left, z up; "
+    "load Fz > 0; alpha > 0 when the contact patch moves towards +y (a normal tyre gives Fy < 0, "
+    "Mz > 0); SI units. The PAC89/PAC94 formulae work in their own \"modified SAE\" axes (Fy, My, "
+    "Mz of the other sign); --axes model shows those.";
+
 void add_pac_eval(CLI::App* pac);
+
+// The coefficients PAC89 needs (PAC94 adds A14…A17, B11…B13, C18…C20).
+bool pac89_key(const std::string& missing_entry) {
+  const std::string key = missing_entry.substr(missing_entry.find('.') + 1);
+  if (key.size() < 2) return false;
+  const char set = static_cast<char>(std::toupper(static_cast<unsigned char>(key[0])));
+  const std::string digits = key.substr(1);
+  if (digits.find_first_not_of("0123456789") != std::string::npos) return false;
+  const int n = std::stoi(digits);
+  return (set == 'A' && n <= 13) || (set == 'B' && n <= 10) || (set == 'C' && n <= 17);
+}
+
+// Loads the coefficients; a source without any PAC89 coefficient (e.g. an MF file) is an error,
+// not a tyre of zeros.
+tir::PacCoefficients load_pac(const std::string& json, const std::string& tir_path,
+                              const char* command) {
+  const std::string source = json.empty() ? tir_path : json;
+  // pac_from_tir refuses a Magic Formula file and a file without any PAC coefficient.
+  auto coeff = json.empty() ? tir::pac_from_tir(tir::read_tyre_property_file(tir_path))
+                            : tir::pac_from_chrono_json(json);
+  std::size_t missing89 = 0;
+  for (const std::string& m : coeff.missing) missing89 += pac89_key(m) ? 1U : 0U;
+  constexpr std::size_t kPac89Count = 14 + 11 + 18;
+  if (missing89 == kPac89Count) {
+    throw std::runtime_error(source +
+                             ": no PAC89/PAC94 coefficients (A0…A13, B0…B10, C0…C17); a Magic "
+                             "Formula file goes to tread mf");
+  }
+  if (!coeff.missing.empty()) {
+    std::cerr << command << ": warning: " << source << ": " << coeff.missing.size()
+              << " coefficients missing, taken as 0 (" << missing89
+              << " of them PAC89's; first: " << coeff.missing.front() << ")\n";
+  }
+  return coeff;
+}
 
 bool explicit_model(const CLI::App* app) {
   return app->count("--model") > 0;
@@ -40,6 +86,7 @@ tir::PacModel model_for(const tir::PacCoefficients& coeff, int model, bool given
 void add_pac_command(CLI::App& app) {
   auto* pac = app.add_subcommand("pac", "PAC89 / PAC94 tyre models");
   pac->require_subcommand(1);
+  pac->footer(kPacAxesNote);
   add_pac_eval(pac);
   auto* plot = pac->add_subcommand("plot", "Plot PAC89/PAC94 curves to PNG or SVG (gnuplot)");
   struct Options {
@@ -48,8 +95,10 @@ void add_pac_command(CLI::App& app) {
     std::string output = "pac_curves.png";
     int model = 89;
     std::vector<double> loads = {2000.0, 4000.0, 6000.0, 10000.0};
+    std::string axes = "iso-w";
   };
   static Options opt;
+  plot->footer(kPacAxesNote);
   auto* src = plot->add_option_group("source")->require_option(1);
   src->add_option("--json", opt.json, "Chrono Pac89Tire JSON coefficient file")
       ->check(CLI::ExistingFile);
@@ -59,17 +108,16 @@ void add_pac_command(CLI::App& app) {
       ->capture_default_str();
   plot->add_option("--loads", opt.loads, "wheel loads in N")->capture_default_str();
   plot->add_option("--output,-o", opt.output, ".png or .svg")->capture_default_str();
+  plot->add_option("--axes", opt.axes, "iso-w (default, as tread mf plot) or model")
+      ->check(CLI::IsMember({"iso-w", "model"}))
+      ->capture_default_str();
   plot->callback([plot] {
-    const auto coeff = opt.json.empty() ? tir::pac_from_tir(tir::read_tyre_property_file(opt.tir))
-                                        : tir::pac_from_chrono_json(opt.json);
+    const auto coeff = load_pac(opt.json, opt.tir, "tread pac plot");
     const tir::PacModel model = model_for(coeff, opt.model, explicit_model(plot), opt.json.empty());
-    if (!coeff.missing.empty()) {
-      std::cerr << "tread pac plot: " << coeff.missing.size()
-                << " coefficients missing, taken as 0 (first: " << coeff.missing.front() << ")\n";
-    }
     tir::PacPlotOptions po;
     po.model = model;
     po.loads_n = opt.loads;
+    po.iso_w = opt.axes == "iso-w";
     po.title = (model == tir::PacModel::kPac94 ? "PAC94 " : "PAC89 ") +
                std::filesystem::path(opt.json.empty() ? opt.tir : opt.json).filename().string();
     host::run_gnuplot(tir::pac_plot_script(coeff.params, po, opt.output), opt.output);
@@ -88,8 +136,12 @@ void add_pac_eval(CLI::App* pac) {
     bool pure = false;
     bool use_float = false;
     bool iso_w = false;
+    std::string axes = "iso-w";
+    std::string convention = "iso-w";
+    std::string sep = "auto";
   };
   static Options opt;
+  eval->footer(kPacAxesNote);
   auto* src = eval->add_option_group("source")->require_option(1);
   src->add_option("--json", opt.json, "Chrono Pac89Tire JSON coefficient file")
       ->check(CLI::ExistingFile);
@@ -99,24 +151,44 @@ void add_pac_eval(CLI::App* pac) {
       ->capture_default_str();
   eval->add_flag("--pure", opt.pure, "pure slip (default: combined)");
   eval->add_flag("--float", opt.use_float, "evaluate in float");
-  eval->add_flag("--iso-w", opt.iso_w, "outputs in ISO-W axes (Fy, My, Mz sign-flipped)");
-  eval->add_option("--input", opt.input, "CSV with Fz_N,kappa,alpha_rad,gamma_rad")
+  eval->add_flag("--iso-w", opt.iso_w,
+                 "outputs in ISO-W axes (the default now; kept for older scripts)");
+  eval->add_option("--axes", opt.axes,
+                   "axes of the outputs: iso-w (default, as tread mf eval) or model (the "
+                   "PAC89/PAC94 formulae's own: Fy, My, Mz of the other sign)")
+      ->check(CLI::IsMember({"iso-w", "model"}))
+      ->capture_default_str();
+  eval->add_option("--convention", opt.convention,
+                   "sign convention of the input file: iso-w (default), sae (SAE J670, e.g. FSAE "
+                   "TTC data: Fz and alpha change sign), adapted-iso (alpha changes sign)")
+      ->check(CLI::IsMember({"iso-w", "sae", "adapted-iso"}))
+      ->capture_default_str();
+  eval->add_option("--sep", opt.sep, "input separator: auto (default), ',', ';' or tab")
+      ->check(CLI::IsMember({"auto", ",", ";", "tab"}))
+      ->capture_default_str();
+  eval->add_option("--input", opt.input,
+                   "CSV with the inputs Fz, kappa, alpha, gamma under the names tread mf eval "
+                   "accepts (Fz_N|FZ, kappa|SL, alpha_rad|alpha_deg|SA, gamma_rad|gamma_deg|IA, "
+                   "...; see tread mf eval --help); other columns are ignored")
       ->required()
       ->check(CLI::ExistingFile);
   eval->add_option("--output", opt.output, "CSV to write")->required();
   eval->callback([eval] {
-    const auto coeff = opt.json.empty() ? tir::pac_from_tir(tir::read_tyre_property_file(opt.tir))
-                                        : tir::pac_from_chrono_json(opt.json);
+    const auto coeff = load_pac(opt.json, opt.tir, "tread pac eval");
     tir::PacCsvOptions o;
     o.model = model_for(coeff, opt.model, explicit_model(eval), opt.json.empty());
     o.slip = opt.pure ? pac::Slip::kPure : pac::Slip::kCombined;
     o.use_float = opt.use_float;
-    o.iso_w = opt.iso_w;
+    o.iso_w = opt.iso_w || opt.axes == "iso-w";
+    o.table.convention = *mf::parse_sign_convention(opt.convention);
+    o.table.separator = opt.sep == "auto" ? '\0' : opt.sep == "tab" ? '\t' : opt.sep.front();
     std::ifstream in(opt.input);
-    std::ofstream out(opt.output);
-    if (!out) throw std::runtime_error(opt.output + ": cannot write");
-    const auto rows = tir::evaluate_pac_csv(coeff.params, o, in, opt.input, out);
-    std::cout << "evaluated " << rows << " rows -> " << opt.output << '\n';
+    if (!in) throw std::runtime_error(opt.input + ": cannot open");
+    host::ReplaceFile out(opt.output);
+    const auto rows = tir::evaluate_pac_csv(coeff.params, o, in, opt.input, out.stream());
+    out.commit();
+    std::cout << "evaluated " << rows << " rows -> " << opt.output
+              << (o.iso_w ? " (ISO-W axes)" : " (model axes)") << '\n';
   });
 }
 

@@ -11,6 +11,7 @@
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace tread::fit {
 namespace {
@@ -105,14 +106,54 @@ void check_has_output(const std::map<Field, std::size_t>& columns, const std::st
 
 }  // namespace
 
-MeasurementSet read_measurement_csv(std::istream& in, const std::string& name) {
-  static const std::map<std::string, Field> known = {
-      {"Fz_N", Field::fz},         {"kappa", Field::kappa}, {"alpha_rad", Field::alpha},
-      {"gamma_rad", Field::gamma}, {"Vx_mps", Field::vx},   {"Fx_N", Field::fx},
-      {"Fy_N", Field::fy},         {"Mz_Nm", Field::mz}};
+// A CSV column: the inputs by mf::recognise_input_column (the names `tread mf eval` accepts), the
+// measured outputs by the names below; the factor takes the cell to SI and ISO-W.
+struct CsvColumn {
+  Field field;
+  double factor;
+};
+
+std::optional<CsvColumn> csv_column(const std::string& header, mf::SignConvention convention) {
+  if (const auto input = mf::recognise_input_column(header)) {
+    const double sign = mf::iso_w_sign(convention, input->quantity);
+    switch (input->quantity) {
+      case mf::InputQuantity::fz:
+        return CsvColumn{Field::fz, input->to_si * sign};
+      case mf::InputQuantity::kappa:
+        return CsvColumn{Field::kappa, input->to_si * sign};
+      case mf::InputQuantity::alpha:
+        return CsvColumn{Field::alpha, input->to_si * sign};
+      case mf::InputQuantity::gamma:
+        return CsvColumn{Field::gamma, input->to_si * sign};
+      case mf::InputQuantity::vx:
+        return CsvColumn{Field::vx, input->to_si * sign};
+      case mf::InputQuantity::phit:
+      case mf::InputQuantity::pressure:
+        return std::nullopt;  // not held by MeasurementPoint
+    }
+  }
+  // Measured forces and moments: SI names, TTC names (FX, FY, MZ in N and N m), TYDEX channels.
+  static const std::map<std::string, std::pair<Field, mf::MeasuredQuantity>> outputs = {
+      {"FX_N", {Field::fx, mf::MeasuredQuantity::fx}},
+      {"FX", {Field::fx, mf::MeasuredQuantity::fx}},
+      {"FXW", {Field::fx, mf::MeasuredQuantity::fx}},
+      {"FY_N", {Field::fy, mf::MeasuredQuantity::fy}},
+      {"FY", {Field::fy, mf::MeasuredQuantity::fy}},
+      {"FYW", {Field::fy, mf::MeasuredQuantity::fy}},
+      {"MZ_NM", {Field::mz, mf::MeasuredQuantity::mz}},
+      {"MZ", {Field::mz, mf::MeasuredQuantity::mz}},
+      {"MZW", {Field::mz, mf::MeasuredQuantity::mz}}};
+  const auto it = outputs.find(upper(trim(header)));
+  if (it == outputs.end()) return std::nullopt;
+  return CsvColumn{it->second.first, mf::output_sign(convention, it->second.second)};
+}
+
+MeasurementSet read_measurement_csv(std::istream& in, const std::string& name,
+                                    mf::SignConvention convention) {
   MeasurementSet set;
   set.source = name;
   std::map<Field, std::size_t> columns;
+  std::map<Field, double> factors;
   std::size_t header_cells = 0;
   bool have_header = false;
   std::string raw;
@@ -127,11 +168,12 @@ MeasurementSet read_measurement_csv(std::istream& in, const std::string& name) {
       have_header = true;
       header_cells = cells.size();
       for (std::size_t i = 0; i < cells.size(); ++i) {
-        const auto it = known.find(trim(cells[i]));
-        if (it == known.end()) continue;
-        if (!columns.emplace(it->second, i).second) {
+        const std::optional<CsvColumn> c = csv_column(cells[i], convention);
+        if (!c) continue;
+        if (!columns.emplace(c->field, i).second) {
           fail(name, line, "repeated column '" + trim(cells[i]) + "'");
         }
+        factors[c->field] = c->factor;
       }
       if (columns.count(Field::fz) == 0) fail(name, line, "missing column 'Fz_N'");
       if (columns.count(Field::kappa) == 0) fail(name, line, "missing column 'kappa'");
@@ -153,7 +195,7 @@ MeasurementSet read_measurement_csv(std::istream& in, const std::string& name) {
       if (!v)
         fail(name, line,
              "cell " + std::to_string(index + 1) + " '" + trim(cell) + "' is not a finite number");
-      set_field(p, field, *v);
+      set_field(p, field, *v * factors[field]);
     }
     set.points.push_back(p);
   }
@@ -266,12 +308,12 @@ MeasurementSet read_tydex(std::istream& in, const std::string& name) {
   return set;
 }
 
-MeasurementSet load_measurements(const std::filesystem::path& path) {
+MeasurementSet load_measurements(const std::filesystem::path& path, mf::SignConvention convention) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error(path.string() + ": cannot open");
   std::string ext = upper(path.extension().string());
   if (ext == ".TDX") return read_tydex(in, path.string());
-  return read_measurement_csv(in, path.string());
+  return read_measurement_csv(in, path.string(), convention);
 }
 
 }  // namespace tread::fit

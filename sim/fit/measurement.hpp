@@ -2,10 +2,13 @@
 // Tyre measurements for the fitter (host side: allocates, throws).
 //
 // Two formats:
-//  - CSV with the column names of `tread mf eval`: inputs Fz_N, kappa, alpha_rad, gamma_rad
-//    (optional, default 0), Vx_mps (optional, default 0), and the measured outputs Fx_N, Fy_N,
-//    Mz_Nm (any subset, at least one). Unknown columns are ignored (so an `mf eval` output file,
-//    whose inputs are named in_*, can be read after renaming). Blank lines and lines starting with
+//  - CSV with the input column names `tread mf eval` accepts (mf::recognise_input_column: Fz_N,
+//    kappa, alpha_rad and their other names and units, e.g. FZ, SL, SA [deg], IA [deg], V [km/h];
+//    gamma and Vx optional, default 0), and the measured outputs Fx_N|FX|FXW, Fy_N|FY|FYW,
+//    Mz_Nm|MZ|MZW (N, N m; any subset, at least one), in the file's sign convention (converted to
+//    ISO-W as mf::InputTable does: the outputs by mf::output_sign). Unknown columns are ignored (so
+//    an `mf eval` output file, whose inputs are named in_*, can be read after renaming). Blank
+//    lines and lines starting with
 //    '#' are skipped; an empty cell means "not measured" for an output column.
 //  - TYDEX (.tdx): the **MEASURCHANNELS section names the channels (name, description, unit,
 //    conversion factor, measurement offset, physical offset) and **MEASURDATA holds one row per
@@ -22,6 +25,8 @@
 #include <limits>
 #include <string>
 #include <vector>
+
+#include "mf/input_table.hpp"
 
 namespace tread::fit {
 
@@ -43,10 +48,13 @@ struct MeasurementSet {
   std::vector<MeasurementPoint> points;
 };
 
-MeasurementSet read_measurement_csv(std::istream& in, const std::string& name);
+MeasurementSet read_measurement_csv(std::istream& in, const std::string& name,
+                                    mf::SignConvention convention = mf::SignConvention::iso_w);
 MeasurementSet read_tydex(std::istream& in, const std::string& name);
 
-/// Reads `path` as TYDEX if it ends in .tdx (any case), otherwise as CSV.
-MeasurementSet load_measurements(const std::filesystem::path& path);
+/// Reads `path` as TYDEX if it ends in .tdx (any case; TYDEX W axes), otherwise as CSV in
+/// `convention`.
+MeasurementSet load_measurements(const std::filesystem::path& path,
+                                 mf::SignConvention convention = mf::SignConvention::iso_w);
 
 }  // namespace tread::fit

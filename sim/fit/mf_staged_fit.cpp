@@ -115,6 +115,16 @@ void set_fitted_coefficients(tir::TirFile& file, const StagedFit& fit) {
   }
 }
 
+std::vector<ChannelLoadStats> final_stats(const StagedFit& fit, const MeasurementSet& data) {
+  std::vector<StageSample> all;
+  for (FitChannel c : {FitChannel::fx, FitChannel::fy, FitChannel::mz}) {
+    const auto s =
+        select_samples(data, fit.levels, c, [](const MeasurementPoint&) { return true; });
+    all.insert(all.end(), s.begin(), s.end());
+  }
+  return channel_load_stats(fit.params, all, fit.levels);
+}
+
 void write_staged_report(const StagedFit& fit, const MeasurementSet& data, std::ostream& out) {
   out << "# tread fit --model " << model_name(fit.model) << " (staged)\n\nInput: `" << data.source
       << "`, " << data.points.size() << " points; load levels (N):";
@@ -169,13 +179,7 @@ void write_staged_report(const StagedFit& fit, const MeasurementSet& data, std::
   }
   out << "\n## Final coefficient set on every point\n\n| channel | Fz (N) | points | RMS | R² |\n"
       << "|---|---|---|---|---|\n";
-  std::vector<StageSample> all;
-  for (FitChannel c : {FitChannel::fx, FitChannel::fy, FitChannel::mz}) {
-    const auto s =
-        select_samples(data, fit.levels, c, [](const MeasurementPoint&) { return true; });
-    all.insert(all.end(), s.begin(), s.end());
-  }
-  for (const auto& st : channel_load_stats(fit.params, all, fit.levels)) {
+  for (const auto& st : final_stats(fit, data)) {
     out << "| " << fit_channel_name(st.channel) << " | " << number(st.fz_n, 6) << " | " << st.points
         << " | " << number(st.rms, 4) << ' ' << fit_channel_unit(st.channel) << " | "
         << number(st.r2, 6) << " |\n";

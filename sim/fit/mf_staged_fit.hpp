@@ -47,6 +47,9 @@ StagedFit fit_mf_staged(const MeasurementSet& data, const mf::MfParameters<doubl
 /// Writes every fitted coefficient into its section of `file` (the starting .tir).
 void set_fitted_coefficients(tir::TirFile& file, const StagedFit& fit);
 
+/// RMS / R² of the fitted set per channel and load level, on every point of `data`.
+std::vector<ChannelLoadStats> final_stats(const StagedFit& fit, const MeasurementSet& data);
+
 /// Markdown report: per stage the coefficients ± standard deviations, iterations, time, and RMS /
 /// R² per channel and load; the fitted set's slip stiffnesses and peak friction per load; then
 /// RMS / R² of the final set on every point.

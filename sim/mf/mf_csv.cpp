@@ -5,21 +5,21 @@
 #include <cstdio>
 #include <cstdlib>
 #include <istream>
+#include <optional>
 #include <ostream>
 #include <stdexcept>
 #include <string_view>
 #include <vector>
 
 #include "mf/mf_evaluate.hpp"
+#include "tir/tir_file.hpp"
 
 namespace tread::mf {
 
 namespace {
 
 enum Column { kFz, kKappa, kAlpha, kGamma, kVx, kPhit, kP, kColumnCount };
-
-constexpr std::array<std::string_view, kColumnCount> kInputNames = {
-    "Fz_N", "kappa", "alpha_rad", "gamma_rad", "Vx_mps", "phit_1pm", "P_Pa"};
+static_assert(kColumnCount == kInputQuantityCount);
 
 template <typename T>
 struct OutColumn {
@@ -61,27 +61,6 @@ constexpr std::array<OutColumn<T>, 29> out_columns() {
            {"Kxk_N", &O::kxk_n}}};
 }
 
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> cells;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t comma = line.find(',', start);
-    std::string cell =
-        line.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    // trim spaces
-    const std::size_t a = cell.find_first_not_of(" \t");
-    const std::size_t b = cell.find_last_not_of(" \t");
-    cells.push_back(a == std::string::npos ? std::string() : cell.substr(a, b - a + 1));
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  return cells;
-}
-
-[[noreturn]] void fail(const std::string& file, int line, const std::string& message) {
-  throw std::runtime_error(file + ":" + std::to_string(line) + ": " + message);
-}
-
 std::string format(double v) {
   char buffer[40];
   std::snprintf(buffer, sizeof buffer, "%.17g", v);
@@ -106,81 +85,105 @@ void write_row(std::ostream& out, const std::array<double, kColumnCount>& values
   out << to_string(result.status) << '\n';
 }
 
+// One limit of the model's range, checked on the SI ISO-W inputs.
+struct Limit {
+  InputQuantity quantity;
+  bool above;  // true: value > bound is outside
+  double bound;
+  const char* key;
+  const char* unit;
+};
+
+std::string short_number(double v) {
+  char buffer[40];
+  std::snprintf(buffer, sizeof buffer, "%.6g", v);
+  return buffer;
+}
+
+std::string describe(const Limit& l) {
+  return std::string(si_name(l.quantity)) + (l.above ? " > " : " < ") + l.key + " = " +
+         short_number(l.bound) + (*l.unit != '\0' ? std::string(" ") + l.unit : std::string());
+}
+
+// Why a value may lie outside: the likely mistake in the input file.
+std::string hint(const InputTable& table, const Limit& l, double value) {
+  const std::string column = table.column_name(l.quantity);
+  const std::string_view unit = table.column_unit(l.quantity);
+  if ((l.quantity == InputQuantity::alpha || l.quantity == InputQuantity::gamma) && unit == "rad") {
+    const std::string deg = l.quantity == InputQuantity::alpha ? "alpha_deg" : "gamma_deg";
+    return "; column '" + column + "' is read in radians: if it holds degrees, name it " + deg;
+  }
+  if (l.quantity == InputQuantity::kappa && unit == "1" && std::fabs(value) > 1.0) {
+    return "; column '" + column + "' is read as a ratio: if it holds percent, name it kappa_pct";
+  }
+  if (l.quantity == InputQuantity::fz && value < 0.0) {
+    return "; a negative load: is the file in SAE axes (z down)? Use --convention sae";
+  }
+  if (l.quantity == InputQuantity::pressure && unit == "Pa") {
+    return "; column '" + column + "' is read in Pa: name it P_kPa, P_bar or P_psi otherwise";
+  }
+  return {};
+}
+
 }  // namespace
 
-std::size_t evaluate_csv(const MfParameters<double>& params, const MfOptions& options,
-                         bool use_float, std::istream& in, const std::string& in_name,
+MfCsvReport evaluate_csv(const MfParameters<double>& params, const MfOptions& options,
+                         const MfCsvOptions& csv, std::istream& in, const std::string& in_name,
                          std::ostream& out) {
   const MfParameters<float> params_f = convert_parameters<float>(params);
-  std::array<int, kColumnCount> index{};
-  index.fill(-1);
-  std::size_t header_cells = 0;
-  bool have_header = false;
-  std::size_t rows = 0;
-  std::string line;
-  int line_no = 0;
-  while (std::getline(in, line)) {
-    ++line_no;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.find_first_not_of(" \t") == std::string::npos || line[0] == '#') continue;
-    const std::vector<std::string> cells = split(line);
-    if (!have_header) {
-      for (std::size_t i = 0; i < cells.size(); ++i) {
-        int found = -1;
-        for (int c = 0; c < kColumnCount; ++c) {
-          if (cells[i] == kInputNames[static_cast<std::size_t>(c)]) found = c;
-        }
-        if (found < 0) {
-          fail(in_name, line_no,
-               "unknown column '" + cells[i] +
-                   "' (expected Fz_N, kappa, alpha_rad, gamma_rad, Vx_mps, phit_1pm, P_Pa)");
-        }
-        if (index[static_cast<std::size_t>(found)] >= 0) {
-          fail(in_name, line_no, "column '" + cells[i] + "' appears twice");
-        }
-        index[static_cast<std::size_t>(found)] = static_cast<int>(i);
+  InputTable table(in, in_name, csv.table);
+  MfCsvReport report;
+  report.mapping = table.mapping();
+  report.ignored = table.ignored_columns();
+
+  using Q = InputQuantity;
+  const Limit limits[] = {
+      {Q::fz, false, params.fzmin_n, "FZMIN", "N"},
+      {Q::fz, true, params.fzmax_n, "FZMAX", "N"},
+      {Q::kappa, false, params.kpumin, "KPUMIN", ""},
+      {Q::kappa, true, params.kpumax, "KPUMAX", ""},
+      {Q::alpha, false, params.alpmin_rad, "ALPMIN", "rad"},
+      {Q::alpha, true, params.alpmax_rad, "ALPMAX", "rad"},
+      {Q::gamma, false, params.cammin_rad, "CAMMIN", "rad"},
+      {Q::gamma, true, params.cammax_rad, "CAMMAX", "rad"},
+      {Q::pressure, false, params.presmin_pa, "PRESMIN", "Pa"},
+      {Q::pressure, true, params.presmax_pa, "PRESMAX", "Pa"},
+  };
+  std::vector<MfRangeCount> counts;
+  for (const Limit& l : limits) counts.push_back({describe(l), 0, 0});
+
+  out << "# tread mf eval: ISO-W (TYDEX W) axes, SI units (inputs read in "
+      << to_string(csv.table.convention) << " axes and converted)\n";
+  out << "in_Fz_N,in_kappa,in_alpha_rad,in_gamma_rad,in_Vx_mps,in_phit_1pm,in_P_Pa";
+  for (const auto& c : out_columns<double>()) out << ',' << c.name;
+  out << ",status\n";
+  while (const std::optional<InputRow> row = table.next()) {
+    for (std::size_t i = 0; i < std::size(limits); ++i) {
+      const Limit& l = limits[i];
+      const double v = (*row)[l.quantity];
+      if (l.quantity == Q::pressure && (!(std::fabs(v) > 0.0) || !table.has(Q::pressure))) continue;
+      if (!(l.above ? v > l.bound : v < l.bound)) continue;
+      if (csv.strict) {
+        throw tir::TirError(in_name, row->line,
+                            std::string(si_name(l.quantity)) + " = " + short_number(v) +
+                                " outside the model's range (" + describe(l) + ", --strict)" +
+                                hint(table, l, v));
       }
-      for (int c = 0; c <= kVx; ++c) {
-        if (index[static_cast<std::size_t>(c)] < 0) {
-          fail(in_name, line_no,
-               "missing column '" + std::string(kInputNames[static_cast<std::size_t>(c)]) + "'");
-        }
-      }
-      header_cells = cells.size();
-      have_header = true;
-      out << "in_Fz_N,in_kappa,in_alpha_rad,in_gamma_rad,in_Vx_mps,in_phit_1pm,in_P_Pa";
-      for (const auto& c : out_columns<double>()) out << ',' << c.name;
-      out << ",status\n";
-      continue;
-    }
-    if (cells.size() != header_cells) {
-      fail(in_name, line_no,
-           "expected " + std::to_string(header_cells) + " cells, found " +
-               std::to_string(cells.size()));
+      if (counts[i].rows++ == 0) counts[i].first_line = row->line;
     }
     std::array<double, kColumnCount> values{};
-    for (int c = 0; c < kColumnCount; ++c) {
-      const int i = index[static_cast<std::size_t>(c)];
-      if (i < 0) continue;  // optional column absent: 0
-      const std::string& text = cells[static_cast<std::size_t>(i)];
-      char* end = nullptr;
-      const double v = std::strtod(text.c_str(), &end);
-      if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(v)) {
-        fail(in_name, line_no,
-             std::string(kInputNames[static_cast<std::size_t>(c)]) + ": '" + text +
-                 "' is not a finite number");
-      }
-      values[static_cast<std::size_t>(c)] = v;
-    }
-    if (use_float) {
+    for (std::size_t q = 0; q < kColumnCount; ++q) values[q] = row->value[q];
+    if (csv.use_float) {
       write_row(out, values, params_f, options);
     } else {
       write_row(out, values, params, options);
     }
-    ++rows;
+    ++report.rows;
   }
-  if (!have_header) fail(in_name, line_no, "no header row");
-  return rows;
+  for (const MfRangeCount& c : counts) {
+    if (c.rows > 0) report.out_of_range.push_back(c);
+  }
+  return report;
 }
 
 }  // namespace tread::mf

@@ -40,7 +40,11 @@ std::string mf_plot_script(const MfParameters<double>& p, const MfOptions& optio
   s.precision(9);
   const int n = plot.points < 3 ? 3 : plot.points;
   std::vector<double> loads;
-  for (double f : plot.load_factors) loads.push_back(f * p.fnomin_n);
+  if (plot.loads_n.empty()) {
+    for (double f : plot.load_factors) loads.push_back(f * p.fnomin_n);
+  } else {
+    loads = plot.loads_n;
+  }
 
   // Fx(κ), Fy(α), Mz(α): one datablock per load, columns: slip, value.
   for (std::size_t l = 0; l < loads.size(); ++l) {
@@ -58,7 +62,8 @@ std::string mf_plot_script(const MfParameters<double>& p, const MfOptions& optio
     s << "EOD\n";
   }
   // Fx(κ, Fz) map.
-  const double fz_max = 2.0 * p.fnomin_n;
+  double fz_max = 2.0 * p.fnomin_n;
+  for (double fz : loads) fz_max = fz > fz_max ? fz : fz_max;
   s << "$map << EOD\n";
   const int nk = 81;
   const int nf = 41;

@@ -16,6 +16,7 @@ namespace tread::mf {
 
 struct MfPlotOptions {
   std::vector<double> load_factors = {0.5, 1.0, 1.5, 2.0};  ///< × FNOMIN
+  std::vector<double> loads_n;  ///< loads in N; when not empty, used instead of load_factors
   double vx_mps = 16.7;
   std::string title = "Magic Formula";
   int points = 301;

@@ -13,26 +13,6 @@ namespace tread::tir {
 
 namespace {
 
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> cells;
-  std::string cur;
-  for (const char c : line) {
-    if (c == ',') {
-      cells.push_back(cur);
-      cur.clear();
-    } else if (c != '\r') {
-      cur += c;
-    }
-  }
-  cells.push_back(cur);
-  for (auto& s : cells) {
-    const auto b = s.find_first_not_of(" \t");
-    const auto e = s.find_last_not_of(" \t");
-    s = b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
-  }
-  return cells;
-}
-
 template <typename T>
 pac::PacParams<T> convert(const pac::PacParams<double>& p) {
   pac::PacParams<T> q;
@@ -57,67 +37,32 @@ pac::PacOutput<double> eval_as(const pac::PacParams<T>& p, const PacCsvOptions& 
   auto r =
       o.model == PacModel::kPac89 ? pac::pac89_eval(p, in, o.slip) : pac::pac94_eval(p, in, o.slip);
   if (o.iso_w) r = pac::to_iso_w(r);
-  return {static_cast<double>(r.fx_n), static_cast<double>(r.fy_n), static_cast<double>(r.mz_nm),
-          static_cast<double>(r.mx_nm), static_cast<double>(r.my_nm)};
+  return {static_cast<double>(r.fx_n),  static_cast<double>(r.fy_n),  static_cast<double>(r.mz_nm),
+          static_cast<double>(r.mx_nm), static_cast<double>(r.my_nm), r.status};
 }
 
 }  // namespace
 
 std::size_t evaluate_pac_csv(const pac::PacParams<double>& params, const PacCsvOptions& options,
                              std::istream& in, const std::string& in_name, std::ostream& out) {
-  const std::array<const char*, 4> names = {"Fz_N", "kappa", "alpha_rad", "gamma_rad"};
-  std::array<std::size_t, 4> col{};
-  std::size_t width = 0;
-  bool have_header = false;
+  using Q = mf::InputQuantity;
+  mf::InputTable table(in, in_name, options.table);
   const auto pf = convert<float>(params);
-  std::string line;
-  int line_no = 0;
   std::size_t rows = 0;
   out.precision(17);
-  while (std::getline(in, line)) {
-    ++line_no;
-    if (line.find_first_not_of(" \t\r") == std::string::npos || line.front() == '#') continue;
-    const auto cells = split(line);
-    if (!have_header) {
-      for (std::size_t k = 0; k < names.size(); ++k) {
-        std::size_t found = cells.size();
-        for (std::size_t j = 0; j < cells.size(); ++j) {
-          if (cells[j] != names[k]) continue;
-          if (found != cells.size()) {
-            throw TirError(in_name, line_no, std::string("repeated column ") + names[k]);
-          }
-          found = j;
-        }
-        if (found == cells.size()) {
-          throw TirError(in_name, line_no, std::string("missing column ") + names[k]);
-        }
-        col[k] = found;
-      }
-      width = cells.size();
-      have_header = true;
-      out << "in_Fz_N,in_kappa,in_alpha_rad,in_gamma_rad,Fx_N,Fy_N,Mz_Nm,Mx_Nm,My_Nm\n";
-      continue;
-    }
-    if (cells.size() != width) {
-      throw TirError(
-          in_name, line_no,
-          "expected " + std::to_string(width) + " cells, got " + std::to_string(cells.size()));
-    }
-    std::array<double, 4> v{};
-    for (std::size_t k = 0; k < names.size(); ++k) {
-      const auto n = parse_number(cells[col[k]]);
-      if (!n) {
-        throw TirError(in_name, line_no,
-                       std::string(names[k]) + " is not a finite number: '" + cells[col[k]] + "'");
-      }
-      v[k] = *n;
-    }
+  out << "# tread pac eval: "
+      << (options.iso_w ? "ISO-W (TYDEX W) axes" : "the PAC89/PAC94 model's own axes")
+      << ", SI units (inputs read in " << mf::to_string(options.table.convention)
+      << " axes and converted to ISO-W)\n";
+  out << "in_Fz_N,in_kappa,in_alpha_rad,in_gamma_rad,Fx_N,Fy_N,Mz_Nm,Mx_Nm,My_Nm,status\n";
+  while (const auto row = table.next()) {
+    const std::array<double, 4> v = {(*row)[Q::fz], (*row)[Q::kappa], (*row)[Q::alpha],
+                                     (*row)[Q::gamma]};
     const auto r = options.use_float ? eval_as(pf, options, v) : eval_as(params, options, v);
     out << v[0] << ',' << v[1] << ',' << v[2] << ',' << v[3] << ',' << r.fx_n << ',' << r.fy_n
-        << ',' << r.mz_nm << ',' << r.mx_nm << ',' << r.my_nm << '\n';
+        << ',' << r.mz_nm << ',' << r.mx_nm << ',' << r.my_nm << ',' << to_string(r.status) << '\n';
     ++rows;
   }
-  if (!have_header) throw TirError(in_name, line_no, "no header row");
   return rows;
 }
 

@@ -1,19 +1,22 @@
 #pragma once
 // CSV evaluation of PAC89/PAC94 (host side: allocates, throws).
 //
-// Input: a header row, then one row per evaluation. Required columns (any order): Fz_N, kappa,
-// alpha_rad, gamma_rad; other columns (e.g. Vx_mps of an MF input file) are ignored. Blank lines
-// and lines starting with '#' are skipped. Errors (TirError, `file:line: message`): a missing or
-// repeated required column, a row with the wrong number of cells, a required cell that is not a
-// finite number.
-// Output: in_Fz_N, in_kappa, in_alpha_rad, in_gamma_rad, Fx_N, Fy_N, Mz_Nm, Mx_Nm, My_Nm (17
-// significant digits), in the coefficient set's axes or, with `iso_w`, converted by
-// pac::to_iso_w().
+// Input: a table read by mf::InputTable (sim/mf/input_table.hpp: the accepted column names and
+// units, separator, the file's sign convention). Required inputs: Fz, kappa, alpha, gamma (ISO-W
+// after conversion); other columns (e.g. Vx_mps of an MF input file) are ignored. Errors (TirError,
+// `file:line: message`): a missing or repeated input column, a row with the wrong number of
+// cells, an input cell that is not a finite number.
+// Output: a '#' line naming the axes, then in_Fz_N, in_kappa, in_alpha_rad, in_gamma_rad, Fx_N,
+// Fy_N, Mz_Nm, Mx_Nm, My_Nm (17 significant digits) and status. With `iso_w` (the default, as
+// `tread mf eval`) the outputs are in ISO-W axes, converted by pac::to_iso_w(): for the same
+// physical situation Fy and Mz have the signs `tread mf eval` gives (α > 0: Fy < 0, Mz > 0);
+// without it, in the PAC89/PAC94 coefficient set's own ("modified SAE") axes.
 
 #include <cstddef>
 #include <iosfwd>
 #include <string>
 
+#include "mf/input_table.hpp"
 #include "pac/pac_params.hpp"
 #include "tir/pac_plot.hpp"
 
@@ -23,7 +26,11 @@ struct PacCsvOptions {
   PacModel model = PacModel::kPac89;
   pac::Slip slip = pac::Slip::kCombined;
   bool use_float = false;  ///< evaluate in float (coefficients converted once)
-  bool iso_w = false;
+  bool iso_w = true;       ///< outputs in ISO-W (false: the model's own axes)
+  mf::InputTableOptions table{'\0',
+                              mf::SignConvention::iso_w,
+                              {mf::InputQuantity::fz, mf::InputQuantity::kappa,
+                               mf::InputQuantity::alpha, mf::InputQuantity::gamma}};
 };
 
 /// Returns the number of rows evaluated.

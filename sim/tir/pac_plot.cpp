@@ -11,9 +11,10 @@ namespace tread::tir {
 
 namespace {
 
-pac::PacOutput<double> eval(const pac::PacParams<double>& p, PacModel m,
+pac::PacOutput<double> eval(const pac::PacParams<double>& p, PacModel m, bool iso_w,
                             const pac::PacInput<double>& in, pac::Slip s) {
-  return m == PacModel::kPac89 ? pac::pac89_eval(p, in, s) : pac::pac94_eval(p, in, s);
+  const auto r = m == PacModel::kPac89 ? pac::pac89_eval(p, in, s) : pac::pac94_eval(p, in, s);
+  return iso_w ? pac::to_iso_w(r) : r;
 }
 
 std::string quoted(const std::string& s) {
@@ -50,8 +51,8 @@ std::string pac_plot_script(const pac::PacParams<double>& p, const PacPlotOption
       const double u = -1.0 + 2.0 * i / (n - 1);
       const double kappa = u * 0.5;  // −50 … 50 %
       const double alpha = u * 0.3;  // −0.3 … 0.3 rad
-      const auto fx = eval(p, o.model, {o.loads_n[l], kappa, 0.0, 0.0}, pac::Slip::kPure);
-      const auto fy = eval(p, o.model, {o.loads_n[l], 0.0, alpha, 0.0}, pac::Slip::kPure);
+      const auto fx = eval(p, o.model, o.iso_w, {o.loads_n[l], kappa, 0.0, 0.0}, pac::Slip::kPure);
+      const auto fy = eval(p, o.model, o.iso_w, {o.loads_n[l], 0.0, alpha, 0.0}, pac::Slip::kPure);
       s << kappa << ' ' << fx.fx_n << ' ' << alpha * 57.29577951308232 << ' ' << fy.fy_n << ' '
         << fy.mz_nm << '\n';
     }
@@ -62,14 +63,15 @@ std::string pac_plot_script(const pac::PacParams<double>& p, const PacPlotOption
     s << "$C" << j << " << EOD\n";
     for (int i = 0; i < n; ++i) {
       const double kappa = -0.5 + 1.0 * i / (n - 1);
-      const auto c = eval(p, o.model, {o.loads_n[0], kappa, alphas_deg[j] / 57.29577951308232, 0.0},
-                          pac::Slip::kCombined);
+      const auto c =
+          eval(p, o.model, o.iso_w, {o.loads_n[0], kappa, alphas_deg[j] / 57.29577951308232, 0.0},
+               pac::Slip::kCombined);
       s << c.fx_n << ' ' << c.fy_n << '\n';
     }
     s << "EOD\n";
   }
   s << "set multiplot layout 2,2 title "
-    << quoted(o.title + " (model axes, pure slip unless noted)")
+    << quoted(o.title + (o.iso_w ? " (ISO-W axes" : " (model axes") + ", pure slip unless noted)")
     << "\nset grid\nset key left top\n";
   auto curves = [&](const char* cols, const char* what) {
     s << "plot ";

@@ -3,6 +3,7 @@
 // constants, report and plots; bad input must fail with file:line and a non-zero exit status.
 // Stage 2: --model mf61 on pure lateral data, --synthesize (deterministic per --seed) and the
 // staged --model pac2002 fit of synthesized data read back as a .tir.
+// A PAC2002 start refitted as MF 6.1 (--model mf61 --start PAC2002.tir).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -337,12 +338,64 @@ TEST(FitCommand, Pac2002StagedFitFromSynthesizedData) {
                 err),
             0)
       << slurp(err);
-  // The wrong model for the start file is refused with a message.
-  EXPECT_NE(run("fit --model mf61 --start " + tir.string() + " --input " + data.string() +
+  // The wrong model for the start file is refused with a message: an MF 6.1 file is not refitted
+  // as PAC2002 (the other way round works: Mf61RefitOfAPac2002File).
+  const auto mf61 = tread::testing::refdata("tir/MagicFormula61_Parameters.tir");
+  EXPECT_NE(run("fit --model pac2002 --start " + mf61.string() + " --input " + data.string() +
                     " --output " + (dir / "wrong.tir").string(),
                 err),
             0);
-  EXPECT_NE(slurp(err).find("--model mf61 needs an MF 6.1/6.2"), std::string::npos) << slurp(err);
+  EXPECT_NE(slurp(err).find("--model pac2002 needs a PAC2002"), std::string::npos) << slurp(err);
+}
+
+// A PAC2002 file refitted as MF 6.1: synthesized from the PAC2002 file, fitted with --model mf61
+// --start PAC2002.tir, written as an MF 6.1 file (FITTYP 61, PAC2002-only keys removed) whose
+// curves follow the PAC2002 tyre's; the fit error is reported per channel and load.
+TEST(FitCommand, Mf61RefitOfAPac2002File) {
+  const auto tir = tread::testing::refdata("tir/chrono_VW_mf_185_80R14_PAC2002.tir");
+  const auto dir = tmp_dir();
+  const auto data = dir / "refit_data.csv";
+  const auto out_tir = dir / "refit_mf61.tir";
+  const auto err = dir / "stderr_refit.txt";
+  ASSERT_EQ(run("fit --synthesize " + tir.string() + " --seed 3 --output " + data.string(), err), 0)
+      << slurp(err);
+  ASSERT_EQ(run("fit --model mf61 --start " + tir.string() + " --input " + data.string() +
+                    " --output " + out_tir.string(),
+                err),
+            0)
+      << slurp(err);
+  const std::string e = slurp(err);
+  EXPECT_NE(e.find("a PAC2002 / MF 5.2 start, refitted as MF 6.1"), std::string::npos) << e;
+  EXPECT_NE(e.find("note: PHY3 = "), std::string::npos) << e;
+  EXPECT_NE(e.find("removed: LGAX LGAY LGAZ PHY3"), std::string::npos) << e;
+  EXPECT_NE(e.find("fit error Fy at Fz = "), std::string::npos) << e;
+  EXPECT_NE(e.find("fit error Mz at Fz = "), std::string::npos) << e;
+
+  const tread::tir::TirFile written = tread::tir::read_tir(out_tir);
+  EXPECT_EQ(written.number_any("FITTYP"), 61.0);
+  EXPECT_EQ(written.text_any("PROPERTY_FILE_FORMAT"), "USER");
+  for (const char* key : {"LGAY", "PHY3", "PTX1"}) EXPECT_EQ(written.find_any(key), nullptr) << key;
+  for (const char* key : {"PKY4", "PKY6", "PPX1", "INFLPRES", "NOMPRES"}) {
+    EXPECT_NE(written.find_any(key), nullptr) << key;
+  }
+  const tread::mf::MfParameters<double> truth = tread::mf::load_mf_parameters(tir).params;
+  const tread::mf::MfParameters<double> fitted = tread::mf::load_mf_parameters(out_tir).params;
+  EXPECT_EQ(fitted.fit_type, tread::mf::FitType::mf61);
+  for (double fz : {2000.0, 4000.0, 5500.0}) {
+    for (int channel : {0, 1}) {
+      double ss = 0.0, peak = 0.0;
+      int n = 0;
+      for (int i = -300; i <= 300; ++i, ++n) {
+        const double x = i * 1e-3;
+        const double t = channel == 0 ? value_of(truth, fz, x, 0, 0) : value_of(truth, fz, 0, x, 1);
+        const double f =
+            channel == 0 ? value_of(fitted, fz, x, 0, 0) : value_of(fitted, fz, 0, x, 1);
+        ss += (f - t) * (f - t);
+        peak = std::max(peak, std::fabs(t));
+      }
+      EXPECT_LT(std::sqrt(ss / n), 0.01 * peak) << fz << " channel " << channel;
+    }
+  }
 }
 
 }  // namespace

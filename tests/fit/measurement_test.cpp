@@ -1,4 +1,5 @@
-// Measurement files for `tread fit`: CSV with `tread mf eval` column names and TYDEX (.tdx), with
+// Measurement files for `tread fit`: CSV with the column names `tread mf eval` accepts (also TTC
+// names in SAE axes) and TYDEX (.tdx), with
 // unit conversion and file:line errors. Small files written here.
 #include "fit/measurement.hpp"
 
@@ -46,6 +47,32 @@ TEST(MeasurementCsv, ReadsColumnsInAnyOrderAndSubsets) {
   EXPECT_TRUE(std::isnan(set.points[1].fy_n));  // empty cell: not measured
   EXPECT_EQ(set.points[0].line, 4u);
   EXPECT_EQ(set.points[1].line, 5u);
+}
+
+// FSAE TTC style: the names and units mf::InputTable knows (SA, IA in degrees, V in km/h), SAE
+// axes converted to ISO-W (Fz, α, Fy, Mz change sign; κ, γ, Fx do not).
+TEST(MeasurementCsv, TtcNamesInSaeAxes) {
+  std::istringstream in(
+      "ET,V,SA,IA,FZ,FX,FY,MZ,SL,P\n"
+      "1.5,40,-4,2,-1100,150,2500,-30,0.02,82\n");
+  const MeasurementSet set = read_measurement_csv(in, "ttc.csv", mf::SignConvention::sae);
+  ASSERT_EQ(set.points.size(), 1u);
+  const MeasurementPoint& p = set.points[0];
+  const double deg = std::numbers::pi / 180.0;
+  EXPECT_DOUBLE_EQ(p.fz_n, 1100.0);
+  EXPECT_DOUBLE_EQ(p.alpha_rad, 4.0 * deg);
+  EXPECT_DOUBLE_EQ(p.gamma_rad, 2.0 * deg);
+  EXPECT_DOUBLE_EQ(p.kappa, 0.02);
+  EXPECT_DOUBLE_EQ(p.vx_mps, 40.0 / 3.6);
+  EXPECT_DOUBLE_EQ(p.fx_n, 150.0);
+  EXPECT_DOUBLE_EQ(p.fy_n, -2500.0);
+  EXPECT_DOUBLE_EQ(p.mz_nm, 30.0);
+  // The same file read as ISO-W keeps every sign.
+  std::istringstream again("FZ,SA,SL,FY\n-1100,-4,0.02,2500\n");
+  const MeasurementSet iso = read_measurement_csv(again, "iso.csv");
+  EXPECT_DOUBLE_EQ(iso.points[0].fz_n, -1100.0);
+  EXPECT_DOUBLE_EQ(iso.points[0].alpha_rad, -4.0 * deg);
+  EXPECT_DOUBLE_EQ(iso.points[0].fy_n, 2500.0);
 }
 
 TEST(MeasurementCsv, BadRowsNameFileAndLine) {

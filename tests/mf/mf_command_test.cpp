@@ -13,6 +13,7 @@
 #include "csv_table.hpp"
 #include "golden_path.hpp"
 #include "test_dir.hpp"
+#include "tir/tir_file.hpp"
 
 namespace {
 
@@ -132,6 +133,240 @@ TEST(MfCommand, PlotWritesPngAndSvg) {
   // Not a .png name: refused.
   EXPECT_NE(run("mf plot --tir " + tir.string() + " --output " + (dir / "x.jpg").string(),
                 dir / "plot_bad.txt"),
+            0);
+}
+
+void write(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+}
+
+TEST(MfCommand, FailingEvalLeavesNoPartialOutput) {
+  const auto tir = tread::testing::refdata("tir/MagicFormula61_Parameters.tir");
+  const auto dir = tmp_dir() / "partial";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const auto bad = dir / "bad_middle.csv";
+  std::string text = "Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps\n";
+  for (int i = 0; i < 50; ++i) text += "4000,0.01,0.02,0,16\n";
+  text += "4000,oops,0,0,16\n";
+  for (int i = 0; i < 50; ++i) text += "4000,0.01,0.02,0,16\n";
+  write(bad, text);
+  // No previous output: none afterwards.
+  const auto out = dir / "out.csv";
+  EXPECT_NE(run("mf eval --tir " + tir.string() + " --input " + bad.string() + " --output " +
+                    out.string(),
+                dir / "err1.txt"),
+            0);
+  EXPECT_NE(slurp(dir / "err1.txt").find("bad_middle.csv:52"), std::string::npos)
+      << slurp(dir / "err1.txt");
+  EXPECT_FALSE(std::filesystem::exists(out));
+  // A previous output stays as it was, and no temporary is left beside it.
+  write(out, "previous\n");
+  EXPECT_NE(run("mf eval --tir " + tir.string() + " --input " + bad.string() + " --output " +
+                    out.string(),
+                dir / "err2.txt"),
+            0);
+  EXPECT_EQ(slurp(out), "previous\n");
+  // pac eval too.
+  const auto json = tread::testing::refdata("tir/chrono_HMMWV_Pac89Tire.json");
+  EXPECT_NE(run("pac eval --json " + json.string() + " --input " + bad.string() + " --output " +
+                    out.string(),
+                dir / "err3.txt"),
+            0);
+  EXPECT_EQ(slurp(out), "previous\n");
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
+    const std::string name = e.path().filename().string();
+    EXPECT_EQ(name.find(".tmp"), std::string::npos) << "left behind: " << name;
+  }
+}
+
+TEST(MfCommand, DegreesInARadianColumnAreCountedOrRefusedWithStrict) {
+  const auto tir = tread::testing::refdata("tir/MagicFormula61_Parameters.tir");
+  const auto dir = tmp_dir();
+  const auto in = dir / "alpha_degrees.csv";
+  write(in,
+        "Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps\n4000,0,0.05,0,16\n4000,0,5,0,16\n"
+        "4000,0,-5,0,16\n30000,0,0,0,16\n");
+  const auto out = dir / "alpha_degrees_out.csv";
+  ASSERT_EQ(
+      run("mf eval --tir " + tir.string() + " --input " + in.string() + " --output " + out.string(),
+          dir / "deg.txt"),
+      0)
+      << slurp(dir / "deg.txt");
+  const std::string err = slurp(dir / "deg.txt");
+  // ALPMAX/ALPMIN of the sample file: ±0.96 rad; FZMAX 18000 N.
+  EXPECT_NE(err.find("1 rows outside the model's range: alpha_rad > ALPMAX = 0.96 rad (first: " +
+                     in.string() + ":3)"),
+            std::string::npos)
+      << err;
+  EXPECT_NE(err.find("1 rows outside the model's range: alpha_rad < ALPMIN = -0.96 rad"),
+            std::string::npos)
+      << err;
+  EXPECT_NE(err.find("Fz_N > FZMAX = 18000 N"), std::string::npos) << err;
+  const tread::testing::CsvTable table = tread::testing::read_csv(out.string());
+  EXPECT_EQ(table.rows.size(), 4U);
+
+  std::filesystem::remove(out);
+  EXPECT_NE(run("mf eval --strict --tir " + tir.string() + " --input " + in.string() +
+                    " --output " + out.string(),
+                dir / "strict.txt"),
+            0);
+  const std::string strict = slurp(dir / "strict.txt");
+  EXPECT_NE(strict.find("alpha_degrees.csv:3: alpha_rad = 5 outside the model's range"),
+            std::string::npos)
+      << strict;
+  EXPECT_NE(strict.find("if it holds degrees, name it alpha_deg"), std::string::npos) << strict;
+  EXPECT_FALSE(std::filesystem::exists(out));
+
+  // Named alpha_deg, the same file is in range and --strict passes.
+  const auto in_deg = dir / "alpha_deg.csv";
+  write(in_deg, "Fz_N,kappa,alpha_deg,gamma_rad,Vx_mps\n4000,0,5,0,16\n4000,0,-5,0,16\n");
+  EXPECT_EQ(run("mf eval --strict --tir " + tir.string() + " --input " + in_deg.string() +
+                    " --output " + out.string(),
+                dir / "strict_ok.txt"),
+            0)
+      << slurp(dir / "strict_ok.txt");
+  EXPECT_NE(slurp(dir / "strict_ok.txt").find("'alpha_deg' → alpha_rad (deg → rad)"),
+            std::string::npos)
+      << slurp(dir / "strict_ok.txt");
+}
+
+TEST(MfCommand, SaeFileWithTtcNamesEqualsIsoWFile) {
+  const auto tir = tread::testing::refdata("tir/MagicFormula61_Parameters.tir");
+  const auto dir = tmp_dir();
+  // The same two physical situations, written twice: SAE axes with TTC names, units and ';', and
+  // ISO-W with SI names.
+  const auto sae = dir / "ttc_sae.csv";
+  write(sae, "ET;FZ;SA;SL;IA;V;P\n0,1;-4000;-3;0,05;2;40;220\n0,2;-6000;4;-0,1;-1;40;220\n");
+  const auto iso = dir / "iso.csv";
+  std::ostringstream t;
+  t.precision(17);
+  const double deg = 3.14159265358979323846 / 180.0;
+  t << "Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps,P_Pa\n"
+    << 4000 << ',' << 0.05 << ',' << 3 * deg << ',' << 2 * deg << ',' << 40 / 3.6 << ",220000\n"
+    << 6000 << ',' << -0.1 << ',' << -4 * deg << ',' << -1 * deg << ',' << 40 / 3.6 << ",220000\n";
+  write(iso, t.str());
+  ASSERT_EQ(run("mf eval --convention sae --tir " + tir.string() + " --input " + sae.string() +
+                    " --output " + (dir / "sae_out.csv").string(),
+                dir / "sae.txt"),
+            0)
+      << slurp(dir / "sae.txt");
+  ASSERT_EQ(run("mf eval --tir " + tir.string() + " --input " + iso.string() + " --output " +
+                    (dir / "iso_out.csv").string(),
+                dir / "iso.txt"),
+            0)
+      << slurp(dir / "iso.txt");
+  const std::string err = slurp(dir / "sae.txt");
+  EXPECT_NE(err.find("'SA' → alpha_rad (deg → rad, sign changed from sae to ISO-W)"),
+            std::string::npos)
+      << err;
+  EXPECT_NE(err.find("ignored columns: 'ET'"), std::string::npos) << err;
+  const auto a = tread::testing::read_csv((dir / "sae_out.csv").string());
+  const auto b = tread::testing::read_csv((dir / "iso_out.csv").string());
+  ASSERT_EQ(a.rows.size(), 2U);
+  ASSERT_EQ(b.rows.size(), 2U);
+  for (std::size_t r = 0; r < 2; ++r) {
+    for (const char* name : {"in_Fz_N", "in_alpha_rad", "Fx_N", "Fy_N", "Mz_Nm", "Mx_Nm"}) {
+      EXPECT_NEAR(a.at(r, name), b.at(r, name), 1e-9 * std::max(1.0, std::fabs(b.at(r, name))))
+          << name << " row " << r;
+    }
+  }
+  // Without --convention sae the negative loads are flagged.
+  EXPECT_EQ(run("mf eval --tir " + tir.string() + " --input " + sae.string() + " --output " +
+                    (dir / "sae_as_iso.csv").string(),
+                dir / "sae_as_iso.txt"),
+            0);
+  EXPECT_NE(slurp(dir / "sae_as_iso.txt").find("2 rows outside the model's range: Fz_N < FZMIN"),
+            std::string::npos)
+      << slurp(dir / "sae_as_iso.txt");
+  EXPECT_NE(run("mf eval --strict --tir " + tir.string() + " --input " + sae.string() +
+                    " --output " + (dir / "sae_as_iso.csv").string(),
+                dir / "sae_strict.txt"),
+            0);
+  EXPECT_NE(slurp(dir / "sae_strict.txt").find("--convention sae"), std::string::npos)
+      << slurp(dir / "sae_strict.txt");
+}
+
+// The PAC2002 file through `mf eval` and a PAC89 tyre through `pac eval` (no file holds both
+// coefficient sets): for the same physical situations both commands give the signs of ISO-W.
+TEST(MfCommand, PacEvalAndMfEvalAgreeOnSigns) {
+  const auto pac2002 = tread::testing::refdata("tir/chrono_VW_mf_185_80R14_PAC2002.tir");
+  const auto pac89 = tread::testing::refdata("tir/chrono_HMMWV_Pac89Tire.json");
+  const auto dir = tmp_dir();
+  const auto in = dir / "signs.csv";
+  // Rows: α > 0, α < 0, κ > 0 (drive), κ < 0 (brake).
+  write(in,
+        "Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps\n4000,0,0.05,0,16\n4000,0,-0.05,0,16\n"
+        "4000,0.05,0,0,16\n4000,-0.05,0,0,16\n");
+  ASSERT_EQ(run("mf eval --tir " + pac2002.string() + " --input " + in.string() + " --output " +
+                    (dir / "signs_mf.csv").string(),
+                dir / "signs_mf.txt"),
+            0)
+      << slurp(dir / "signs_mf.txt");
+  ASSERT_EQ(run("pac eval --json " + pac89.string() + " --input " + in.string() + " --output " +
+                    (dir / "signs_pac.csv").string(),
+                dir / "signs_pac.txt"),
+            0)
+      << slurp(dir / "signs_pac.txt");
+  const auto mf = tread::testing::read_csv((dir / "signs_mf.csv").string());
+  const auto pac = tread::testing::read_csv((dir / "signs_pac.csv").string());
+  ASSERT_EQ(mf.rows.size(), 4U);
+  ASSERT_EQ(pac.rows.size(), 4U);
+  const double fy_sign[] = {-1, 1};  // ISO-W: α > 0 gives Fy < 0 and Mz > 0
+  for (std::size_t r = 0; r < 2; ++r) {
+    EXPECT_GT(fy_sign[r] * mf.at(r, "Fy_N"), 500.0) << r;
+    EXPECT_GT(fy_sign[r] * pac.at(r, "Fy_N"), 500.0) << r;
+    EXPECT_LT(fy_sign[r] * mf.at(r, "Mz_Nm"), 0.0) << r;
+    EXPECT_LT(fy_sign[r] * pac.at(r, "Mz_Nm"), 0.0) << r;
+  }
+  EXPECT_GT(mf.at(2, "Fx_N"), 500.0);
+  EXPECT_GT(pac.at(2, "Fx_N"), 500.0);
+  EXPECT_LT(mf.at(3, "Fx_N"), -500.0);
+  EXPECT_LT(pac.at(3, "Fx_N"), -500.0);
+  // --axes model gives the PAC89 formulae's own signs: Fy and Mz the other way.
+  ASSERT_EQ(run("pac eval --axes model --json " + pac89.string() + " --input " + in.string() +
+                    " --output " + (dir / "signs_model.csv").string(),
+                dir / "signs_model.txt"),
+            0);
+  const auto model = tread::testing::read_csv((dir / "signs_model.csv").string());
+  EXPECT_EQ(model.at(0, "Fy_N"), -pac.at(0, "Fy_N"));
+  EXPECT_EQ(model.at(0, "Mz_Nm"), -pac.at(0, "Mz_Nm"));
+  EXPECT_EQ(model.at(2, "Fx_N"), pac.at(2, "Fx_N"));
+  // A Magic Formula file holds no PAC89 coefficients: an error, not a tyre of zeros.
+  EXPECT_NE(run("pac eval --tir " + pac2002.string() + " --input " + in.string() + " --output " +
+                    (dir / "signs_zero.csv").string(),
+                dir / "signs_zero.txt"),
+            0);
+  EXPECT_NE(slurp(dir / "signs_zero.txt").find("no PAC89/PAC94 coefficients"), std::string::npos)
+      << slurp(dir / "signs_zero.txt");
+  EXPECT_FALSE(std::filesystem::exists(dir / "signs_zero.csv"));
+}
+
+TEST(MfCommand, PlotAtGivenLoadsWarnsAboutInvertedCurves) {
+  const auto dir = tmp_dir();
+  tread::tir::TirFile file =
+      tread::tir::read_tir(tread::testing::refdata("tir/MagicFormula61_Parameters.tir"));
+  file.set("LONGITUDINAL_COEFFICIENTS", "PDX2", -1.0);  // μx through zero at 14600 N < FZMAX
+  file.set("LATERAL_COEFFICIENTS", "PKY1", 28.3155);    // cornering stiffness of the wrong sign
+  const auto tir = dir / "inverted.tir";
+  tread::tir::write_tir(file, tir);
+  const auto png = dir / "inverted.png";
+  ASSERT_EQ(
+      run("mf plot --tir " + tir.string() + " --loads 2000,4000,6000 --output " + png.string(),
+          dir / "inverted.txt"),
+      0)
+      << slurp(dir / "inverted.txt");
+  const std::string err = slurp(dir / "inverted.txt");
+  EXPECT_NE(err.find("warning: " + tir.string() + ": Fx peak changes sign below FZMAX"),
+            std::string::npos)
+      << err;
+  EXPECT_NE(err.find("wrong sign of cornering stiffness"), std::string::npos) << err;
+  const std::string svg = slurp(dir / "inverted.svg");
+  EXPECT_NE(svg.find("Fz = 2000 N"), std::string::npos);
+  EXPECT_NE(svg.find("Fz = 6000 N"), std::string::npos);
+  EXPECT_NE(run("mf plot --tir " + tir.string() + " --loads 2000,-5 --output " + png.string(),
+                dir / "bad_loads.txt"),
             0);
 }
 

@@ -1,0 +1,181 @@
+// mf::InputTable (sim/mf/input_table.hpp): measurement column names and their units, separators,
+// decimal commas, the sign conventions, and errors naming file and line. Also host::ReplaceFile.
+#include "mf/input_table.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+#include <string>
+
+#include "io/replace_file.hpp"
+#include "test_dir.hpp"
+#include "tir/tir_file.hpp"
+
+namespace {
+
+using tread::mf::InputQuantity;
+using tread::mf::InputTable;
+using tread::mf::InputTableOptions;
+using tread::mf::SignConvention;
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+TEST(InputTable, SiNamesAreReadAsTheyAre) {
+  std::istringstream in(
+      "# comment\nFz_N,kappa,alpha_rad,gamma_rad,Vx_mps,phit_1pm,P_Pa\n\n"
+      "4000,0.1,0.05,-0.01,16.7,0.5,200000\n");
+  InputTable t(in, "si.csv", {});
+  EXPECT_TRUE(t.ignored_columns().empty());
+  const auto row = t.next();
+  ASSERT_TRUE(row);
+  EXPECT_EQ(row->line, 4);
+  EXPECT_EQ((*row)[InputQuantity::fz], 4000.0);
+  EXPECT_EQ((*row)[InputQuantity::kappa], 0.1);
+  EXPECT_EQ((*row)[InputQuantity::alpha], 0.05);
+  EXPECT_EQ((*row)[InputQuantity::gamma], -0.01);
+  EXPECT_EQ((*row)[InputQuantity::vx], 16.7);
+  EXPECT_EQ((*row)[InputQuantity::phit], 0.5);
+  EXPECT_EQ((*row)[InputQuantity::pressure], 200000.0);
+  EXPECT_FALSE(t.next());
+}
+
+TEST(InputTable, TtcNamesSemicolonDecimalCommaAndSaeSigns) {
+  // FSAE TTC style: SAE axes (the load negative), degrees, km/h, kPa; ';' with decimal commas.
+  std::istringstream in("ET;FZ;SA;SL;IA;V;P\n1,5;-1100;-3,5;0,02;2;40;82,7\n");
+  InputTableOptions o;
+  o.convention = SignConvention::sae;
+  InputTable t(in, "ttc.dat", o);
+  EXPECT_EQ(t.separator(), ';');
+  ASSERT_EQ(t.ignored_columns().size(), 1U);
+  EXPECT_EQ(t.ignored_columns()[0], "ET");
+  const auto row = t.next();
+  ASSERT_TRUE(row);
+  EXPECT_DOUBLE_EQ((*row)[InputQuantity::fz], 1100.0);
+  EXPECT_DOUBLE_EQ((*row)[InputQuantity::alpha], 3.5 * kDeg);  // SAE α changes sign
+  EXPECT_DOUBLE_EQ((*row)[InputQuantity::kappa], 0.02);
+  EXPECT_DOUBLE_EQ((*row)[InputQuantity::gamma], 2.0 * kDeg);  // an angle about x: unchanged
+  EXPECT_DOUBLE_EQ((*row)[InputQuantity::vx], 40.0 / 3.6);
+  EXPECT_DOUBLE_EQ((*row)[InputQuantity::pressure], 82700.0);
+  // The mapping names each column, its unit conversion and the sign change.
+  std::string mapping;
+  for (const auto& m : t.mapping()) mapping += m + "\n";
+  EXPECT_NE(mapping.find("'SA' → alpha_rad (deg → rad, sign changed from sae to ISO-W)"),
+            std::string::npos)
+      << mapping;
+  EXPECT_NE(mapping.find("'V' → Vx_mps (km/h → m/s)"), std::string::npos) << mapping;
+  EXPECT_NE(mapping.find("'FZ' → Fz_N (in N, sign changed"), std::string::npos) << mapping;
+}
+
+TEST(InputTable, CaseInsensitiveUnitsInNamesAndTabs) {
+  std::istringstream in(
+      "FZ_kN\tKappa_PCT\tAlpha_Deg\tgamma_DEG\tvx_KPH\tp_psi\n4.5\t-5\t2\t-1\t36\t30\n");
+  InputTable t(in, "tabs.txt", {});
+  EXPECT_EQ(t.separator(), '\t');
+  const auto row = t.next();
+  ASSERT_TRUE(row);
+  EXPECT_DOUBLE_EQ((*row)[InputQuantity::fz], 4500.0);
+  EXPECT_DOUBLE_EQ((*row)[InputQuantity::kappa], -0.05);
+  EXPECT_DOUBLE_EQ((*row)[InputQuantity::alpha], 2.0 * kDeg);
+  EXPECT_DOUBLE_EQ((*row)[InputQuantity::gamma], -1.0 * kDeg);
+  EXPECT_DOUBLE_EQ((*row)[InputQuantity::vx], 10.0);
+  EXPECT_NEAR((*row)[InputQuantity::pressure], 206842.7, 0.1);  // 30 psi
+  std::istringstream bar("Fz,SL,SA,IA,Vx,P_bar\n1,0,0,0,1,2.2\n");
+  InputTable tb(bar, "bar.csv", {});
+  EXPECT_DOUBLE_EQ((*tb.next())[InputQuantity::pressure], 220000.0);
+}
+
+TEST(InputTable, ExplicitSeparatorAndAdaptedIso) {
+  std::istringstream in("Fz_N;kappa;alpha_rad;gamma_rad;Vx_mps\n4000;0.1;0.05;0.02;10\n");
+  InputTableOptions o;
+  o.separator = ';';
+  o.convention = SignConvention::adapted_iso;
+  InputTable t(in, "x.csv", o);
+  const auto row = t.next();
+  ASSERT_TRUE(row);
+  EXPECT_EQ((*row)[InputQuantity::alpha], -0.05);
+  EXPECT_EQ((*row)[InputQuantity::gamma], 0.02);
+  EXPECT_EQ((*row)[InputQuantity::fz], 4000.0);
+}
+
+TEST(InputTable, ConventionsAndOutputSigns) {
+  using tread::mf::MeasuredQuantity;
+  using tread::mf::output_sign;
+  EXPECT_EQ(tread::mf::parse_sign_convention("SAE"), SignConvention::sae);
+  EXPECT_EQ(tread::mf::parse_sign_convention("iso-w"), SignConvention::iso_w);
+  EXPECT_EQ(tread::mf::parse_sign_convention("adapted-iso"), SignConvention::adapted_iso);
+  EXPECT_FALSE(tread::mf::parse_sign_convention("iso-c"));
+  for (auto q : {MeasuredQuantity::fx, MeasuredQuantity::fy, MeasuredQuantity::fz,
+                 MeasuredQuantity::mx, MeasuredQuantity::my, MeasuredQuantity::mz}) {
+    EXPECT_EQ(output_sign(SignConvention::iso_w, q), 1.0);
+  }
+  EXPECT_EQ(output_sign(SignConvention::sae, MeasuredQuantity::fx), 1.0);
+  EXPECT_EQ(output_sign(SignConvention::sae, MeasuredQuantity::fy), -1.0);
+  EXPECT_EQ(output_sign(SignConvention::sae, MeasuredQuantity::fz), -1.0);
+  EXPECT_EQ(output_sign(SignConvention::sae, MeasuredQuantity::mx), 1.0);
+  EXPECT_EQ(output_sign(SignConvention::sae, MeasuredQuantity::mz), -1.0);
+  EXPECT_EQ(output_sign(SignConvention::adapted_iso, MeasuredQuantity::fy), -1.0);
+  EXPECT_EQ(output_sign(SignConvention::adapted_iso, MeasuredQuantity::fz), 1.0);
+}
+
+void expect_error(const std::string& text, int line, const std::string& what) {
+  std::istringstream in(text);
+  try {
+    InputTable t(in, "bad.csv", {});
+    while (t.next()) {
+    }
+    ADD_FAILURE() << text;
+  } catch (const tread::tir::TirError& e) {
+    EXPECT_EQ(e.line(), line) << e.what();
+    EXPECT_NE(std::string(e.what()).find("bad.csv:" + std::to_string(line)), std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+  }
+}
+
+TEST(InputTable, ErrorsNameFileAndLine) {
+  expect_error("", 0, "no header row");
+  expect_error("Fz_N,kappa,alpha_rad,gamma_rad\n", 1, "missing column 'Vx_mps'");
+  expect_error("FZ,SL,SA,alpha_deg,IA,V\n", 1, "'SA' and 'alpha_deg' both give alpha_rad");
+  expect_error("FZ,SL,SA,IA,V\n1,2,3,4,5\n\n1,2,3,4\n", 4, "expected 5 cells, found 4");
+  expect_error("FZ,SL,SA,IA,V\n1,2,3,deg,5\n", 2, "IA: 'deg' is not a finite number");
+  expect_error("FZ,SL,SA,IA,V\n1,2,inf,0,5\n", 2, "SA: 'inf' is not a finite number");
+  // A ',' file does not take decimal commas: the cell count is wrong instead.
+  expect_error("FZ,SL,SA,IA,V\n1,0,5,2,0,5\n", 2, "expected 5 cells, found 6");
+}
+
+TEST(ReplaceFile, CommitReplacesAndAbandonLeavesTheOldFile) {
+  const auto dir = tread::testing::test_dir("replace_file_test");
+  const auto target = dir / "out.csv";
+  { std::ofstream(target) << "old\n"; }
+  {
+    tread::host::ReplaceFile f(target);
+    f.stream() << "half";
+    EXPECT_TRUE(std::filesystem::exists(f.temporary()));
+    // no commit: as if an exception left the scope
+  }
+  {
+    std::ifstream in(target);
+    std::string s;
+    std::getline(in, s);
+    EXPECT_EQ(s, "old");
+  }
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
+    EXPECT_EQ(e.path().filename(), "out.csv") << "left behind: " << e.path();
+  }
+  {
+    tread::host::ReplaceFile f(target);
+    f.stream() << "new\n";
+    f.commit();
+  }
+  std::ifstream in(target);
+  std::string s;
+  std::getline(in, s);
+  EXPECT_EQ(s, "new");
+  EXPECT_THROW(tread::host::ReplaceFile(dir / "no_such_dir" / "x.csv"), std::runtime_error);
+}
+
+}  // namespace
