@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "cli/commands.hpp"
+#include "mf/tir_info.hpp"
 #include "tir/pac_coefficients.hpp"
 #include "tir/tir_file.hpp"
 #include "tir/tir_normalise.hpp"
@@ -86,6 +87,16 @@ void add_tir_command(CLI::App& app) {
   convert->add_option("--note", convert_args.note,
                       "One-line comment for the first line (default: where it came from)");
   convert->callback([] { run_convert(convert_args); });
+
+  static std::string info_input;
+  auto* info = tir_cmd->add_subcommand(
+      "info",
+      "What a property file is: detected model, units, FNOMIN/R0/pressures, limits, defaulted "
+      "keys, figures at FNOMIN (peak μx/μy, slip and cornering stiffness, trail) and warnings");
+  info->add_option("file", info_input, "Property file (.tir)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  info->callback([] { std::cout << mf::tir_info_report(info_input); });
 }
 
 }  // namespace

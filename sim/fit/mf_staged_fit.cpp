@@ -18,6 +18,7 @@
 #include "fit/mf_lateral_fit.hpp"
 #include "fit/mf_longitudinal_fit.hpp"
 #include "plot/gnuplot.hpp"
+#include "tir/tir_units.hpp"
 
 namespace tread::fit {
 namespace {
@@ -109,7 +110,7 @@ void set_fitted_coefficients(tir::TirFile& file, const StagedFit& fit) {
   for (const auto& stage : fit.stages) {
     for (std::size_t i = 0; i < stage.keys.size(); ++i) {
       const int index = required_coefficient_index(stage.keys[i]);
-      file.set(coefficient_section(index), stage.keys[i], coefficient(fit.params, index));
+      tir::set_si(file, coefficient_section(index), stage.keys[i], coefficient(fit.params, index));
     }
   }
 }

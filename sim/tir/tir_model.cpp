@@ -88,6 +88,22 @@ constexpr std::array kFittyps = std::to_array<FittypRow>({
     {62, TirModel::kMf62, "MF 6.2", model::kMf62},
 });
 
+constexpr std::string_view kMf50Note =
+    "evaluated with the MF 5.2 / PAC2002 equations, which share its coefficients; MFSAFE1-3 are "
+    "ignored";
+
+std::string mf50_note(const TirFile& file, const std::string& what) {
+  std::string note = what + ": " + std::string(kMf50Note);
+  const auto fe = file.text_any("FE_METHOD");
+  if (fe && upper(*fe) == "YES") {
+    note +=
+        "; FE_METHOD = 'YES' asks for MF-Tyre 5.0's friction-ellipse combined slip, which tread "
+        "does not implement: combined-slip outputs use the MF 5.2 weighting functions (pure-slip "
+        "outputs are unaffected)";
+  }
+  return note;
+}
+
 [[noreturn]] void not_mf(const TirFile& file, const Entry* at, const std::string& reason) {
   throw TirError(file.origin(), at != nullptr ? at->line : 0,
                  "not a Magic Formula file: " + reason);
@@ -148,15 +164,22 @@ DetectedModel detect_model(const TirFile& file) {
       not_mf(file, format_entry,
              "no FITTYP and none of the Magic Formula coefficients (PCX1, PDY1, PKY1, QBZ1, …)");
     }
-    if (!known_format) {
-      not_mf(file, format_entry,
-             "unknown PROPERTY_FILE_FORMAT '" + format_entry->value + "' and no FITTYP");
-    }
     DetectedModel d;
+    if (format == "MF_05" || format == "MF-05" || format == "MF5") {
+      d.model = TirModel::kMf50;
+      d.name = "MF-Tyre 5.0";
+      d.keys = model::kPac2002;
+      d.note = mf50_note(
+          file, "PROPERTY_FILE_FORMAT '" + format_entry->value + "' without FITTYP (MF-Tyre 5.0)");
+      return d;
+    }
     d.model = TirModel::kPac2002;
     d.name = "PAC2002";
     d.keys = model::kPac2002;
-    d.note = "no FITTYP: evaluated as Adams PAC2002 (MF 5.2 equations with LGAX/LGAY/LGAZ)";
+    d.note = known_format
+                 ? "no FITTYP"
+                 : "unknown PROPERTY_FILE_FORMAT '" + format_entry->value + "' and no FITTYP";
+    d.note += ": evaluated as Adams PAC2002 (MF 5.2 equations with LGAX/LGAY/LGAZ)";
     return d;
   }
   const std::optional<double> f = file.number_any("FITTYP");
@@ -173,19 +196,7 @@ DetectedModel detect_model(const TirFile& file) {
     d.model = row.model;
     d.name = std::string(row.name);
     d.keys = row.keys;
-    if (row.model == TirModel::kMf50) {
-      d.model = TirModel::kMf50;
-      d.note =
-          "FITTYP 5 (MF-Tyre 5.0): evaluated with the MF 5.2 / PAC2002 equations, which share "
-          "its coefficients; MFSAFE1-3 are ignored";
-      const auto fe = file.text_any("FE_METHOD");
-      if (fe && upper(*fe) == "YES") {
-        d.note +=
-            "; FE_METHOD = 'YES' asks for MF-Tyre 5.0's friction-ellipse combined slip, which "
-            "tread does not implement: combined-slip outputs use the MF 5.2 weighting functions "
-            "(pure-slip outputs are unaffected)";
-      }
-    }
+    if (row.model == TirModel::kMf50) d.note = mf50_note(file, "FITTYP 5 (MF-Tyre 5.0)");
     if (!known_format) {
       d.note += std::string(d.note.empty() ? "" : "; ") + "unknown PROPERTY_FILE_FORMAT '" +
                 format_entry->value + "': read as " + d.name + " from FITTYP";

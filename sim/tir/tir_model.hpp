@@ -7,7 +7,9 @@
 //   absent, 'USER', 'PAC2002',   6, 21, 52     MF 5.2 (52: read as "5.2", like 61/62)
 //   'MF-TYRE', 'MF_05', 'MF5',   61 / 62       MF 6.1 / MF 6.2
 //   'PAC-TIME', 'PAC_MC', 'TNO', 5            MF-Tyre 5.0 (see below)
-//   'MF-SWIFT', 'SWIFT'          absent        Adams PAC2002 (MF 5.2 equations + LGAX/LGAY/LGAZ)
+//   'MF-SWIFT', 'SWIFT'          absent        Adams PAC2002 (MF 5.2 equations + LGAX/LGAY/LGAZ);
+//                                              'MF_05'/'MF-05'/'MF5': MF-Tyre 5.0
+//   any other text               FITTYP/absent as above, with a note naming the unknown format
 //   'FIALA', 'UA', 'UATIRE', 'HARTY', 'FTIRE', 'CDTIRE', '5PT', …  → not a Magic Formula file
 // A file without PROPERTY_FILE_FORMAT and FITTYP whose coefficients are A0…/B0…/C0… is PAC89
 // (PAC94 if it has A14…A17, B11…B13 or C18…C20). FUNCTION_NAME naming another model (Harty

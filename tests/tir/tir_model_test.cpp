@@ -48,6 +48,18 @@ TEST(TirModel, FormatAndFittypTable) {
   const DetectedModel odd = detect("[M]\nPROPERTY_FILE_FORMAT = 'ACME'\nFITTYP = 61\nPCX1 = 1\n");
   EXPECT_EQ(odd.model, TirModel::kMf61);
   EXPECT_NE(odd.note.find("unknown PROPERTY_FILE_FORMAT 'ACME'"), std::string::npos);
+  // An unknown format without FITTYP but with MF coefficients: PAC2002, and the note says why.
+  const DetectedModel acme = detect("[M]\nPROPERTY_FILE_FORMAT = 'ACME'\nPCX1 = 1\n");
+  EXPECT_EQ(acme.model, TirModel::kPac2002);
+  EXPECT_EQ(acme.note,
+            "unknown PROPERTY_FILE_FORMAT 'ACME' and no FITTYP: evaluated as Adams PAC2002 (MF 5.2 "
+            "equations with LGAX/LGAY/LGAZ)");
+  // MF_05 without FITTYP (TTC-style MF-Tyre 5.0 files) is MF-Tyre 5.0.
+  const DetectedModel mf05 =
+      detect("[M]\nPROPERTY_FILE_FORMAT = 'MF_05'\nFE_METHOD = 'yes'\nPCX1 = 1\n");
+  EXPECT_EQ(mf05.model, TirModel::kMf50);
+  EXPECT_NE(mf05.note.find("'MF_05' without FITTYP (MF-Tyre 5.0)"), std::string::npos);
+  EXPECT_NE(mf05.note.find("friction-ellipse"), std::string::npos);
 }
 
 TEST(TirModel, OtherModelsAreRefusedWithTheReason) {
@@ -56,8 +68,7 @@ TEST(TirModel, OtherModelsAreRefusedWithTheReason) {
             "Arizona) tyre model");
   EXPECT_EQ(error_of("[M]\nFUNCTION_NAME = 'TFIALA'\nFITTYP = 61\nPCX1 = 1\n"),
             "d.tir:2: not a Magic Formula file: FUNCTION_NAME 'TFIALA' is a Fiala tyre model");
-  EXPECT_EQ(error_of("[M]\nPROPERTY_FILE_FORMAT = 'ACME'\nPCX1 = 1\n"),
-            "d.tir:2: not a Magic Formula file: unknown PROPERTY_FILE_FORMAT 'ACME' and no FITTYP");
+
   EXPECT_EQ(error_of("[M]\nWIDTH = 0.2\n"),
             "d.tir:0: not a Magic Formula file: no FITTYP and none of the Magic Formula "
             "coefficients (PCX1, PDY1, PKY1, QBZ1, …)");
@@ -74,7 +85,7 @@ TEST(TirModel, PacLoaderRoutesAndRefuses) {
     (void)pac_from_tir(read_tir(testing::tyre_file("MagicFormula61_Parameters.tir")));
     ADD_FAILURE() << "MF file accepted";
   } catch (const TirError& e) {
-    EXPECT_NE(std::string(e.what()).find(":14: this is an MF 6.1 file, not PAC89/PAC94: use tread "
+    EXPECT_NE(std::string(e.what()).find(":13: this is an MF 6.1 file, not PAC89/PAC94: use tread "
                                          "mf eval"),
               std::string::npos)
         << e.what();
