@@ -1,52 +1,27 @@
-// `tread tir convert`: rewrite a .tir property file in tread's normalised form (sections, keys,
-// values and table rows of the original, in its order, without its comments). A Chrono Pac89Tire
-// JSON coefficient file (.json) becomes an Adams-style PAC89 property file.
+// `tread tir`: tyre property files (.tir).
+//   convert  rewrite a file in tread's normalised form (the original's sections, keys, values and
+//            table rows, in its order, without its comments), optionally in SI units; a Chrono
+//            Pac89Tire JSON file (.json) becomes an Adams-style PAC89 property file.
+//   info     what tread makes of a file (mf/tir_info.hpp): the detected model, units, loads,
+//            pressures, limits, the keys that took a default, the figures at FNOMIN (peak μx and
+//            μy, slip and cornering stiffness, pneumatic trail, radii), with warnings.
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <stdexcept>
 #include <string>
-#include <system_error>
+#include <vector>
 
 #include "cli/commands.hpp"
+#include "io/replace_file.hpp"
 #include "mf/tir_info.hpp"
 #include "tir/pac_coefficients.hpp"
 #include "tir/tir_file.hpp"
 #include "tir/tir_normalise.hpp"
+#include "tir/tir_units.hpp"
 
 namespace tread::cli {
 
 namespace {
-
-/// Writes `text` to `path` through a temporary file beside it, renamed on success, so a failure
-/// never leaves a partial file (or destroys an earlier one).
-void write_file_atomically(const std::filesystem::path& path, const std::string& text) {
-  std::filesystem::path tmp = path;
-  tmp += ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error(path.string() + ": cannot write");
-    out.write(text.data(), static_cast<std::streamsize>(text.size()));
-    out.close();
-    if (!out) {
-      std::error_code ec;
-      std::filesystem::remove(tmp, ec);
-      throw std::runtime_error(path.string() + ": write failed");
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::filesystem::remove(tmp, ec);
-    throw std::runtime_error(path.string() + ": cannot replace: " + ec.message());
-  }
-}
-
-struct ConvertArgs {
-  std::string input;
-  std::string output;
-  std::string note;
-};
 
 // A PAC89 property file holding the coefficients of a Chrono Pac89Tire JSON file.
 tir::TirFile pac89_tir_from_chrono_json(const std::string& path) {
@@ -60,15 +35,34 @@ tir::TirFile pac89_tir_from_chrono_json(const std::string& path) {
   return file;
 }
 
+struct ConvertArgs {
+  std::string input;
+  std::string output;
+  std::string note;
+  std::string units = "file";
+};
+
 void run_convert(const ConvertArgs& args) {
-  const tir::TirFile file = std::filesystem::path(args.input).extension() == ".json"
-                                ? pac89_tir_from_chrono_json(args.input)
-                                : tir::read_tir(args.input);
+  tir::TirFile file = std::filesystem::path(args.input).extension() == ".json"
+                          ? pac89_tir_from_chrono_json(args.input)
+                          : tir::read_tir(args.input);
+  if (args.units == "si") {
+    const std::vector<std::string> left = tir::convert_to_si(file);
+    if (!left.empty()) {
+      std::cerr << "tread tir convert: warning: " << left.size()
+                << " numeric key(s) of unknown dimension left as written:";
+      for (const auto& k : left) std::cerr << ' ' << k;
+      std::cerr << '\n';
+    }
+  }
   const std::string note = args.note.empty()
                                ? "normalised by tread tir convert from " +
-                                     std::filesystem::path(args.input).filename().string()
+                                     std::filesystem::path(args.input).filename().string() +
+                                     (args.units == "si" ? " (in SI units)" : "")
                                : args.note;
-  write_file_atomically(args.output, tir::write_normalised_tir(file, note));
+  host::ReplaceFile out(args.output);
+  out.stream() << tir::write_normalised_tir(file, note);
+  out.commit();
   std::cerr << "tread tir convert: " << args.input << " -> " << args.output << '\n';
 }
 
@@ -80,23 +74,28 @@ void add_tir_command(CLI::App& app) {
       "convert",
       "Rewrite a .tir in normalised form: the same sections, keys, values (exact text) and table "
       "rows, without the original's comments");
-  convert->add_option("input", convert_args.input, "Property file to read")
+  convert->add_option("input", convert_args.input, "Property file to read (.tir, or Chrono .json)")
       ->required()
       ->check(CLI::ExistingFile);
   convert->add_option("output", convert_args.output, "Property file to write")->required();
   convert->add_option("--note", convert_args.note,
                       "One-line comment for the first line (default: where it came from)");
+  convert
+      ->add_option("--units", convert_args.units,
+                   "file: keep the file's [UNITS] and values; si: convert every dimensional value "
+                   "to SI and write [UNITS] as meter/newton/radians/kg/second")
+      ->check(CLI::IsMember({"file", "si"}))
+      ->capture_default_str();
   convert->callback([] { run_convert(convert_args); });
 
-  static std::string info_input;
+  static std::string info_path;
   auto* info = tir_cmd->add_subcommand(
       "info",
-      "What a property file is: detected model, units, FNOMIN/R0/pressures, limits, defaulted "
-      "keys, figures at FNOMIN (peak μx/μy, slip and cornering stiffness, trail) and warnings");
-  info->add_option("file", info_input, "Property file (.tir)")
-      ->required()
-      ->check(CLI::ExistingFile);
-  info->callback([] { std::cout << mf::tir_info_report(info_input); });
+      "What tread makes of a property file: model and version, units, dimensions, loads, "
+      "pressures, limits, defaulted keys, and figures at FNOMIN (peak mu, stiffnesses, trail, "
+      "radii) in ISO-W axes, with warnings");
+  info->add_option("file", info_path, "Property file (.tir)")->required()->check(CLI::ExistingFile);
+  info->callback([] { std::cout << mf::tir_info_report(info_path); });
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "mf/mf_curve_checks.hpp"
 #include "mf/mf_parameters_from_tir.hpp"
 #include "mf/mf_tyre_figures.hpp"
 #include "tir/pac_coefficients.hpp"
@@ -108,6 +109,11 @@ std::string tir_info_report(const std::filesystem::path& path) {
   const double fz0 = p.fnomin_n * p.lfzo;
   sign_change(w, "Fx", p.pdx1, p.pdx2, fz0, p.fzmin_n, p.fzmax_n);
   sign_change(w, "Fy", p.pdy1, p.pdy2, fz0, p.fzmin_n, p.fzmax_n);
+  // The curves themselves (mf/mf_curve_checks): stiffness signs, friction beyond reason or rising
+  // with load; the peak's sign change is said above from the coefficients.
+  for (const std::string& c : curve_warnings(p, MfOptions{}, {p.fnomin_n}, f.vx_mps)) {
+    if (c.rfind("Fx peak changes sign", 0) != 0) w << "  warning: " << c << '\n';
+  }
   out << "warnings:" << (w.str().empty() ? " none\n" : "\n" + w.str());
   return out.str();
 }

@@ -12,6 +12,7 @@
 #include "golden_path.hpp"
 #include "mf/mf_evaluate.hpp"
 #include "mf/mf_parameters_from_tir.hpp"
+#include "mf/mf_tyre_figures.hpp"
 #include "test_dir.hpp"
 #include "tir/pac_coefficients.hpp"
 #include "tir/tir_file.hpp"
@@ -142,6 +143,107 @@ TEST(TirConvert, BadInputFailsWithFileAndLineAndWritesNothing) {
                 dir / "stderr.txt"),
             0);
   EXPECT_NE(slurp(dir / "stderr.txt").find("cannot write"), std::string::npos);
+}
+
+struct Output {
+  int status;
+  std::string out;
+};
+
+Output info(const fs::path& file) {
+  const fs::path dir = tmp_dir();
+  const int status =
+      run("tir info " + file.string() + " > " + (dir / "info.txt").string(), dir / "info_err.txt");
+  return {status, slurp(dir / "info.txt") + slurp(dir / "info_err.txt")};
+}
+
+// The number printed after `label` on its line.
+double number_after(const std::string& text, const std::string& label) {
+  const std::size_t at = text.find(label);
+  EXPECT_NE(at, std::string::npos) << label << " not in:\n" << text;
+  if (at == std::string::npos) return 0.0;
+  return std::stod(text.substr(at + label.size()));
+}
+
+TEST(TirInfo, Mf61SampleShowsModelLimitsAndFigures) {
+  const fs::path tir = testing::tyre_file("MagicFormula61_Parameters.tir");
+  const Output r = info(tir);
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("model: MF 6.1 (PROPERTY_FILE_FORMAT 'USER', FITTYP 61)"), std::string::npos)
+      << r.out;
+  EXPECT_NE(
+      r.out.find(
+          "units: LENGTH 'meter', FORCE 'newton', ANGLE 'radians', MASS 'kg', TIME 'second'\n"),
+      std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("defaulted keys (0):\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("warnings: none"), std::string::npos) << r.out;
+  const auto p = mf::load_mf_parameters(tir).params;
+  const mf::MfTyreFigures f = mf::tyre_figures(p, mf::MfOptions{});
+  EXPECT_NEAR(number_after(r.out, "FNOMIN: "), p.fnomin_n, 1e-9);
+  EXPECT_NEAR(number_after(r.out, "peak μy: "), f.muy, 1e-3);
+  EXPECT_NEAR(number_after(r.out, "peak μx: drive "), f.mux_drive, 1e-3);
+  EXPECT_NEAR(number_after(r.out, "cornering stiffness Kyα: "), f.kya_nprad, 1e-5 * f.kya_nprad);
+  EXPECT_NEAR(number_after(r.out, "slip stiffness Kxκ: "), f.kxk_n, 1e-5 * f.kxk_n);
+}
+
+TEST(TirInfo, UnitsAreConvertedAndSaid) {
+  const Output si = info(testing::tyre_file("MagicFormula61_Parameters.tir"));
+  const Output mm = info(testing::test_data("tir-variants/mf61_mm_kN_deg.tir"));
+  ASSERT_EQ(mm.status, 0) << mm.out;
+  EXPECT_NE(mm.out.find("(values below converted to SI)"), std::string::npos) << mm.out;
+  // The same tyre in other units: the same figures in SI.
+  for (const char* label : {"FNOMIN: ", "R0: ", "peak μy: ", "cornering stiffness Kyα: ",
+                            "pneumatic trail (α = 0.5°): "}) {
+    EXPECT_NEAR(number_after(mm.out, label), number_after(si.out, label),
+                1e-4 * std::fabs(number_after(si.out, label)))
+        << label;
+  }
+}
+
+TEST(TirInfo, OtherModelsAndDefectiveFilesAreNamed) {
+  Output r = info(testing::tyre_file("chrono_HMMWV_Pac89Tire.tir"));
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("PAC89"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("tread pac eval"), std::string::npos) << r.out;
+  r = info(testing::test_data("tir-variants/harty_function_name.tir"));
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.out.find("not a Magic Formula file"), std::string::npos) << r.out;
+  r = info(testing::test_data("tir-variants/defective_zero_vertical_stiffness.tir"));
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.out.find("VERTICAL_STIFFNESS"), std::string::npos) << r.out;
+  // A PAC2002 file is named as such.
+  r = info(testing::tyre_file("chrono_Sedan_Pac02Tire.tir"));
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("model: PAC2002"), std::string::npos) << r.out;
+}
+
+TEST(TirConvert, UnitsSiRewritesInSiAndEvaluatesTheSame) {
+  const fs::path dir = tmp_dir();
+  const fs::path mm = testing::test_data("tir-variants/mf61_mm_kN_deg.tir");
+  const fs::path out = dir / "mf61_si.tir";
+  ASSERT_EQ(run("tir convert --units si " + mm.string() + " " + out.string(), dir / "stderr.txt"),
+            0)
+      << slurp(dir / "stderr.txt");
+  const tir::TirFile f = tir::read_tir(out);
+  EXPECT_EQ(f.text("UNITS", "LENGTH"), "meter");
+  EXPECT_EQ(f.text("UNITS", "FORCE"), "newton");
+  EXPECT_EQ(f.text("UNITS", "ANGLE"), "radians");
+  const auto a = mf::load_mf_parameters(testing::tyre_file("MagicFormula61_Parameters.tir")).params;
+  const auto b = mf::load_mf_parameters(out).params;
+  EXPECT_NEAR(b.unloaded_radius_m, a.unloaded_radius_m, 1e-12);
+  EXPECT_NEAR(b.fnomin_n, a.fnomin_n, 1e-9);
+  EXPECT_NEAR(b.alpmax_rad, a.alpmax_rad, 1e-12);
+  mf::MfInput<double> x;
+  x.fz_n = 5000.0;
+  x.kappa = -0.04;
+  x.alpha_rad = 0.06;
+  x.vx_mps = 25.0;
+  const auto ra = mf::evaluate(a, x, mf::MfOptions{});
+  const auto rb = mf::evaluate(b, x, mf::MfOptions{});
+  EXPECT_NEAR(rb.fy_n, ra.fy_n, 1e-9 * std::fabs(ra.fy_n));
+  EXPECT_NEAR(rb.mz_nm, ra.mz_nm, 1e-9 * std::fabs(ra.mz_nm));
+  EXPECT_NEAR(rb.rl_m, ra.rl_m, 1e-12);
 }
 
 }  // namespace
