@@ -340,7 +340,7 @@ TEST(FitCommand, Pac2002StagedFitFromSynthesizedData) {
       << slurp(err);
   // The wrong model for the start file is refused with a message: an MF 6.1 file is not refitted
   // as PAC2002 (the other way round works: Mf61RefitOfAPac2002File).
-  const auto mf61 = tread::testing::refdata("tir/MagicFormula61_Parameters.tir");
+  const auto mf61 = tread::testing::tyre_file("MagicFormula61_Parameters.tir");
   EXPECT_NE(run("fit --model pac2002 --start " + mf61.string() + " --input " + data.string() +
                     " --output " + (dir / "wrong.tir").string(),
                 err),
@@ -352,7 +352,7 @@ TEST(FitCommand, Pac2002StagedFitFromSynthesizedData) {
 // --start PAC2002.tir, written as an MF 6.1 file (FITTYP 61, PAC2002-only keys removed) whose
 // curves follow the PAC2002 tyre's; the fit error is reported per channel and load.
 TEST(FitCommand, Mf61RefitOfAPac2002File) {
-  const auto tir = tread::testing::refdata("tir/chrono_VW_mf_185_80R14_PAC2002.tir");
+  const auto tir = tread::testing::tyre_file("chrono_VW_mf_185_80R14_PAC2002.tir");
   const auto dir = tmp_dir();
   const auto data = dir / "refit_data.csv";
   const auto out_tir = dir / "refit_mf61.tir";

@@ -142,7 +142,7 @@ void write(const std::filesystem::path& path, const std::string& text) {
 }
 
 TEST(MfCommand, FailingEvalLeavesNoPartialOutput) {
-  const auto tir = tread::testing::refdata("tir/MagicFormula61_Parameters.tir");
+  const auto tir = tread::testing::tyre_file("MagicFormula61_Parameters.tir");
   const auto dir = tmp_dir() / "partial";
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
@@ -169,7 +169,7 @@ TEST(MfCommand, FailingEvalLeavesNoPartialOutput) {
             0);
   EXPECT_EQ(slurp(out), "previous\n");
   // pac eval too.
-  const auto json = tread::testing::refdata("tir/chrono_HMMWV_Pac89Tire.json");
+  const auto json = tread::testing::test_data("tyres/chrono_HMMWV_Pac89Tire.json");
   EXPECT_NE(run("pac eval --json " + json.string() + " --input " + bad.string() + " --output " +
                     out.string(),
                 dir / "err3.txt"),
@@ -182,7 +182,7 @@ TEST(MfCommand, FailingEvalLeavesNoPartialOutput) {
 }
 
 TEST(MfCommand, DegreesInARadianColumnAreCountedOrRefusedWithStrict) {
-  const auto tir = tread::testing::refdata("tir/MagicFormula61_Parameters.tir");
+  const auto tir = tread::testing::tyre_file("MagicFormula61_Parameters.tir");
   const auto dir = tmp_dir();
   const auto in = dir / "alpha_degrees.csv";
   write(in,
@@ -233,7 +233,7 @@ TEST(MfCommand, DegreesInARadianColumnAreCountedOrRefusedWithStrict) {
 }
 
 TEST(MfCommand, SaeFileWithTtcNamesEqualsIsoWFile) {
-  const auto tir = tread::testing::refdata("tir/MagicFormula61_Parameters.tir");
+  const auto tir = tread::testing::tyre_file("MagicFormula61_Parameters.tir");
   const auto dir = tmp_dir();
   // The same two physical situations, written twice: SAE axes with TTC names, units and ';', and
   // ISO-W with SI names.
@@ -291,8 +291,8 @@ TEST(MfCommand, SaeFileWithTtcNamesEqualsIsoWFile) {
 // The PAC2002 file through `mf eval` and a PAC89 tyre through `pac eval` (no file holds both
 // coefficient sets): for the same physical situations both commands give the signs of ISO-W.
 TEST(MfCommand, PacEvalAndMfEvalAgreeOnSigns) {
-  const auto pac2002 = tread::testing::refdata("tir/chrono_VW_mf_185_80R14_PAC2002.tir");
-  const auto pac89 = tread::testing::refdata("tir/chrono_HMMWV_Pac89Tire.json");
+  const auto pac2002 = tread::testing::tyre_file("chrono_VW_mf_185_80R14_PAC2002.tir");
+  const auto pac89 = tread::testing::test_data("tyres/chrono_HMMWV_Pac89Tire.json");
   const auto dir = tmp_dir();
   const auto in = dir / "signs.csv";
   // Rows: α > 0, α < 0, κ > 0 (drive), κ < 0 (brake).
@@ -333,12 +333,15 @@ TEST(MfCommand, PacEvalAndMfEvalAgreeOnSigns) {
   EXPECT_EQ(model.at(0, "Fy_N"), -pac.at(0, "Fy_N"));
   EXPECT_EQ(model.at(0, "Mz_Nm"), -pac.at(0, "Mz_Nm"));
   EXPECT_EQ(model.at(2, "Fx_N"), pac.at(2, "Fx_N"));
-  // A Magic Formula file holds no PAC89 coefficients: an error, not a tyre of zeros.
+  // A Magic Formula file holds no PAC89 coefficients: an error naming its model, not a tyre of
+  // zeros.
   EXPECT_NE(run("pac eval --tir " + pac2002.string() + " --input " + in.string() + " --output " +
                     (dir / "signs_zero.csv").string(),
                 dir / "signs_zero.txt"),
             0);
-  EXPECT_NE(slurp(dir / "signs_zero.txt").find("no PAC89/PAC94 coefficients"), std::string::npos)
+  EXPECT_NE(slurp(dir / "signs_zero.txt")
+                .find("this is a PAC2002 file, not PAC89/PAC94: use tread mf eval"),
+            std::string::npos)
       << slurp(dir / "signs_zero.txt");
   EXPECT_FALSE(std::filesystem::exists(dir / "signs_zero.csv"));
 }
@@ -346,7 +349,7 @@ TEST(MfCommand, PacEvalAndMfEvalAgreeOnSigns) {
 TEST(MfCommand, PlotAtGivenLoadsWarnsAboutInvertedCurves) {
   const auto dir = tmp_dir();
   tread::tir::TirFile file =
-      tread::tir::read_tir(tread::testing::refdata("tir/MagicFormula61_Parameters.tir"));
+      tread::tir::read_tir(tread::testing::tyre_file("MagicFormula61_Parameters.tir"));
   file.set("LONGITUDINAL_COEFFICIENTS", "PDX2", -1.0);  // μx through zero at 14600 N < FZMAX
   file.set("LATERAL_COEFFICIENTS", "PKY1", 28.3155);    // cornering stiffness of the wrong sign
   const auto tir = dir / "inverted.tir";

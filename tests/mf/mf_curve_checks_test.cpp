@@ -15,7 +15,7 @@ namespace {
 
 std::vector<std::string> warnings_with(const char* section, const char* key, double value) {
   tread::tir::TirFile file =
-      tread::tir::read_tir(tread::testing::refdata("tir/MagicFormula61_Parameters.tir"));
+      tread::tir::read_tir(tread::testing::tyre_file("MagicFormula61_Parameters.tir"));
   if (key != nullptr) file.set(section, key, value);
   const auto p = tread::mf::mf_parameters_from_tir(file).params;
   return tread::mf::curve_warnings(p, tread::mf::MfOptions{}, {2000.0, 4000.0, 6000.0}, 16.7);
