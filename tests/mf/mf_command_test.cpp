@@ -333,12 +333,15 @@ TEST(MfCommand, PacEvalAndMfEvalAgreeOnSigns) {
   EXPECT_EQ(model.at(0, "Fy_N"), -pac.at(0, "Fy_N"));
   EXPECT_EQ(model.at(0, "Mz_Nm"), -pac.at(0, "Mz_Nm"));
   EXPECT_EQ(model.at(2, "Fx_N"), pac.at(2, "Fx_N"));
-  // A Magic Formula file holds no PAC89 coefficients: an error, not a tyre of zeros.
+  // A Magic Formula file holds no PAC89 coefficients: an error naming its model, not a tyre of
+  // zeros.
   EXPECT_NE(run("pac eval --tir " + pac2002.string() + " --input " + in.string() + " --output " +
                     (dir / "signs_zero.csv").string(),
                 dir / "signs_zero.txt"),
             0);
-  EXPECT_NE(slurp(dir / "signs_zero.txt").find("no PAC89/PAC94 coefficients"), std::string::npos)
+  EXPECT_NE(slurp(dir / "signs_zero.txt")
+                .find("this is a PAC2002 file, not PAC89/PAC94: use tread mf eval"),
+            std::string::npos)
       << slurp(dir / "signs_zero.txt");
   EXPECT_FALSE(std::filesystem::exists(dir / "signs_zero.csv"));
 }
