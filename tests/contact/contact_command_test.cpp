@@ -20,7 +20,9 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path tmp_dir() {
-  return tread::testing::test_dir("contact_command_test");
+  // One scratch directory per test case: CTest runs the cases of this binary in parallel.
+  return tread::testing::test_dir(std::string("contact_command_test_") +
+                                  ::testing::UnitTest::GetInstance()->current_test_info()->name());
 }
 
 int run(const std::string& args, const fs::path& out, const fs::path& err) {

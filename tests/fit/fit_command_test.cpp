@@ -25,7 +25,9 @@
 namespace {
 
 std::filesystem::path tmp_dir() {
-  return tread::testing::test_dir("fit_command_test");
+  // One scratch directory per test case: CTest runs the cases of this binary in parallel.
+  return tread::testing::test_dir(std::string("fit_command_test_") +
+                                  ::testing::UnitTest::GetInstance()->current_test_info()->name());
 }
 
 int run(const std::string& args, const std::filesystem::path& stderr_file) {

@@ -63,7 +63,15 @@ Rows check_output(const fs::path& csv, const std::string& what) {
   std::ifstream in(csv);
   std::string line;
   Rows rows;
-  if (!std::getline(in, line)) {
+  // Skip the leading '#' lines (the axes note), then the header.
+  bool have_header = false;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] != '#') {
+      have_header = true;
+      break;
+    }
+  }
+  if (!have_header) {
     ADD_FAILURE() << what << ": no header in " << csv;
     return rows;
   }

@@ -38,7 +38,9 @@ CommandResult run(const std::string& args) {
 }
 
 std::filesystem::path tmp_dir() {
-  return tread::testing::test_dir("profile_command_test");
+  // One scratch directory per test case: CTest runs the cases of this binary in parallel.
+  return tread::testing::test_dir(std::string("profile_command_test_") +
+                                  ::testing::UnitTest::GetInstance()->current_test_info()->name());
 }
 
 TEST(ProfileCommandGolden, TableReproducesTheSeedAppendix) {

@@ -18,7 +18,9 @@
 namespace {
 
 std::filesystem::path tmp_dir() {
-  return tread::testing::test_dir("pac_plot_test");
+  // One scratch directory per test case: CTest runs the cases of this binary in parallel.
+  return tread::testing::test_dir(std::string("pac_plot_test_") +
+                                  ::testing::UnitTest::GetInstance()->current_test_info()->name());
 }
 
 tread::pac::PacParams<double> hmmwv() {

@@ -22,8 +22,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// One scratch directory per test case: CTest runs the cases of this binary in parallel.
 fs::path tmp_dir() {
-  return testing::test_dir("tir_command_test");
+  return testing::test_dir(std::string("tir_command_test_") +
+                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
 }
 
 int run(const std::string& args, const fs::path& stderr_file) {
@@ -165,7 +167,7 @@ double number_after(const std::string& text, const std::string& label) {
   return std::stod(text.substr(at + label.size()));
 }
 
-TEST(TirInfo, Mf61SampleShowsModelLimitsAndFigures) {
+TEST(TirInfoCommand, Mf61SampleShowsModelLimitsAndFigures) {
   const fs::path tir = testing::tyre_file("MagicFormula61_Parameters.tir");
   const Output r = info(tir);
   ASSERT_EQ(r.status, 0) << r.out;
@@ -187,7 +189,7 @@ TEST(TirInfo, Mf61SampleShowsModelLimitsAndFigures) {
   EXPECT_NEAR(number_after(r.out, "slip stiffness Kxκ: "), f.kxk_n, 1e-5 * f.kxk_n);
 }
 
-TEST(TirInfo, UnitsAreConvertedAndSaid) {
+TEST(TirInfoCommand, UnitsAreConvertedAndSaid) {
   const Output si = info(testing::tyre_file("MagicFormula61_Parameters.tir"));
   const Output mm = info(testing::test_data("tir-variants/mf61_mm_kN_deg.tir"));
   ASSERT_EQ(mm.status, 0) << mm.out;
@@ -201,7 +203,7 @@ TEST(TirInfo, UnitsAreConvertedAndSaid) {
   }
 }
 
-TEST(TirInfo, OtherModelsAndDefectiveFilesAreNamed) {
+TEST(TirInfoCommand, OtherModelsAndDefectiveFilesAreNamed) {
   Output r = info(testing::tyre_file("chrono_HMMWV_Pac89Tire.tir"));
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_NE(r.out.find("PAC89"), std::string::npos) << r.out;
