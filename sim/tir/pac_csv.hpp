@@ -8,10 +8,11 @@
 // cells, an input cell that is not a finite number, a non-finite output under status ok.
 // Output: a '#' line naming the axes, then in_Fz_N, in_kappa, in_alpha_rad, in_gamma_rad, Fx_N,
 // Fy_N, Mz_Nm, Mx_Nm, My_Nm (17 significant digits) and status (PacOutput::status as text: "ok",
-// "out of range", "non-finite result" where an output came out NaN/inf and was written as 0). With `iso_w` (the default, as
-// `tread mf eval`) the outputs are in ISO-W axes, converted by pac::to_iso_w(): for the same
-// physical situation Fy and Mz have the signs `tread mf eval` gives (α > 0: Fy < 0, Mz > 0);
-// without it, in the PAC89/PAC94 coefficient set's own ("modified SAE") axes.
+// "out of range", "non-finite result" where an output came out NaN/inf and was written as 0). With
+// `iso_w` (the default, as `tread mf eval`) the outputs are in ISO-W axes, converted by
+// pac::to_iso_w(): for the same physical situation Fy and Mz have the signs `tread mf eval` gives
+// (α > 0: Fy < 0, Mz > 0); without it, in the PAC89/PAC94 coefficient set's own ("modified SAE")
+// axes.
 
 #include <cstddef>
 #include <iosfwd>

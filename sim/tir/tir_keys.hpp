@@ -57,7 +57,7 @@ inline constexpr Dimension kInertia{2, 0, 0, 1, 0};  ///< mass·length²
 /// Bits of the models a key belongs to.
 using ModelSet = std::uint8_t;
 namespace model {
-inline constexpr ModelSet kOptional = 0;  ///< in no model: optional everywhere
+inline constexpr ModelSet kOptional = 0;        ///< in no model: optional everywhere
 inline constexpr ModelSet kMf52 = 1U << 0U;     ///< MF-Tyre 5.2 (FITTYP 6/21/52)
 inline constexpr ModelSet kPac2002 = 1U << 1U;  ///< Adams PAC2002 (no FITTYP)
 inline constexpr ModelSet kMf61 = 1U << 2U;

@@ -30,8 +30,7 @@ TEST(MfParametersFromTir, ReadsValuesAndListsMissingKeys) {
 }
 
 TEST(MfParametersFromTir, CompleteMf62FileReportsNoMissingKeys) {
-  const MfTirParameters r =
-      load_mf_parameters(testing::tyre_file("MagicFormula62_Parameters.tir"));
+  const MfTirParameters r = load_mf_parameters(testing::tyre_file("MagicFormula62_Parameters.tir"));
   EXPECT_EQ(r.params.fit_type, FitType::mf62);
   EXPECT_TRUE(r.missing.empty()) << r.warning;
   EXPECT_TRUE(r.warning.empty()) << r.warning;
