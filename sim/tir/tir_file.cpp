@@ -93,26 +93,9 @@ auto find_in(Sections& sections, std::string_view section, std::string_view key)
   return nullptr;
 }
 
-std::string entry_line(const Entry& e) {
-  std::string out = e.key;
-  out += " = ";
-  if (e.is_quoted()) {
-    out += e.quote;
-    out += e.value;
-    out += e.quote;
-  } else {
-    out += e.value;
-  }
-  if (!e.comment.empty()) {
-    out += "  ";
-    out += e.comment;
-  }
-  return out;
-}
-
 void write_line(std::string& out, const Line& l, const std::string& eol) {
   if (l.kind == Line::Kind::kEntry) {
-    out += l.entry.source.empty() ? entry_line(l.entry) : l.entry.source;
+    out += l.entry.source.empty() ? entry_text(l.entry) : l.entry.source;
   } else {
     out += l.text;
   }
@@ -151,6 +134,24 @@ TirError::TirError(std::string file, int line, const std::string& message)
     : std::runtime_error(file + ":" + std::to_string(line) + ": " + message),
       file_(std::move(file)),
       line_(line) {}
+
+std::string entry_text(const Entry& e, std::size_t key_width, bool with_comment) {
+  std::string out = e.key;
+  if (out.size() < key_width) out.append(key_width - out.size(), ' ');
+  out += key_width > 0 ? "= " : " = ";
+  if (e.is_quoted()) {
+    out += e.quote;
+    out += e.value;
+    out += e.quote;
+  } else {
+    out += e.value;
+  }
+  if (with_comment && !e.comment.empty()) {
+    out += "  ";
+    out += e.comment;
+  }
+  return out;
+}
 
 bool iequals(std::string_view a, std::string_view b) noexcept {
   return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(),
@@ -246,7 +247,7 @@ std::optional<double> entry_number(const Entry* e, const std::string& origin) {
        "value of '" + e->key + "' is not a number: " +
            (e->is_quoted() ? std::string(1, e->quote) + e->value + e->quote : e->value));
 }
-std::optional<std::string> entry_text(const Entry* e) {
+std::optional<std::string> entry_value(const Entry* e) {
   if (e == nullptr) return std::nullopt;
   return e->value;
 }
@@ -259,10 +260,10 @@ std::optional<double> TirFile::number_any(std::string_view key) const {
   return entry_number(find_any(key), origin_);
 }
 std::optional<std::string> TirFile::text(std::string_view section, std::string_view key) const {
-  return entry_text(find(section, key));
+  return entry_value(find(section, key));
 }
 std::optional<std::string> TirFile::text_any(std::string_view key) const {
-  return entry_text(find_any(key));
+  return entry_value(find_any(key));
 }
 
 Entry& TirFile::upsert(std::string_view section, std::string_view key) {

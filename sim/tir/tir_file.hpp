@@ -169,6 +169,11 @@ std::optional<double> parse_number(std::string_view token) noexcept;
 /// Shortest text that parses back to exactly `value`.
 std::string format_number(double value);
 
+/// `KEY = value  $comment` as the writer prints a changed entry; with `key_width` > 0 the key is
+/// padded to that width before `= ` (the normalised layout), and `with_comment` = false leaves the
+/// comment out.
+std::string entry_text(const Entry& entry, std::size_t key_width = 0, bool with_comment = true);
+
 /// ASCII case-insensitive equality, as used for section and key lookups.
 bool iequals(std::string_view a, std::string_view b) noexcept;
 

@@ -23,20 +23,6 @@ std::string_view row_without_comment(std::string_view row) noexcept {
   return trim(c == std::string_view::npos ? row : row.substr(0, c));
 }
 
-void append_entry(std::string& out, const Entry& e) {
-  out += e.key;
-  if (e.key.size() < kKeyWidth) out.append(kKeyWidth - e.key.size(), ' ');
-  out += "= ";
-  if (e.is_quoted()) {
-    out += e.quote;
-    out += e.value;
-    out += e.quote;
-  } else {
-    out += e.value;
-  }
-  out += '\n';
-}
-
 }  // namespace
 
 std::string write_normalised_tir(const TirFile& file, const std::string& note) {
@@ -52,7 +38,8 @@ std::string write_normalised_tir(const TirFile& file, const std::string& note) {
     out += "]\n";
     for (const Line& l : s.lines) {
       if (l.kind == Line::Kind::kEntry) {
-        append_entry(out, l.entry);
+        out += entry_text(l.entry, kKeyWidth, /*with_comment=*/false);
+        out += '\n';
       } else if (l.kind == Line::Kind::kTableRow) {
         const std::string_view row = row_without_comment(l.text);
         if (!row.empty()) {
