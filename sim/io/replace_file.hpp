@@ -4,7 +4,8 @@
 // The text goes to a temporary file beside the target (same directory, so the final rename stays
 // on one file system); commit() closes it and renames it over the target. Without commit() — an
 // exception while writing, an early return — the destructor removes the temporary, and whatever
-// was at the target before (an older output, or nothing) is left as it was.
+// was at the target before (an older output, or nothing) is left as it was. A target that exists
+// and is not a regular file (/dev/stdout, a named pipe) is written directly instead.
 
 #include <filesystem>
 #include <fstream>
@@ -31,6 +32,7 @@ class ReplaceFile {
   std::filesystem::path temporary_;
   std::ofstream out_;
   bool committed_ = false;
+  bool direct_ = false;  ///< the target is not a regular file: written in place
 };
 
 }  // namespace tread::host

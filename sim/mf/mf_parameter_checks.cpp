@@ -32,9 +32,15 @@ void positive(const tir::TirFile& file, const char* key, double v, const char* w
 void ordered(const tir::TirFile& file, const char* min_key, double min, const char* max_key,
              double max) {
   if (!(max > min)) {
-    fail(file, max_key,
-         std::string(max_key) + " = " + value_text(max) + " is not above " + min_key + " = " +
-             value_text(min) + " (the range is empty)");
+    // Name the line of a key the file has; a key it lacks took its default.
+    const bool has_max = file.find_any(max_key) != nullptr;
+    const bool has_min = file.find_any(min_key) != nullptr;
+    const auto describe = [](const char* key, double v, bool present) {
+      return std::string(key) + " = " + value_text(v) + (present ? "" : " (absent: default)");
+    };
+    fail(file, has_max || !has_min ? max_key : min_key,
+         describe(max_key, max, has_max) + " is not above " + describe(min_key, min, has_min) +
+             " (the range is empty)");
   }
 }
 

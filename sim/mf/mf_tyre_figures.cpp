@@ -1,7 +1,5 @@
 #include "mf/mf_tyre_figures.hpp"
 
-#include <cmath>
-
 #include "mf/mf_evaluate.hpp"
 
 namespace tread::mf {
@@ -30,9 +28,8 @@ MfTyreFigures tyre_figures(const MfParameters<double>& params, const MfOptions& 
     in.alpha_rad = pt.alpha_rad;
     in.vx_mps = f.vx_mps;
     const MfOutput<double> out = evaluate(params, in, o);
-    for (const double v : {out.fx_n, out.fy_n, out.mz_nm, out.re_m, out.rl_m}) {
-      if (!std::isfinite(v)) f.finite = false;
-    }
+    // evaluate() writes a non-finite output as 0 and says so in the status.
+    if (out.status == Status::non_finite) f.finite = false;
     return out;
   };
 

@@ -61,7 +61,12 @@ PacCoefficients pac_from_tir(const TirFile& file) {
   read_set(file, kAli, 'C', out.params.c, out.missing);
   const std::size_t total = out.params.a.size() + out.params.b.size() + out.params.c.size();
   if (out.missing.size() == total) {
-    throw TirError(file.origin(), 0,
+    // The line that made it a PAC file, else the first section's.
+    const Entry* format = file.find_any("PROPERTY_FILE_FORMAT");
+    const int line = format != nullptr          ? format->line
+                     : !file.sections().empty() ? file.sections().front().line
+                                                : 0;
+    throw TirError(file.origin(), line,
                    "no PAC coefficients: expected [LATERAL_COEFFICIENTS] A0…, "
                    "[LONGITUDINAL_COEFFICIENTS] B0…, [ALIGNING_COEFFICIENTS] C0…");
   }

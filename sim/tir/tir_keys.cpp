@@ -336,8 +336,8 @@ constexpr std::array kTable = std::to_array<KeyInfo>({
     {"DAMP_LAT", kNone, kOptional},
     {"DAMP_YAW", kNone, kOptional},
     {"DAMP_WINDUP", kNone, kOptional},
-    {"DAMP_RESIDUAL", kNone, kOptional},
-    {"DAMP_VLOW", kNone, kOptional},
+    {"DAMP_RESIDUAL", kTime, kOptional},  // damping per stiffness: s
+    {"DAMP_VLOW", kTime, kOptional},      // damping per stiffness: s
     {"Q_BVX", kNone, kOptional},
     {"Q_BVT", kNone, kOptional},
     {"PCMZ1", kNone, kOptional},

@@ -237,4 +237,17 @@ TEST(ReplaceFile, CommitReplacesAndAbandonLeavesTheOldFile) {
   EXPECT_THROW(tread::host::ReplaceFile(dir / "no_such_dir" / "x.csv"), std::runtime_error);
 }
 
+// A target that is not a regular file (here /dev/null, as /dev/stdout would be) is written in
+// place: no temporary beside it, and the device stays a device.
+TEST(ReplaceFile, NonRegularTargetIsWrittenInPlace) {
+  const std::filesystem::path null_device = "/dev/null";
+  {
+    tread::host::ReplaceFile f(null_device);
+    EXPECT_EQ(f.temporary(), null_device);
+    f.stream() << "discarded\n";
+    f.commit();
+  }
+  EXPECT_EQ(std::filesystem::status(null_device).type(), std::filesystem::file_type::character);
+}
+
 }  // namespace

@@ -42,6 +42,13 @@ void fuzz(const std::string& tir_name, int cases) {
       o.side = (i % 2 == 0) ? MountedSide::left : MountedSide::right;
       o.combined = (i % 3 != 0);
       const MfOutput<T> out = evaluate(p, in, o);
+      // evaluate() writes a non-finite output as 0: its status says whether one came out.
+      if (out.status == Status::non_finite && ++bad <= 10) {
+        ADD_FAILURE() << tir_name << " mode " << mode << ": non-finite output for Fz " << in.fz_n
+                      << " kappa " << in.kappa << " alpha " << in.alpha_rad << " gamma "
+                      << in.gamma_rad << " Vx " << in.vx_mps << " phit " << in.phit_1pm << " P "
+                      << in.p_pa;
+      }
       for (const auto& c : columns) {
         const T v = out.*(c.member);
         if (!std::isfinite(v)) {

@@ -175,6 +175,11 @@ TEST(MfParametersFromTir, DefectiveParametersAreRefused) {
             "d.tir:4: LONGVL = 0 must be > 0 (speeds are taken relative to it)");
   EXPECT_EQ(refused("[M]\nFITTYP = 6\nPCX1 = 1.6\nALPMIN = 0.5\nALPMAX = 0.5\n"),
             "d.tir:5: ALPMAX = 0.5 is not above ALPMIN = 0.5 (the range is empty)");
+  // A range whose other end took its default: the line of the key the file has, and which one
+  // is the default (a truck tyre with FZMIN above the book tyre's FZMAX and no FZMAX).
+  EXPECT_EQ(refused("[M]\nFITTYP = 6\nPCX1 = 1.6\nFNOMIN = 20000\nFZMIN = 12000\n"),
+            "d.tir:5: FZMAX = 10000 (absent: default) is not above FZMIN = 12000 (the range is "
+            "empty)");
   // MF 5.2 has no pressure terms: a zero NOMPRES there is not an error.
   EXPECT_EQ(refused("[M]\nFITTYP = 6\nPCX1 = 1.6\nNOMPRES = 0\n"), "accepted");
   const MfTirParameters w = mf_parameters_from_tir(

@@ -94,7 +94,8 @@ TEST(TirModel, PacLoaderRoutesAndRefuses) {
     (void)pac_from_tir(parse_tir("[MODEL]\nPROPERTY_FILE_FORMAT = 'PAC94'\n", "e.tir"));
     ADD_FAILURE() << "file without coefficients accepted";
   } catch (const TirError& e) {
-    EXPECT_EQ(std::string(e.what()).rfind("e.tir:0: no PAC coefficients", 0), 0U) << e.what();
+    // The line of the PROPERTY_FILE_FORMAT that made it a PAC file.
+    EXPECT_EQ(std::string(e.what()).rfind("e.tir:2: no PAC coefficients", 0), 0U) << e.what();
   }
 }
 
