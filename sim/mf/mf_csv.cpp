@@ -182,8 +182,8 @@ MfCsvReport evaluate_csv(const MfParameters<double>& params, const MfOptions& op
     const std::string non_finite = csv.use_float ? write_row(out, values, params_f, options)
                                                  : write_row(out, values, params, options);
     if (!non_finite.empty()) {
-      // Never a NaN or Inf under status ok: a defective parameter set (e.g. a zero vertical
-      // stiffness or BREFF/DREFF/FREFF) that the loader let through.
+      // Never a NaN or Inf under status ok. The core already writes a non-finite output as 0
+      // with Status::non_finite; this is the last check where numbers leave the program.
       throw tir::TirError(in_name, row->line,
                           non_finite +
                               " under status ok: the tyre's parameters give no finite "

@@ -63,7 +63,8 @@ std::size_t evaluate_pac_csv(const pac::PacParams<double>& params, const PacCsvO
     const bool finite = std::isfinite(r.fx_n) && std::isfinite(r.fy_n) && std::isfinite(r.mz_nm) &&
                         std::isfinite(r.mx_nm) && std::isfinite(r.my_nm);
     if (!finite && r.status == Status::ok) {
-      // Never a NaN or Inf under status ok (a defective coefficient set).
+      // Never a NaN or Inf under status ok. The core already writes a non-finite output as 0
+      // with Status::non_finite; this is the last check where numbers leave the program.
       throw TirError(in_name, row->line,
                      "the coefficients give a non-finite output under status ok for this row");
     }
