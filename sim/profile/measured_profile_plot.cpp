@@ -56,7 +56,7 @@ void plot_measured_profile(const SampledProfile& measured, const std::vector<dou
   script += "set datafile missing '?'\n";
   script += "set multiplot layout " + std::string(nominal != nullptr ? "4" : "2") + ",1 title " +
             host::gnuplot_quote(title) + "\n";
-  script += "set grid\nset key left top\n";
+  script += "set grid\nset key right top\n";
   script += "set xlabel 'y (mm), + toward the field side'\n";
   script += "set ylabel 'z (mm)'\n";
   if (nominal != nullptr) {
