@@ -171,8 +171,8 @@ void inspect_profile(std::ostream& out, const ProfileOptions& o, const profile::
   const profile::SampledProfile& p = f.profile;
   out << "file      " << o.input << "\n";
   out << "format    " << profile::format_name(f.format) << "\n";
-  out << "role      " << profile::role_name(f.role) << (o.role == "auto" ? " (by the file)" : "")
-      << "\n";
+  out << "role      " << profile::role_name(f.role)
+      << (o.role == "auto" ? " (--role auto: .prr, .ban and --format prr are rails)" : "") << "\n";
   if (o.z_down || o.mirror_y) {
     out << "axes      " << (o.z_down ? "z negated (--z-down) " : "")
         << (o.mirror_y ? "y mirrored (--mirror-y)" : "") << "\n";
