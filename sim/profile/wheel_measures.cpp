@@ -167,6 +167,12 @@ SampledWheelMeasures measure_wheel(const SampledProfile& p) {
       tip = i;
     }
   }
+  if (tip == 0) {
+    std::ostringstream msg;
+    msg << p.name << ": the highest flange point is the profile's first point (y = " << p.y_mm[0]
+        << " mm): the flange tip is not in the profile";
+    throw std::runtime_error(msg.str());
+  }
   FlangeMeasures& f = m.flange;
   const Tip t = refine_tip(p, tip);
   f.tip_y_mm = t.y;

@@ -44,9 +44,9 @@ struct SampledWheelMeasures {
 /// Measures a sampled wheel profile (this project's wheel convention) by linear interpolation
 /// between its points: the tip is the highest point with y < -30 (refined between the points where
 /// the neighbouring segments meet in a cusp), the face points are the first crossings of the levels
-/// from the tip toward the tread. Throws std::runtime_error naming the
-/// profile if it does not reach the taping line y = 0 or the flange (y < -30), or its flange face
-/// does not cross the levels.
+/// from the tip toward the tread. Throws std::runtime_error naming the profile if it does not
+/// reach the taping line y = 0 or the flange (y < -30), its highest flange point is its first point
+/// (no tip), or its flange face does not cross the levels.
 SampledWheelMeasures measure_wheel(const SampledProfile& wheel);
 
 /// z at y by linear interpolation (y within the profile's range; throws std::out_of_range naming

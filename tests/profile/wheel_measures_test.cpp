@@ -90,6 +90,18 @@ TEST(SampledWheelMeasures, RefusesAProfileWithoutFlangeOrTapingLine) {
               std::string::npos)
         << e.what();
   }
+  SampledProfile no_tip = w.sample(0.5);
+  no_tip.name = "no-tip";
+  no_tip.y_mm.erase(no_tip.y_mm.begin(), no_tip.y_mm.begin() + 40);  // from y = -50
+  no_tip.z_mm.erase(no_tip.z_mm.begin(), no_tip.z_mm.begin() + 40);
+  try {
+    (void)measure_wheel(no_tip);
+    FAIL() << "expected an error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("no-tip: the highest flange point is the profile's first"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(SyntheticWear, FlangeFaceMovedByTwoMillimetresGivesTheThinFlangeOfTheStandard) {
