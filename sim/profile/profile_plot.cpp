@@ -70,7 +70,7 @@ void plot_wheel_profile(const WheelProfile& wheel, double step_mm, const std::st
       "unset multiplot\n",
       png_path.c_str(), wheel.name().c_str(), d.c_str(), d.c_str(), wheel.y_max_mm(),
       wheel.parameters().flange_height_mm, wheel.parameters().flange_thickness_mm,
-      to_string(wheel.parameters().outer_slope), d.c_str(), d.c_str(), d.c_str());
+      to_string(wheel.parameters().outer_slope).c_str(), d.c_str(), d.c_str(), d.c_str());
   host::run_gnuplot_with_data(script, png_path, data);
 }
 

@@ -56,7 +56,7 @@ void write_profile_table(std::ostream& out, const WheelProfile& wheel, double st
   const int decimals = step_decimals(step_mm);
   out << "profile " << to_string(p.family) << "\n\n"
       << "e = " << p.flange_thickness_mm << " mm h = " << p.flange_height_mm << " mm outer slope "
-      << to_string(p.outer_slope) << (p.outer_slope == OuterSlope::k1in15 ? "" : " %") << " width "
+      << to_string(p.outer_slope) << (p.outer_slope.uic_1in15 ? "" : " %") << " width "
       << p.width_mm << " mm" << (p.chamfer ? "" : " no chamfer") << "\n\n"
       << "y [mm]\tz [mm]\ttan\n";
   for (const double y : descending_grid(wheel, step_mm)) {

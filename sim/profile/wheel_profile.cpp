@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <limits>
 #include <numbers>
 #include <sstream>
@@ -34,17 +35,7 @@ bool near(double a, double b) {
 }  // namespace
 
 double outer_slope_gradient(OuterSlope slope) {
-  switch (slope) {
-    case OuterSlope::k1in15:
-      return 1.0 / 15.0;
-    case OuterSlope::k6_7:
-      return 0.067;
-    case OuterSlope::k10:
-      return 0.10;
-    case OuterSlope::k15:
-      return 0.15;
-  }
-  return 0.0;
+  return slope.gradient;
 }
 
 const char* to_string(WheelFamily family) {
@@ -59,18 +50,13 @@ const char* to_string(WheelFamily family) {
   return "?";
 }
 
-const char* to_string(OuterSlope slope) {
-  switch (slope) {
-    case OuterSlope::k1in15:
-      return "1:15";
-    case OuterSlope::k6_7:
-      return "6.7";
-    case OuterSlope::k10:
-      return "10";
-    case OuterSlope::k15:
-      return "15";
+std::string to_string(OuterSlope slope) {
+  if (slope.uic_1in15) {
+    return "1:15";
   }
-  return "?";
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", 100.0 * slope.gradient);
+  return buffer;
 }
 
 WheelFamily parse_wheel_family(const std::string& text) {
@@ -87,21 +73,63 @@ WheelFamily parse_wheel_family(const std::string& text) {
                               "' (expected S1002, EPS or 1/40)");
 }
 
+namespace {
+
+/// A plain decimal number "12", "8.5", ".5" (no sign, no exponent).
+bool plain_decimal(const std::string& text) {
+  bool digit = false;
+  bool point = false;
+  for (const char c : text) {
+    if (c >= '0' && c <= '9') {
+      digit = true;
+    } else if (c == '.' && !point) {
+      point = true;
+    } else {
+      return false;
+    }
+  }
+  return digit;
+}
+
+}  // namespace
+
 OuterSlope parse_outer_slope(const std::string& text) {
+  const std::string range = "expected 1:15 (UIC S1002) or a slope from " +
+                            std::string("6.7 % to 15 % (a percentage such as 8.5 or 8.5%, or a ") +
+                            "ratio 1:N with N from 6.667 to 14.925)";
   if (text == "1:15" || text == "1/15") {
     return OuterSlope::k1in15;
   }
-  if (text == "6.7" || text == "6.7%") {
-    return OuterSlope::k6_7;
+  double gradient = 0.0;
+  std::string number = text;
+  if (!number.empty() && number.back() == '%') {
+    number.pop_back();
+    if (!number.empty() && number.back() == ' ') {
+      number.pop_back();
+    }
   }
-  if (text == "10" || text == "10%") {
-    return OuterSlope::k10;
+  if ((text.rfind("1:", 0) == 0 || text.rfind("1/", 0) == 0) && plain_decimal(text.substr(2))) {
+    const double n = std::stod(text.substr(2));
+    if (!(n > 0.0)) {
+      throw std::invalid_argument("outer slope '" + text + "': " + range);
+    }
+    if (std::fabs(n - 15.0) < 1e-12) {
+      return OuterSlope::k1in15;
+    }
+    gradient = 1.0 / n;
+  } else if (plain_decimal(number)) {
+    // The decimal as written, scaled by 10^-2 in the conversion itself: "6.7" -> 0.067 exactly.
+    gradient = std::stod(number + "e-2");
+  } else {
+    throw std::invalid_argument("outer slope '" + text + "': " + range);
   }
-  if (text == "15" || text == "15%") {
-    return OuterSlope::k15;
+  const double percent = 100.0 * gradient;
+  if (!(percent >= OuterSlope::kMinPercent - 1e-9 && percent <= OuterSlope::kMaxPercent + 1e-9)) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.4g %%", percent);
+    throw std::invalid_argument("outer slope '" + text + "' is " + buffer + ": " + range);
   }
-  throw std::invalid_argument("unknown outer slope '" + text +
-                              "' (expected 1:15, 6.7, 10 or 15 [%])");
+  return OuterSlope{gradient, false};
 }
 
 void WheelProfile::add(Piece piece, const std::string& junction_name, bool tangent) {
@@ -255,7 +283,7 @@ WheelProfile::WheelProfile(const WheelParameters& parameters) : parameters_(para
       add(arc_piece("flange root R13", root_centre, kRootRadius_mm, -1.0, 0.0, d1_y), "E1", true);
       add(polynomial_piece("S1002 throat (UIC C)", uic_s1002::kC, s, 0.0, uic_s1002::kYBC - s),
           "D1", true);
-      const bool uic_slope = parameters.outer_slope == OuterSlope::k1in15;
+      const bool uic_slope = parameters.outer_slope.uic_1in15;
       const double b1_y = uic_slope ? uic_s1002::kYAB : 32.158;
       if (s > 0.0) {
         add(polynomial_piece("S1002 tread (UIC B, shifted)", uic_s1002::kB, s, 0.0, -0.5 - s), "C1",
@@ -348,7 +376,7 @@ WheelProfile::WheelProfile(const WheelParameters& parameters) : parameters_(para
   const double front_y = parameters.width_mm - 70.0;
   const double a1_y = parameters.chamfer ? front_y - kChamfer_mm : front_y;
   const bool tangent_b1 =
-      parameters.family == WheelFamily::kS1002 && parameters.outer_slope == OuterSlope::k1in15;
+      parameters.family == WheelFamily::kS1002 && parameters.outer_slope.uic_1in15;
   add(line_piece("outer slope", b1, -p, a1_y), "B1", tangent_b1);
   if (parameters.chamfer) {
     const Point a1{a1_y, b1.z - p * (a1_y - b1.y)};
@@ -360,7 +388,7 @@ std::string WheelProfile::name() const {
   std::ostringstream o;
   o << to_string(parameters_.family) << " h" << parameters_.flange_height_mm << " e"
     << parameters_.flange_thickness_mm << " " << to_string(parameters_.outer_slope)
-    << (parameters_.outer_slope == OuterSlope::k1in15 ? "" : "%") << " w" << parameters_.width_mm
+    << (parameters_.outer_slope.uic_1in15 ? "" : "%") << " w" << parameters_.width_mm
     << (parameters_.chamfer ? "" : " no-chamfer");
   return o.str();
 }

@@ -1,6 +1,6 @@
 #pragma once
 // EN 13715:2020 wheel profiles S1002, EPS and 1/40 for every flange height h ∈ {28, 30, 32} mm and
-// flange thickness e ∈ [28.5, 32.5] mm, outer slope 1:15 / 6.7 / 10 / 15 %, wheel width 135 or
+// flange thickness e ∈ [28.5, 32.5] mm, outer slope 1:15 or any 6.7 … 15 %, wheel width 135 or
 // 140 mm, with or without the 5 x 5 mm chamfer — one parametric construction of lines, arcs,
 // polynomials and a shape-preserving interpolation, evaluable at any y (z and dz/dy).
 //
@@ -36,8 +36,27 @@ namespace tread::profile {
 
 enum class WheelFamily { kS1002, kEps, k1in40 };
 
-/// 1:15 (UIC S1002), 6.7 %, 10 % or 15 %.
-enum class OuterSlope { k1in15, k6_7, k10, k15 };
+/// The outer slope (B1 → A1): the UIC S1002 1:15 section, or any gradient from 6.7 % to 15 %
+/// (EN 13715), starting at the family's B1.
+struct OuterSlope {
+  double gradient = 1.0 / 15.0;  ///< tan of the slope (falling toward the outer face)
+  bool uic_1in15 = true;  ///< the UIC 1:15 variant (S1002: section A from the polynomial's end)
+
+  static constexpr double kMinPercent = 6.7;
+  static constexpr double kMaxPercent = 15.0;
+  /// The four values the standard's tables name.
+  static const OuterSlope k1in15;
+  static const OuterSlope k6_7;
+  static const OuterSlope k10;
+  static const OuterSlope k15;
+
+  friend bool operator==(const OuterSlope&, const OuterSlope&) = default;
+};
+
+inline constexpr OuterSlope OuterSlope::k1in15{1.0 / 15.0, true};
+inline constexpr OuterSlope OuterSlope::k6_7{0.067, false};
+inline constexpr OuterSlope OuterSlope::k10{0.10, false};
+inline constexpr OuterSlope OuterSlope::k15{0.15, false};
 
 struct WheelParameters {
   WheelFamily family = WheelFamily::kS1002;
@@ -48,12 +67,17 @@ struct WheelParameters {
   bool chamfer = true;      ///< 5 x 5 mm chamfer at the outer face
 };
 
-/// The gradient of an outer slope (1/15, 0.067, 0.10, 0.15).
+/// The gradient of an outer slope (1/15, 0.067 … 0.15).
 double outer_slope_gradient(OuterSlope slope);
-/// "S1002", "EPS", "1/40" and "1:15", "6.7", "10", "15"; parse throws std::invalid_argument.
+/// "S1002", "EPS", "1/40"; parse throws std::invalid_argument.
 const char* to_string(WheelFamily family);
-const char* to_string(OuterSlope slope);
 WheelFamily parse_wheel_family(const std::string& text);
+/// "1:15" for the UIC variant, else the percentage without the sign ("6.7", "10", "8.5").
+std::string to_string(OuterSlope slope);
+/// "1:15" / "1/15" (the UIC variant); a percentage "8.5", "8.5%" or "8.5 %"; or a ratio "1:12".
+/// A percentage is taken as the decimal it is written as (gradient = text × 10⁻², correctly
+/// rounded, so "6.7" gives exactly 0.067). Throws std::invalid_argument for malformed text and for
+/// gradients outside 6.7 … 15 %, naming the allowed range.
 OuterSlope parse_outer_slope(const std::string& text);
 
 struct ProfileValue {
@@ -128,7 +152,7 @@ class WheelProfile {
 
 /// Every standard profile: 3 families × h {28, 30, 32} × e {28.5 … 32.5 step 0.5} with the given
 /// outer slope and width (81 profiles).
-std::vector<WheelParameters> standard_wheel_parameters(OuterSlope slope = OuterSlope::k1in15,
+std::vector<WheelParameters> standard_wheel_parameters(OuterSlope slope = OuterSlope{},
                                                        double width_mm = 140.0);
 
 }  // namespace tread::profile

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 
@@ -173,6 +174,128 @@ TEST(ProfileCommand, InputFileConvertsBetweenFormats) {
   r = run("--input " + (dir / "missing.prw").string() + " --format csv");
   EXPECT_NE(r.status, 0);
   EXPECT_NE(r.out.find("missing.prw"), std::string::npos) << r.out;
+}
+
+TEST(ProfileCommand, InputInspectShowsTheFileAndItsMeasures) {
+  const auto worn = ::tread::testing::test_data("profiles/worn_s1002_example.csv");
+  const CommandResult r = run("--input " + worn.string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  for (const char* field :
+       {"format    csv", "role      wheel", "header    ", "points    701",
+        "y         -70.000 ... 70.000 mm", "spacing   min 0.2  median 0.2  max 0.2 mm",
+        "warnings  none", "Sh ", "Sd ", "qR ", "hollow_depth", "outer_slope",
+        "nominal   S1002 h28 e31.5 1:15 w140"}) {
+    EXPECT_NE(r.out.find(field), std::string::npos) << field << "\n" << r.out;
+  }
+  // A rail: top, gauge point and head width.
+  const auto prr = ::tread::testing::test_data("rail/manchester_benchmark/MBench_UIC60_v3.prr");
+  const CommandResult rail = run("--input " + prr.string());
+  ASSERT_EQ(rail.status, 0) << rail.out;
+  for (const char* field :
+       {"format    simpack", "role      rail", "top_z", "gauge_point_y", "head_width"}) {
+    EXPECT_NE(rail.out.find(field), std::string::npos) << field << "\n" << rail.out;
+  }
+  // A SIMPACK rail given as a wheel is refused by the reader, naming the file.
+  const CommandResult wrong = run("--input " + prr.string() + " --role wheel");
+  EXPECT_NE(wrong.status, 0);
+  EXPECT_NE(wrong.out.find("MBench_UIC60_v3.prr"), std::string::npos) << wrong.out;
+}
+
+/// quantity -> value from `--measure --format csv`.
+std::map<std::string, double> measures_csv(const std::string& text) {
+  std::map<std::string, double> out;
+  std::istringstream in(text);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "quantity,value,unit");
+  while (std::getline(in, line)) {
+    const auto a = line.find(',');
+    const auto b = line.find(',', a + 1);
+    out[line.substr(0, a)] = std::stod(line.substr(a + 1, b - a - 1));
+  }
+  return out;
+}
+
+TEST(ProfileCommand, MeasureOfABuiltInProfileWrittenAndReadBack) {
+  const auto dir = tmp_dir();
+  // S1002 h28 e32.5 at 0.1 mm as CSV, then measured from the file: the analytic values.
+  CommandResult r =
+      run("--family S1002 --format csv --step 0.1 --output " + (dir / "s1002.csv").string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  r = run("--input " + (dir / "s1002.csv").string() + " --measure --format csv");
+  ASSERT_EQ(r.status, 0) << r.out;
+  std::map<std::string, double> m = measures_csv(r.out);
+  EXPECT_NEAR(m["Sh"], 28.0, 0.01);
+  EXPECT_NEAR(m["Sd"], 32.5, 0.01);
+  EXPECT_NEAR(m["qR"], 10.79, 0.01);
+  EXPECT_NEAR(m["hollow_depth"], 0.0, 1e-6);
+  EXPECT_NEAR(m["outer_slope"], 100.0 / 15.0, 1e-4);
+  // Any outer slope in 6.7 … 15 %: written by the command, measured back.
+  r = run("--family 1/40 --outer-slope 1:12 --format csv --step 0.1 --output " +
+          (dir / "s12.csv").string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  r = run("--input " + (dir / "s12.csv").string() + " --measure --format csv");
+  ASSERT_EQ(r.status, 0) << r.out;
+  m = measures_csv(r.out);
+  EXPECT_NEAR(m["outer_slope"], 100.0 / 12.0, 1e-4);
+  // A z-down, mirrored copy of the same file measures the same with --z-down --mirror-y.
+  const SampledProfile p = read_profile_csv(dir / "s1002.csv");
+  SampledProfile flipped;
+  for (std::size_t i = p.y_mm.size(); i-- > 0;) {
+    flipped.y_mm.push_back(-p.y_mm[i]);
+    flipped.z_mm.push_back(-p.z_mm[i]);
+  }
+  {
+    std::ofstream out(dir / "flipped.csv");
+    write_profile_csv(out, flipped, {}, 9);
+  }
+  r = run("--input " + (dir / "flipped.csv").string() +
+          " --z-down --mirror-y --measure --format csv");
+  ASSERT_EQ(r.status, 0) << r.out;
+  m = measures_csv(r.out);
+  EXPECT_NEAR(m["Sd"], 32.5, 0.01);
+  EXPECT_NEAR(m["Sh"], 28.0, 0.01);
+}
+
+TEST(ProfileCommand, InputPlotAgainstTheNominalWritesAPng) {
+  const auto png = tmp_dir() / "worn.png";
+  std::filesystem::remove(png);
+  const auto worn = ::tread::testing::test_data("profiles/worn_s1002_example.csv");
+  const CommandResult r = run("--input " + worn.string() + " --nominal S1002:e=32.5 --output " +
+                              (tmp_dir() / "inspect.txt").string() + " --plot " + png.string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  std::ifstream in(png, std::ios::binary);
+  std::array<char, 8> magic{};
+  in.read(magic.data(), magic.size());
+  EXPECT_EQ(std::string(magic.data() + 1, 3), "PNG");
+  EXPECT_GT(std::filesystem::file_size(png), 20000u);
+  EXPECT_FALSE(std::filesystem::exists(tmp_dir() / "worn.plotdata.tsv"));
+  std::ifstream text(tmp_dir() / "inspect.txt");
+  std::stringstream all;
+  all << text.rdbuf();
+  EXPECT_NE(all.str().find("nominal   S1002 h28 e32.5 1:15 w140"), std::string::npos) << all.str();
+}
+
+TEST(ProfileCommand, OuterSlopeRangeAndBadInputOptions) {
+  CommandResult r = run("--outer-slope 8.5 --format csv --step 1");
+  EXPECT_EQ(r.status, 0) << r.out;
+  r = run("--outer-slope 16");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.out.find("6.7 % to 15 %"), std::string::npos) << r.out;
+  const auto worn = ::tread::testing::test_data("profiles/worn_s1002_example.csv");
+  r = run("--input " + worn.string() + " --role tyre");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.out.find("--role must be auto, wheel or rail"), std::string::npos) << r.out;
+  r = run("--input " + worn.string() + " --measure --format prw");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.out.find("--format with --measure must be table or csv"), std::string::npos) << r.out;
+  r = run("--measure");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.out.find("--measure and --nominal need --input"), std::string::npos) << r.out;
+  r = run("--input " + worn.string() + " --nominal S1002:slope=5 --plot " +
+          (tmp_dir() / "x.png").string());
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.out.find("6.7 % to 15 %"), std::string::npos) << r.out;
 }
 
 }  // namespace

@@ -81,7 +81,8 @@ TEST(WheelProfile, RejectsParametersOutsideTheStandard) {
   EXPECT_NO_THROW((void)w.at(70.0));
   EXPECT_EQ(parse_wheel_family("1/40"), WheelFamily::k1in40);
   EXPECT_EQ(parse_outer_slope("6.7"), OuterSlope::k6_7);
-  EXPECT_THROW((void)parse_outer_slope("7"), std::invalid_argument);
+  EXPECT_EQ(parse_outer_slope("7"), (OuterSlope{0.07, false}));  // any 6.7 … 15 %
+  EXPECT_THROW((void)parse_outer_slope("6.6"), std::invalid_argument);
 }
 
 TEST(WheelProfile, EveryJunctionIsContinuousAndTangentWhereTheStandardSaysSo) {
