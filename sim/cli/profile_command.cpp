@@ -244,6 +244,11 @@ void plot_input(const ProfileOptions& o, const profile::ProfileFile& f) {
 /// --input: inspect, measure, plot or convert a profile file.
 void run_input(const ProfileOptions& o) {
   const profile::ProfileFile f = read_input(o);
+  if (f.role == profile::ProfileRole::kRail && !o.nominal.empty()) {
+    throw std::invalid_argument(o.input +
+                                ": --nominal compares a wheel with an EN 13715 profile; this file "
+                                "was read as a rail");
+  }
   std::ostringstream text;
   if (o.measure) {
     std::vector<Measure> rows = f.role == profile::ProfileRole::kRail

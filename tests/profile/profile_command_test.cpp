@@ -296,6 +296,11 @@ TEST(ProfileCommand, OuterSlopeRangeAndBadInputOptions) {
           (tmp_dir() / "x.png").string());
   EXPECT_NE(r.status, 0);
   EXPECT_NE(r.out.find("6.7 % to 15 %"), std::string::npos) << r.out;
+  // A rail has no EN 13715 nominal: --nominal is refused, not ignored.
+  const auto prr = ::tread::testing::test_data("rail/manchester_benchmark/MBench_UIC60_v3.prr");
+  r = run("--input " + prr.string() + " --nominal S1002");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.out.find("was read as a rail"), std::string::npos) << r.out;
 }
 
 }  // namespace
