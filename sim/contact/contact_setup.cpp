@@ -192,6 +192,12 @@ RigidContact build_contact(const ContactSetup& setup, std::vector<std::string>& 
                          " in all): pass --cant none to place the rail as given (or "
                          "--rail-frame track if it is in the track frame already)");
     }
+    if (file_inclination_rad && *file_inclination_rad <= -kCantedFrom_rad) {
+      warnings.push_back(setup.rail_file + ": the rail head leans toward +y by " +
+                         one_in(-*file_inclination_rad) +
+                         " in its file: in the upright frame the gauge side is -y; if the file "
+                         "has it at +y, pass --rail-mirror-y");
+    }
     RailPlacement placement;
     placement.gauge_mm = setup.gauge_mm;
     placement.inclination_rad = cant_rad;
