@@ -37,7 +37,11 @@ void add_conicity_command(CLI::App& app) {
                 "also print the linear-regression value (harmonic weighting) for comparison");
   cmd->add_option("--plot", plot, "PNG: delta r(y) and the contact positions (gnuplot)");
   cmd->callback([] {
-    const contact::RigidContact c = contact::build_contact(setup);
+    std::vector<std::string> warnings;
+    const contact::RigidContact c = contact::build_contact(setup, warnings);
+    for (const std::string& w : warnings) {
+      std::cerr << "tread conicity: warning: " << w << '\n';
+    }
     const double a_max = *std::max_element(amplitudes.begin(), amplitudes.end());
     // The motion spans +-amplitude about the centre (the root of delta r): leave a margin.
     const double y_max = std::ceil(a_max + 2.0);

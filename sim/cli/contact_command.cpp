@@ -7,6 +7,7 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "cli/commands.hpp"
 #include "contact/contact_plot.hpp"
@@ -56,7 +57,11 @@ void add_contact_command(CLI::App& app) {
   cmd->add_option("--output", output, "CSV file (default: standard output)");
   cmd->add_option("--plot", plot, "PNG: delta r(y) and the contact positions (gnuplot)");
   cmd->callback([] {
-    const contact::RigidContact c = contact::build_contact(setup);
+    std::vector<std::string> warnings;
+    const contact::RigidContact c = contact::build_contact(setup, warnings);
+    for (const std::string& w : warnings) {
+      std::cerr << "tread contact: warning: " << w << '\n';
+    }
     const contact::ContactTable t = c.table(-y_max_mm, y_max_mm, step_mm);
     if (const auto end_y = contact::first_profile_end_abs_y(t)) {
       std::cerr << "tread contact: warning: from |y| = " << *end_y

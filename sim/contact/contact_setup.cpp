@@ -4,11 +4,12 @@
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
-#include "contact/profile_csv.hpp"
 #include "contact/profile_function.hpp"
+#include "profile/profile_file.hpp"
 #include "profile/rail_profile.hpp"
-#include "profile/simpack_profile.hpp"
 #include "profile/wheel_profile.hpp"
 
 namespace tread::contact {
@@ -99,19 +100,51 @@ profile::SampledProfile builtin_rail(const std::string& spec, const std::string&
   }
 }
 
-/// CSV (y_mm,z_mm) or SIMPACK .prw/.prr by extension.
-profile::SampledProfile read_profile_file(const std::string& file) {
-  const std::filesystem::path path(file);
-  const std::string ext = path.extension().string();
-  if (ext == ".prw" || ext == ".prr" || ext == ".PRW" || ext == ".PRR") {
-    return profile::read_simpack_profile(path).profile;
+/// A file through the one profile reader; its warnings appended.
+profile::SampledProfile read_file(const std::string& file, profile::ProfileRole role,
+                                  const profile::ProfileReadOptions& options,
+                                  std::vector<std::string>& warnings,
+                                  std::optional<double>* rail_inclination_rad = nullptr) {
+  profile::ProfileFile read = profile::read_profile_file(file, role, options);
+  warnings.insert(warnings.end(), read.warnings.begin(), read.warnings.end());
+  if (rail_inclination_rad != nullptr) {
+    *rail_inclination_rad = read.rail_inclination_rad;
   }
-  return read_profile_csv(path);
+  return std::move(read.profile);
+}
+
+/// Runs `step` and puts the file names in front of its message when it does not name them yet.
+template <typename F>
+auto naming_file(const std::string& files, F&& step) -> decltype(step()) {
+  try {
+    return step();
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    if (files.empty() || what.find(files) != std::string::npos) {
+      throw;
+    }
+    throw std::invalid_argument(files + ": " + what);
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    if (files.empty() || what.find(files) != std::string::npos) {
+      throw;
+    }
+    throw std::runtime_error(files + ": " + what);
+  }
+}
+
+std::string one_in(double rad) {
+  return "1:" + std::to_string(static_cast<long>(std::lround(1.0 / std::tan(rad))));
 }
 
 }  // namespace
 
 RigidContact build_contact(const ContactSetup& setup) {
+  std::vector<std::string> ignored;
+  return build_contact(setup, ignored);
+}
+
+RigidContact build_contact(const ContactSetup& setup, std::vector<std::string>& warnings) {
   if (setup.wheel_spec.empty() == setup.wheel_file.empty()) {
     throw std::invalid_argument("give exactly one of --wheel and --wheel-file");
   }
@@ -126,28 +159,61 @@ RigidContact build_contact(const ContactSetup& setup) {
     throw std::invalid_argument("--rail-frame track applies to --rail-file only");
   }
   const double cant_rad = parse_cant_rad(setup.cant);  // validated even where it does not apply
-  profile::SampledProfile left = setup.wheel_file.empty() ? builtin_wheel(setup.wheel_spec)
-                                                          : read_profile_file(setup.wheel_file);
+  using profile::ProfileRole;
+  profile::SampledProfile left =
+      setup.wheel_file.empty()
+          ? builtin_wheel(setup.wheel_spec)
+          : read_file(setup.wheel_file, ProfileRole::kWheel, setup.wheel_read, warnings);
   profile::SampledProfile right =
-      setup.wheel_right_file.empty() ? left : read_profile_file(setup.wheel_right_file);
+      setup.wheel_right_file.empty()
+          ? left
+          : read_file(setup.wheel_right_file, ProfileRole::kWheel, setup.wheel_read, warnings);
   const bool builtin = setup.rail_file.empty();
+  std::optional<double> file_inclination_rad;
   profile::SampledProfile rail =
       builtin ? builtin_rail(setup.rail_spec, setup.cant, cant_rad, setup.gauge_mm)
-              : read_profile_file(setup.rail_file);
-  left = smooth_profile(left, setup.smooth_half_window_mm);
-  right = smooth_profile(right, setup.smooth_half_window_mm);
-  rail = smooth_profile(rail, setup.smooth_half_window_mm);
+              : read_file(setup.rail_file, ProfileRole::kRail, setup.rail_read, warnings,
+                          &file_inclination_rad);
+  const std::string& right_file =
+      setup.wheel_right_file.empty() ? setup.wheel_file : setup.wheel_right_file;
+  left = naming_file(setup.wheel_file,
+                     [&] { return smooth_profile(left, setup.smooth_half_window_mm); });
+  right =
+      naming_file(right_file, [&] { return smooth_profile(right, setup.smooth_half_window_mm); });
+  rail = naming_file(setup.rail_file,
+                     [&] { return smooth_profile(rail, setup.smooth_half_window_mm); });
   if (!builtin && setup.rail_frame == "upright") {
+    constexpr double kCantedFrom_rad = 1.0 / 80.0;
+    if (file_inclination_rad && *file_inclination_rad >= kCantedFrom_rad && cant_rad > 0.0) {
+      warnings.push_back(setup.rail_file + ": the rail is inclined by " +
+                         one_in(*file_inclination_rad) + " in its file already, and --cant " +
+                         setup.cant + " inclines it again (" +
+                         one_in(*file_inclination_rad + cant_rad) +
+                         " in all): pass --cant none to place the rail as given (or "
+                         "--rail-frame track if it is in the track frame already)");
+    }
+    if (file_inclination_rad && *file_inclination_rad <= -kCantedFrom_rad) {
+      warnings.push_back(setup.rail_file + ": the rail head leans toward +y by " +
+                         one_in(-*file_inclination_rad) +
+                         " in its file: in the upright frame the gauge side is -y; if the file "
+                         "has it at +y, pass --rail-mirror-y");
+    }
     RailPlacement placement;
     placement.gauge_mm = setup.gauge_mm;
     placement.inclination_rad = cant_rad;
-    rail = place_rail(rail, placement).track;
+    rail = naming_file(setup.rail_file, [&] { return place_rail(rail, placement).track; });
   }
   WheelsetSetup wheelset;
   wheelset.back_to_back_mm = setup.back_to_back_mm;
   wheelset.r0_left_mm = setup.r0_mm;
   wheelset.r0_right_mm = setup.r0_right_mm.value_or(setup.r0_mm);
-  return RigidContact(left, right, rail, wheelset);
+  std::string files;
+  for (const std::string* f : {&setup.wheel_file, &setup.wheel_right_file, &setup.rail_file}) {
+    if (!f->empty()) {
+      files += (files.empty() ? "" : ", ") + *f;
+    }
+  }
+  return naming_file(files, [&] { return RigidContact(left, right, rail, wheelset); });
 }
 
 std::optional<double> first_profile_end_abs_y(const ContactTable& table) {

@@ -4,19 +4,25 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "contact/rail_placement.hpp"
 #include "contact/rigid_contact.hpp"
+#include "profile/profile_file.hpp"
 #include "profile/wheel_profile.hpp"
 
 namespace tread::contact {
 
 struct ContactSetup {
   std::string wheel_spec;        ///< built-in wheel, e.g. "S1002:h=28,e=32.5,slope=1:15"
-  std::string wheel_file;        ///< left wheel (and right unless wheel_right_file) CSV
-  std::string wheel_right_file;  ///< optional right wheel CSV
+  std::string wheel_file;        ///< left wheel (and right unless wheel_right_file) file
+  std::string wheel_right_file;  ///< optional right wheel file
   std::string rail_spec;         ///< built-in rail head, e.g. "60E1"
-  std::string rail_file;         ///< rail CSV
+  std::string rail_file;         ///< rail file (CSV, .prr, .ban)
+  /// How the wheel files (both) and the rail file are read (format, z down, mirror y; see
+  /// profile_file.hpp).
+  profile::ProfileReadOptions wheel_read;
+  profile::ProfileReadOptions rail_read;
   std::string rail_frame =
       "upright";              ///< "upright" (own frame, placed by cant and gauge) | "track"
   std::string cant = "1:40";  ///< rail inclination: "1:N", "none" or "0"
@@ -34,8 +40,12 @@ profile::WheelParameters parse_wheel_spec(const std::string& spec);
 /// "1:40" -> atan(1/40); "none" or "0" -> 0. Throws std::invalid_argument otherwise.
 double parse_cant_rad(const std::string& text);
 
-/// Reads the profiles and builds the contact. Throws std::runtime_error / std::invalid_argument
-/// with a message naming the offending option or file.
+/// Reads the profiles (profile::read_profile_file) and builds the contact. Throws
+/// std::runtime_error / std::invalid_argument with a message naming the offending option or file.
+/// `warnings` receives what the file reader changed or assumed, and a warning when a rail file
+/// whose head is inclined already is inclined again by `cant`.
+RigidContact build_contact(const ContactSetup& setup, std::vector<std::string>& warnings);
+/// The same, the warnings dropped.
 RigidContact build_contact(const ContactSetup& setup);
 
 /// Smallest |y| of the table whose contact lies at the end of a profile (see

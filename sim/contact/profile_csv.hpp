@@ -1,17 +1,20 @@
 #pragma once
-// A small reader for profile CSV files (`y_mm,z_mm`, '#' comments, optional header row; comma,
-// semicolon, tab or space separated). Lets the contact tools read the EN 15302 reference files and
-// user profiles; the profile area's general readers (.prw/.prr) live in sim/profile/.
+// The contact tools read profile CSV files in the tolerant dialect of profile::read_profile_csv
+// (optional header, comma, semicolon, tab or space separated); this is that reader, kept under its
+// old name for the contact area. User files go through profile::read_profile_file.
 
 #include <filesystem>
 
+#include "profile/profile_csv.hpp"
 #include "profile/sampled_profile.hpp"
 
 namespace tread::contact {
 
-/// Reads the first two numeric columns as y and z. A descending y column is reversed. Throws
-/// std::runtime_error with "file:line: message" for unreadable files, malformed rows and y that is
-/// not strictly monotonic.
-profile::SampledProfile read_profile_csv(const std::filesystem::path& file);
+/// profile::read_profile_csv(file, CsvDialect::kTolerant): a descending y column is reversed;
+/// throws std::runtime_error "file:line: message" for unreadable files, malformed rows and y that
+/// is not strictly monotonic.
+inline profile::SampledProfile read_profile_csv(const std::filesystem::path& file) {
+  return profile::read_profile_csv(file, profile::CsvDialect::kTolerant);
+}
 
 }  // namespace tread::contact

@@ -14,7 +14,7 @@ namespace tread::contact {
 namespace {
 
 /// Innermost (smallest y) point of the polyline within [top - depth, top]; returns {y, z}.
-std::pair<double, double> innermost_in_band(const std::vector<double>& y,
+std::pair<double, double> innermost_in_band(const std::string& name, const std::vector<double>& y,
                                             const std::vector<double>& z, double depth_mm) {
   const double top = *std::max_element(z.begin(), z.end());
   const double floor_z = top - depth_mm;
@@ -45,8 +45,8 @@ std::pair<double, double> innermost_in_band(const std::vector<double>& y,
     }
   }
   if (!reaches) {
-    throw std::invalid_argument("rail profile does not reach " + std::to_string(depth_mm) +
-                                " mm below its top: no gauge point");
+    throw std::invalid_argument("rail profile '" + name + "' does not reach " +
+                                std::to_string(depth_mm) + " mm below its top: no gauge point");
   }
   return {best_y, best_z};
 }
@@ -73,7 +73,7 @@ PlacedRail place_rail(const profile::SampledProfile& upright, const RailPlacemen
     x[i] = c * y0 - s * z0;
     z[i] = s * y0 + c * z0;
   }
-  const auto [gp_x, gp_z] = innermost_in_band(x, z, placement.gauge_depth_mm);
+  const auto [gp_x, gp_z] = innermost_in_band(upright.name, x, z, placement.gauge_depth_mm);
   const double top = *std::max_element(z.begin(), z.end());
   const double shift = (0.5 * placement.gauge_mm - kTrackFrameOrigin_mm) - gp_x;
 
@@ -111,7 +111,7 @@ PlacedRail place_rail(const profile::SampledProfile& upright, const RailPlacemen
 }
 
 double track_frame_gauge_mm(const profile::SampledProfile& track, double gauge_depth_mm) {
-  const auto [gp_y, gp_z] = innermost_in_band(track.y_mm, track.z_mm, gauge_depth_mm);
+  const auto [gp_y, gp_z] = innermost_in_band(track.name, track.y_mm, track.z_mm, gauge_depth_mm);
   (void)gp_z;
   return 2.0 * (kTrackFrameOrigin_mm + gp_y);
 }

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace tread::profile {
@@ -63,52 +64,109 @@ double parse_number(std::string_view text, const std::string& source, std::size_
   return value;
 }
 
+std::vector<std::string_view> split_any(std::string_view line) {
+  std::vector<std::string_view> fields;
+  std::size_t start = 0;
+  const auto is_sep = [](char c) { return c == ',' || c == ';' || c == '\t' || c == ' '; };
+  while (start < line.size()) {
+    while (start < line.size() && is_sep(line[start])) {
+      ++start;
+    }
+    std::size_t end = start;
+    while (end < line.size() && !is_sep(line[end])) {
+      ++end;
+    }
+    if (end > start) {
+      fields.push_back(line.substr(start, end - start));
+    }
+    start = end;
+  }
+  return fields;
+}
+
+bool is_number(std::string_view text) {
+  double value = 0.0;
+  const char* first = text.data();
+  const char* last = text.data() + text.size();
+  if (!text.empty() && *first == '+') {
+    ++first;
+  }
+  const auto [ptr, ec] = std::from_chars(first, last, value);
+  return ec == std::errc{} && ptr == last && first != last;
+}
+
 }  // namespace
 
-SampledProfile read_profile_csv(std::istream& in, const std::string& source_name) {
-  SampledProfile profile;
-  profile.name = source_name;
-  std::vector<std::size_t> lines;
+ProfilePoints read_profile_csv_points(std::istream& in, const std::string& source_name,
+                                      CsvDialect dialect) {
+  const bool tolerant = dialect == CsvDialect::kTolerant;
+  ProfilePoints points;
+  points.name = source_name;
   std::string line;
   std::size_t line_no = 0;
   std::size_t y_col = 0;
-  std::size_t z_col = 0;
+  std::size_t z_col = 1;
   std::size_t n_cols = 0;
   bool have_header = false;
+  bool data_started = false;
   while (std::getline(in, line)) {
     ++line_no;
     const std::string_view text = trim(line);
     if (text.empty() || text.front() == '#') {
       continue;
     }
-    const auto fields = split_commas(text);
-    if (!have_header) {
+    const auto fields = tolerant ? split_any(text) : split_commas(text);
+    if (!have_header && !data_started) {
       const auto y_it = std::find(fields.begin(), fields.end(), "y_mm");
       const auto z_it = std::find(fields.begin(), fields.end(), "z_mm");
-      if (y_it == fields.end() || z_it == fields.end()) {
+      if (y_it != fields.end() && z_it != fields.end()) {
+        y_col = static_cast<std::size_t>(y_it - fields.begin());
+        z_col = static_cast<std::size_t>(z_it - fields.begin());
+        n_cols = fields.size();
+        have_header = true;
+        continue;
+      }
+      if (!tolerant) {
         fail(source_name, line_no,
              "expected a header naming the columns y_mm and z_mm, got '" + std::string(text) + "'");
       }
-      y_col = static_cast<std::size_t>(y_it - fields.begin());
-      z_col = static_cast<std::size_t>(z_it - fields.begin());
-      n_cols = fields.size();
-      have_header = true;
-      continue;
+      if (fields.size() < 2 || !is_number(fields[0]) || !is_number(fields[1])) {
+        have_header = true;  // one header row of other names is allowed before the data
+        continue;
+      }
     }
-    if (fields.size() != n_cols) {
+    data_started = true;
+    if (!tolerant || n_cols > 0) {
+      if (tolerant ? fields.size() < n_cols : fields.size() != n_cols) {
+        fail(source_name, line_no,
+             "expected " + std::to_string(n_cols) + " columns, got " +
+                 std::to_string(fields.size()));
+      }
+    } else if (fields.size() < 2) {
       fail(source_name, line_no,
-           "expected " + std::to_string(n_cols) + " columns, got " + std::to_string(fields.size()));
+           "expected two numbers 'y_mm,z_mm', got '" + std::string(text) + "'");
     }
-    profile.y_mm.push_back(parse_number(fields[y_col], source_name, line_no, "y_mm"));
-    profile.z_mm.push_back(parse_number(fields[z_col], source_name, line_no, "z_mm"));
-    lines.push_back(line_no);
+    points.y_mm.push_back(parse_number(fields[y_col], source_name, line_no, "y_mm"));
+    points.z_mm.push_back(parse_number(fields[z_col], source_name, line_no, "z_mm"));
+    points.line.push_back(line_no);
   }
-  if (!have_header) {
+  if (!have_header && !tolerant) {
     fail(source_name, line_no, "no header line (y_mm,z_mm) found");
   }
-  if (profile.y_mm.size() < 2) {
+  if (points.y_mm.size() < 2) {
     fail(source_name, line_no, "fewer than 2 points");
   }
+  return points;
+}
+
+SampledProfile read_profile_csv(std::istream& in, const std::string& source_name,
+                                CsvDialect dialect) {
+  ProfilePoints points = read_profile_csv_points(in, source_name, dialect);
+  SampledProfile profile;
+  profile.name = source_name;
+  profile.y_mm = std::move(points.y_mm);
+  profile.z_mm = std::move(points.z_mm);
+  const auto& lines = points.line;
   const bool decreasing = profile.y_mm[1] < profile.y_mm[0];
   for (std::size_t i = 1; i < profile.y_mm.size(); ++i) {
     const double dy = profile.y_mm[i] - profile.y_mm[i - 1];
@@ -125,12 +183,12 @@ SampledProfile read_profile_csv(std::istream& in, const std::string& source_name
   return profile;
 }
 
-SampledProfile read_profile_csv(const std::filesystem::path& path) {
+SampledProfile read_profile_csv(const std::filesystem::path& path, CsvDialect dialect) {
   std::ifstream in(path);
   if (!in) {
-    throw std::runtime_error(path.string() + ":0: cannot open the file");
+    throw std::runtime_error(path.string() + ": cannot open the file");
   }
-  SampledProfile profile = read_profile_csv(in, path.string());
+  SampledProfile profile = read_profile_csv(in, path.string(), dialect);
   profile.name = path.stem().string();
   return profile;
 }

@@ -4,6 +4,7 @@
 // z = radius increase, + toward the flange tip); rail profiles their own upright frame or the track
 // frame (z up).
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,15 @@ struct SampledProfile {
   std::string name;
   std::vector<double> y_mm;  ///< strictly increasing
   std::vector<double> z_mm;  ///< same size as y_mm
+};
+
+/// Points as a file gives them: in file order, y not necessarily monotonic (measured profiles,
+/// undercut rails), with the line each point came from for messages.
+struct ProfilePoints {
+  std::string name;
+  std::vector<double> y_mm;
+  std::vector<double> z_mm;
+  std::vector<std::size_t> line;  ///< same size as y_mm
 };
 
 }  // namespace tread::profile

@@ -33,13 +33,13 @@ std::string_view trim(std::string_view s) {
   return s;
 }
 
-/// The text before an unquoted '!' (SIMPACK's comment character).
+/// The text before an unquoted '!' (SIMPACK's comment character) or '%' (CONTACT's).
 std::string_view strip_comment(std::string_view s) {
   bool quoted = false;
   for (std::size_t i = 0; i < s.size(); ++i) {
     if (s[i] == '\'') {
       quoted = !quoted;
-    } else if (s[i] == '!' && !quoted) {
+    } else if ((s[i] == '!' || s[i] == '%') && !quoted) {
       return s.substr(0, i);
     }
   }
@@ -64,7 +64,7 @@ struct Setting {
 
 }  // namespace
 
-SimpackProfile read_simpack_profile(std::istream& in, const std::string& source_name) {
+SimpackPoints read_simpack_points(std::istream& in, const std::string& source_name) {
   std::map<std::string, Setting> settings;  // "header.type", "spline.shift.y", ...
   struct RawPoint {
     double y;
@@ -148,7 +148,7 @@ SimpackProfile read_simpack_profile(std::istream& in, const std::string& source_
     return v;
   };
 
-  SimpackProfile result;
+  SimpackPoints result;
   const double type = number("header.type", -1.0);
   if (type < -0.5) {
     fail(source_name, line_no, "header.type is missing (0 = rail, 1 = wheel)");
@@ -209,6 +209,29 @@ SimpackProfile read_simpack_profile(std::istream& in, const std::string& source_
   if (kept.size() < 2) {
     fail(source_name, line_no, "fewer than 2 points left after the bounds");
   }
+  result.points.name = source_name;
+  for (const RawPoint& p : kept) {
+    result.points.y_mm.push_back(p.y);
+    result.points.z_mm.push_back(p.z);
+    result.points.line.push_back(p.line);
+  }
+  return result;
+}
+
+SimpackProfile read_simpack_profile(std::istream& in, const std::string& source_name) {
+  const SimpackPoints read = read_simpack_points(in, source_name);
+  struct RawPoint {
+    double y;
+    double z;
+    std::size_t line;
+  };
+  std::vector<RawPoint> kept;
+  for (std::size_t i = 0; i < read.points.y_mm.size(); ++i) {
+    kept.push_back({read.points.y_mm[i], read.points.z_mm[i], read.points.line[i]});
+  }
+  SimpackProfile result;
+  result.type = read.type;
+  result.comment = read.comment;
   const bool decreasing = kept[1].y < kept[0].y;
   for (std::size_t i = 1; i < kept.size(); ++i) {
     const double dy = kept[i].y - kept[i - 1].y;

@@ -22,9 +22,18 @@ struct SimpackProfile {
   SampledProfile profile;  ///< in this project's convention (see above), y increasing, mm
 };
 
-/// Reads a .prw/.prr file. Throws std::runtime_error "file:line: message" on a missing file, a
-/// missing header/point block, a bad number, a bad setting, or points whose y (after
-/// processing) is not strictly monotonic.
+/// The same before the monotonicity check: points in file order (after the processing settings and
+/// the z convention above), for read_profile_file, which cleans measured profiles.
+struct SimpackPoints {
+  SimpackProfileType type = SimpackProfileType::kWheel;
+  std::string comment;
+  ProfilePoints points;
+};
+SimpackPoints read_simpack_points(std::istream& in, const std::string& source_name);
+
+/// Reads a .prw/.prr file (`!` comments, SIMPACK style, and `%` comments, CONTACT style). Throws
+/// std::runtime_error "file:line: message" on a missing file, a missing header/point block, a bad
+/// number, a bad setting, or points whose y (after processing) is not strictly monotonic.
 SimpackProfile read_simpack_profile(const std::filesystem::path& path);
 SimpackProfile read_simpack_profile(std::istream& in, const std::string& source_name);
 

@@ -170,3 +170,114 @@ TEST(ContactCommand, AnyCantPlacesTheBuiltinHead) {
 }
 
 }  // namespace
+
+// The profile-file corpus (tests/data/profiles, see data/PROVENANCE.md): `tread conicity` on every
+// variant of the clean S1002 wheel and upright UIC60 rail gives the clean pair's conicity, and
+// prints the reader's warnings.
+class ConicityOnProfileFiles : public ::testing::Test {
+ protected:
+  static fs::path file(const std::string& name) {
+    return tread::testing::test_data("profiles/" + name);
+  }
+  std::vector<std::vector<double>> conicity(const std::string& args, std::string* err = nullptr) {
+    const fs::path out = tmp_dir() / ("c" + std::to_string(n_) + ".csv");
+    const fs::path log = tmp_dir() / ("c" + std::to_string(n_) + ".log");
+    ++n_;
+    EXPECT_EQ(run("conicity --amplitudes 1,2,3,4,5 " + args, out, log), 0) << args;
+    if (err != nullptr) {
+      std::ifstream in(log);
+      std::stringstream ss;
+      ss << in.rdbuf();
+      *err = ss.str();
+    }
+    return read_csv(out);
+  }
+  void expect_near(const std::vector<std::vector<double>>& a,
+                   const std::vector<std::vector<double>>& b, double tol) {
+    ASSERT_EQ(a.size(), 5u);
+    ASSERT_EQ(b.size(), 5u);
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      EXPECT_NEAR(a[k][1], b[k][1], tol) << "amplitude " << a[k][0];
+    }
+  }
+  int n_ = 0;
+};
+
+TEST_F(ConicityOnProfileFiles, EveryVariantGivesTheCleanConicity) {
+  const std::string rail = " --rail-file " + file("uic60_upright_clean.csv").string();
+  const std::string wheel = " --wheel-file " + file("s1002_clean.csv").string();
+  std::string err;
+  const auto clean = conicity(wheel + rail, &err);
+  EXPECT_TRUE(err.empty()) << err;
+  ASSERT_EQ(clean.size(), 5u);
+  EXPECT_NEAR(clean[0][1], 0.36829, 1e-5);  // today's value, to see a change
+  // Same points: same result to the printed digit.
+  expect_near(conicity(" --wheel-file " + file("s1002_zdown_mirrored.csv").string() +
+                       " --wheel-z-down --wheel-mirror-y" + rail),
+              clean, 1e-12);
+  expect_near(conicity(" --wheel-file " + file("s1002_offset.csv").string() + rail, &err), clean,
+              1e-12);
+  EXPECT_NE(err.find("tread conicity: warning: " + file("s1002_offset.csv").string() +
+                     ": the flange back is at y = 4.000 mm"),
+            std::string::npos)
+      << err;
+  // The undercut rail: the same head (placed on another resampling grid).
+  expect_near(conicity(wheel + " --rail-file " + file("uic60_undercut.prr").string(), &err), clean,
+              1e-4);
+  EXPECT_NE(err.find("turns back in y by 2.000 mm"), std::string::npos) << err;
+  // Measured-style files: within what +-0.002 mm (wheel) and +-0.001 mm (rail) of noise moves the
+  // conicity of this nearly conformal pair.
+  expect_near(conicity(" --wheel-file " + file("s1002_measured.whl").string() + rail, &err), clean,
+              0.003);
+  EXPECT_NE(err.find("35 points in 35 places"), std::string::npos) << err;
+  expect_near(conicity(wheel + " --rail-file " + file("uic60_measured.ban").string()), clean, 0.01);
+  // --wheel-format overrides the extension.
+  const fs::path whl_as_txt = tmp_dir() / "measured.txt";
+  fs::copy_file(file("s1002_measured.whl"), whl_as_txt, fs::copy_options::overwrite_existing);
+  expect_near(conicity(" --wheel-file " + whl_as_txt.string() + " --wheel-format miniprof" + rail),
+              conicity(" --wheel-file " + file("s1002_measured.whl").string() + rail), 1e-12);
+}
+
+TEST_F(ConicityOnProfileFiles, CantedManchesterRailIsFlagged) {
+  const fs::path prr = tread::testing::test_data("rail/manchester_benchmark/MBench_UIC60_v3.prr");
+  const std::string wheel = " --wheel-file " + file("s1002_clean.csv").string();
+  std::string err;
+  const auto twice = conicity(wheel + " --rail-file " + prr.string(), &err);
+  ASSERT_EQ(twice.size(), 5u);
+  EXPECT_LT(twice[0][1], 0.02);  // inclined 1:20 in all: the nonsense the warning is about
+  EXPECT_NE(
+      err.find(prr.string() + ": the rail is inclined by 1:40 in its file already, and "
+                              "--cant 1:40 inclines it again (1:20 in all): pass --cant none"),
+      std::string::npos)
+      << err;
+  // As the warning says: --cant none gives the upright rail's result at 1:40.
+  const auto as_given = conicity(wheel + " --rail-file " + prr.string() + " --cant none", &err);
+  EXPECT_TRUE(err.empty()) << err;
+  expect_near(as_given,
+              conicity(wheel + " --rail-file " + file("uic60_upright_clean.csv").string()), 1e-4);
+}
+
+TEST_F(ConicityOnProfileFiles, ErrorsNameTheFile) {
+  const fs::path prw = tread::testing::test_data("rail/manchester_benchmark/MBench_S1002_v3.prw");
+  const fs::path out = tmp_dir() / "e.out";
+  const fs::path err = tmp_dir() / "e.log";
+  const auto text = [&] {
+    std::ifstream in(err);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+  };
+  EXPECT_NE(run("conicity --wheel S1002 --rail-file " + prw.string(), out, err), 0);
+  EXPECT_NE(text().find(prw.string() + ": the header says this is a wheel profile"),
+            std::string::npos)
+      << text();
+  // A rail head that ends 5 mm below its top: no gauge point, and the message names the file.
+  const fs::path flat = tmp_dir() / "short_rail.csv";
+  std::ofstream(flat) << "y_mm,z_mm\n-30,-5\n-20,-1\n0,0\n20,-1\n30,-5\n";
+  EXPECT_NE(run("conicity --wheel S1002 --rail-file " + flat.string(), out, err), 0);
+  EXPECT_NE(text().find(flat.string() + ": rail profile 'short_rail' does not reach"),
+            std::string::npos)
+      << text();
+  EXPECT_NE(run("conicity --wheel S1002 --rail 60E1 --wheel-format xyz", out, err), 0);
+  EXPECT_NE(text().find("profile format 'xyz'"), std::string::npos) << text();
+}

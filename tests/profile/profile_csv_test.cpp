@@ -82,3 +82,30 @@ TEST(ProfileCsvGolden, ReadsEn15302RailAAndWheelA) {
 
 }  // namespace
 }  // namespace tread::profile
+
+namespace tread::profile {
+namespace {
+
+TEST(ProfileCsv, TolerantDialectTakesAnySeparatorAndAnOptionalHeader) {
+  std::istringstream a("# c\n0;0.5\n1\t0.25\n2 0 9\n");
+  const SampledProfile p = read_profile_csv(a, "a", CsvDialect::kTolerant);
+  EXPECT_EQ(p.y_mm, (std::vector<double>{0.0, 1.0, 2.0}));
+  EXPECT_EQ(p.z_mm, (std::vector<double>{0.5, 0.25, 0.0}));
+  std::istringstream b("z_mm y_mm\n0.5 0\n0.25 1\n");  // a header naming the columns is used
+  const SampledProfile q = read_profile_csv(b, "b", CsvDialect::kTolerant);
+  EXPECT_EQ(q.y_mm, (std::vector<double>{0.0, 1.0}));
+  EXPECT_EQ(q.z_mm, (std::vector<double>{0.5, 0.25}));
+  std::istringstream c("y z\n0 0\nfoo\n");
+  try {
+    (void)read_profile_csv(c, "c", CsvDialect::kTolerant);
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "c:3: expected two numbers 'y_mm,z_mm', got 'foo'");
+  }
+  // The strict dialect still wants its header.
+  std::istringstream d("0,0\n1,1\n");
+  EXPECT_THROW((void)read_profile_csv(d, "d"), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace tread::profile
