@@ -15,7 +15,8 @@ inline void add_contact_setup_options(CLI::App& cmd, ContactSetup& s) {
   cmd.add_option("--wheel-file", s.wheel_file,
                  "wheel profile CSV y_mm,z_mm or SIMPACK .prw (left wheel; also the right unless "
                  "--wheel-right-file)");
-  cmd.add_option("--wheel-right-file", s.wheel_right_file, "right wheel profile CSV");
+  cmd.add_option("--wheel-right-file", s.wheel_right_file,
+                 "right wheel profile (CSV or .prw), for a wheelset with different wheels");
   cmd.add_option("--rail", s.rail_spec, "built-in rail head: 60E1 or 54E1");
   cmd.add_option("--rail-file", s.rail_file, "rail profile CSV y_mm,z_mm or SIMPACK .prr");
   cmd.add_option("--rail-frame", s.rail_frame,
@@ -29,7 +30,11 @@ inline void add_contact_setup_options(CLI::App& cmd, ContactSetup& s) {
       ->capture_default_str();
   cmd.add_option("--r0", s.r0_mm, "rolling radius at the taping line (mm), left wheel")
       ->capture_default_str();
-  cmd.add_option("--r0-right", s.r0_right_mm, "right wheel radius (mm); default --r0");
+  cmd.add_option(
+      "--r0-right", s.r0_right_mm,
+      "right wheel rolling radius at the taping line (mm); default --r0. delta r = r_left - "
+      "r_right, y > 0 toward the left rail (EN 15302's 920/918 mm case: --r0 460 "
+      "--r0-right 459)");
   cmd.add_option("--smooth", s.smooth_half_window_mm,
                  "smooth measured profiles: local quadratic fit half window (mm), 0 = off")
       ->capture_default_str();
