@@ -53,4 +53,6 @@ for f in "$src"/rail/en15302/*.csv; do strip_csv "$f" "tests/data/rail/en15302/$
   --output tests/data/rail/manchester_benchmark/MBench_S1002_v3.prw
 "$tread" profile --input "$src/rail/manchester_benchmark/MBench_UIC60_v3.prr" --format prr \
   --output tests/data/rail/manchester_benchmark/MBench_UIC60_v3.prr
+# The other EN 15302 Annex I wheels are generated from their analytic pieces (no original file).
+python3 scripts/en15302-wheels.py tests/data/rail/en15302
 echo "import-refdata: data/tyres and tests/data regenerated from $src"

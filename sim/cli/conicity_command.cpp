@@ -1,10 +1,17 @@
-// `tread conicity`: equivalent conicity tan(gamma_e) per EN 15302 (Annex B: the nonlinear kinematic
-// wheelset equation integrated with delta r(y)) at the given amplitudes, as CSV
-// amplitude_mm,tan_gamma_e (plus tan_gamma_regression with --regression).
+// `tread conicity`: equivalent conicity tan(gamma_e) per EN 15302 at the given amplitudes, as CSV,
+// one row per amplitude:
+//   amplitude_mm, tan_gamma_e (Annex B: the nonlinear kinematic equation integrated), centre_mm
+//   (Annex B: midway between the turning points), wavelength_mm (Annex B), tan_gamma_regression
+//   (Annex C: linear regression of delta r over a harmonic cycle), centre_regression_mm (Annex C:
+//   where the mean of delta r over the cycle is 0), note ("ok", "neutral" or why a method has no
+//   result at this amplitude; the value is then nan and a warning goes to stderr).
+// Different wheels (--wheel-right-file) and rolling radii (--r0-right; delta r = r_left - r_right)
+// are allowed: the oscillation is then not centred on 0.
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -18,12 +25,12 @@ namespace tread::cli {
 namespace {
 
 void add_conicity_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("conicity",
-                                 "Equivalent conicity per EN 15302 (Annex B) at given amplitudes");
+  auto* cmd = app.add_subcommand(
+      "conicity", "Equivalent conicity per EN 15302 (Annex B and Annex C) at given amplitudes");
   static contact::ContactSetup setup;
   static std::vector<double> amplitudes{1.0, 2.0, 3.0};
   static double step_mm = 0.01;
-  static bool regression = false;
+  static double y_max_mm = 0.0;
   static std::string plot;
   contact::add_contact_setup_options(*cmd, setup);
   cmd->add_option("--amplitudes", amplitudes, "amplitudes (mm), comma separated")
@@ -33,8 +40,9 @@ void add_conicity_command(CLI::App& app) {
   cmd->add_option("--step", step_mm, "delta r table step used for the integration (mm)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
-  cmd->add_flag("--regression", regression,
-                "also print the linear-regression value (harmonic weighting) for comparison");
+  cmd->add_option("--ymax", y_max_mm,
+                  "delta r table from -ymax to +ymax (mm); default: largest amplitude + 3 "
+                  "(an asymmetric wheelset oscillates off centre)");
   cmd->add_option("--plot", plot, "PNG: delta r(y) and the contact positions (gnuplot)");
   cmd->callback([] {
     std::vector<std::string> warnings;
@@ -43,23 +51,58 @@ void add_conicity_command(CLI::App& app) {
       std::cerr << "tread conicity: warning: " << w << '\n';
     }
     const double a_max = *std::max_element(amplitudes.begin(), amplitudes.end());
-    // The motion spans +-amplitude about the centre (the root of delta r): leave a margin.
-    const double y_max = std::ceil(a_max + 2.0);
-    const contact::ContactTable t = c.table(-y_max, y_max, step_mm);
+    double y_max = y_max_mm > 0.0 ? y_max_mm : std::ceil(a_max) + 3.0;
+    contact::ContactTable t;
+    for (;;) {
+      try {
+        t = c.table(-y_max, y_max, step_mm);
+        break;
+      } catch (const std::domain_error& e) {
+        // The default range may reach past where wheel and rail still meet: narrow it (the
+        // amplitudes whose motion then leaves the table are marked in their rows).
+        if (y_max_mm > 0.0 || y_max - 1.0 < a_max) {
+          throw;
+        }
+        y_max -= 1.0;
+        std::cerr << "tread conicity: warning: " << e.what() << "; delta r table narrowed to +-"
+                  << y_max << " mm\n";
+      }
+    }
     if (const auto end_y = contact::first_profile_end_abs_y(t); end_y && *end_y <= a_max + 1.0) {
       std::cerr << "tread conicity: warning: from |y| = " << *end_y
                 << " mm the contact lies at the end of a profile (the profiles do not cover it)\n";
     }
-    std::cout << (regression ? "amplitude_mm,tan_gamma_e,tan_gamma_regression\n"
-                             : "amplitude_mm,tan_gamma_e\n");
+    std::cout << "amplitude_mm,tan_gamma_e,centre_mm,wavelength_mm,tan_gamma_regression,"
+                 "centre_regression_mm,note\n";
+    auto csv_safe = [](std::string text) {
+      std::replace(text.begin(), text.end(), ',', ';');
+      return text;
+    };
     for (const double a : amplitudes) {
-      const contact::ConicityResult r = contact::equivalent_conicity(t, a);
-      std::cout << std::fixed << std::setprecision(3) << a << ',' << std::setprecision(5)
-                << r.tan_gamma_e;
-      if (regression) {
-        std::cout << ',' << contact::linearised_conicity(t, a);
+      std::string note;
+      std::cout << std::fixed << std::setprecision(3) << a << ',';
+      try {
+        const contact::ConicityResult r = contact::equivalent_conicity(t, a);
+        std::cout << std::setprecision(5) << r.tan_gamma_e << ',' << std::setprecision(4)
+                  << r.centre_y_mm << ',' << std::setprecision(1) << r.wavelength_mm << ',';
+        if (r.neutral) {
+          note = "neutral: delta r = 0 over the whole motion (annex B)";
+        }
+      } catch (const std::domain_error& e) {
+        std::cout << "nan,nan,nan,";
+        note = std::string("annex B: ") + e.what();
+        std::cerr << "tread conicity: warning: annex B: " << e.what() << "\n";
       }
-      std::cout << '\n';
+      try {
+        const contact::RegressionResult r = contact::linearised_conicity(t, a);
+        std::cout << std::setprecision(5) << r.tan_gamma_e << ',' << std::setprecision(4)
+                  << r.centre_y_mm << ',';
+      } catch (const std::domain_error& e) {
+        std::cout << "nan,nan,";
+        note += std::string(note.empty() ? "" : "; ") + "annex C: " + e.what();
+        std::cerr << "tread conicity: warning: annex C: " << e.what() << "\n";
+      }
+      std::cout << csv_safe(note.empty() ? "ok" : note) << '\n';
     }
     if (!plot.empty()) {
       contact::plot_contact_table(t, "wheel-rail contact", plot);

@@ -19,11 +19,12 @@ inline std::function<void(const std::string&)> profile_format_setter(profile::Pr
 inline void add_contact_setup_options(CLI::App& cmd, ContactSetup& s) {
   cmd.add_option("--wheel", s.wheel_spec,
                  "built-in EN 13715 wheel: S1002, EPS or "
-                 "1/40[:h=28,e=32.5,slope=1:15|6.7|10|15,width=140,chamfer=1]");
+                 "1/40[:h=28,e=32.5,slope=1:15|6.7…15 %|1:N,width=140,chamfer=1]");
   cmd.add_option("--wheel-file", s.wheel_file,
                  "wheel profile: CSV y_mm,z_mm, SIMPACK/CONTACT .prw or MiniProf .whl (left "
                  "wheel; also the right unless --wheel-right-file)");
-  cmd.add_option("--wheel-right-file", s.wheel_right_file, "right wheel profile file");
+  cmd.add_option("--wheel-right-file", s.wheel_right_file,
+                 "right wheel profile file, for a wheelset with different wheels");
   cmd.add_option_function<std::string>("--wheel-format", profile_format_setter(s.wheel_read.format),
                                        "format of the wheel files: auto (by extension), csv, "
                                        "simpack or miniprof");
@@ -52,7 +53,11 @@ inline void add_contact_setup_options(CLI::App& cmd, ContactSetup& s) {
       ->capture_default_str();
   cmd.add_option("--r0", s.r0_mm, "rolling radius at the taping line (mm), left wheel")
       ->capture_default_str();
-  cmd.add_option("--r0-right", s.r0_right_mm, "right wheel radius (mm); default --r0");
+  cmd.add_option(
+      "--r0-right", s.r0_right_mm,
+      "right wheel rolling radius at the taping line (mm); default --r0. delta r = r_left - "
+      "r_right, y > 0 toward the left rail (EN 15302's 920/918 mm case: --r0 460 "
+      "--r0-right 459)");
   cmd.add_option("--smooth", s.smooth_half_window_mm,
                  "smooth measured profiles: local quadratic fit half window (mm), 0 = off")
       ->capture_default_str();

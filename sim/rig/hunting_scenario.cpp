@@ -24,7 +24,8 @@ HuntingScenario::HuntingScenario(const HuntingSettings& settings) : settings_(se
   WheelsetHuntingParams p;
   p.speed_mps = settings_.speed_mps;
   p.r0_mm = setup.r0_mm;
-  // The motion is centred on the root of delta r (an asymmetric pair need not be centred on 0).
+  // The centre of the oscillation (EN 15302 Annex B: midway between its turning points; an
+  // asymmetric pair need not oscillate about 0 nor about the root of delta r).
   centre_mm_ = contact::equivalent_conicity(reference_, settings_.amplitude_mm[0]).centre_y_mm;
   // Long enough for at least four periods of the slowest wheelset (low conicity: long waves).
   for (std::size_t j = 0; j < settings_.wheelsets; ++j) {
@@ -37,7 +38,9 @@ HuntingScenario::HuntingScenario(const HuntingSettings& settings) : settings_(se
     settings_.duration_s = std::max(settings_.duration_s, 4.5 * wavelength_m / p.speed_mps);
   }
   for (std::size_t j = 0; j < settings_.wheelsets; ++j) {
-    wheelsets_[j] = WheelsetHunting(p, centre_mm_ + settings_.amplitude_mm[j]);
+    // Start at the upper turning point of the kinematic oscillation of that amplitude.
+    wheelsets_[j] = WheelsetHunting(
+        p, contact::equivalent_conicity(reference_, settings_.amplitude_mm[j]).y_max_mm);
     const auto n = static_cast<std::size_t>(settings_.duration_s * 1000.0) + 1;
     y_trace_[j].reserve(n);
   }
@@ -103,7 +106,6 @@ HuntingScenario::Result HuntingScenario::result(std::size_t wheelset) const {
       contact::ConicityOptions o;
       o.e0_mm = wheelsets_[wheelset].params().e0_mm;
       o.r0_mm = wheelsets_[wheelset].params().r0_mm;
-      o.step_mm = 1.0;
       r.tan_gamma_e =
           contact::equivalent_conicity(reference_, r.motion.amplitude_mm, o).tan_gamma_e;
       r.klingel_wavelength_m =

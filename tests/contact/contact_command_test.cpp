@@ -7,8 +7,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -49,11 +51,21 @@ std::vector<std::vector<double>> read_csv(const fs::path& file, std::string* hea
     std::string cell;
     std::vector<double> row;
     while (std::getline(ss, cell, ',')) {
-      row.push_back(std::stod(cell));
+      // Text cells (the conicity note) read as NaN.
+      try {
+        row.push_back(std::stod(cell));
+      } catch (const std::invalid_argument&) {
+        row.push_back(std::nan(""));
+      }
     }
     rows.push_back(row);
   }
   return rows;
+}
+
+std::string text_of(const fs::path& file) {
+  std::ifstream in(file);
+  return {(std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()};
 }
 
 std::string en15302_args() {
@@ -100,12 +112,83 @@ TEST(ContactCommand, En15302ConicityMatchesAnnexK) {
       0);
   std::string header;
   const auto rows = read_csv(out, &header);
-  EXPECT_EQ(header, "amplitude_mm,tan_gamma_e");
+  EXPECT_EQ(header,
+            "amplitude_mm,tan_gamma_e,centre_mm,wavelength_mm,tan_gamma_regression,"
+            "centre_regression_mm,note");
   ASSERT_EQ(rows.size(), 4u);
   const std::map<long, double> annex_k{{10, 0.125}, {30, 0.188}, {60, 0.303}, {70, 0.505}};
+  // Annex K's extended tolerance windows, for the regression (Annex C) column.
+  const std::map<long, std::pair<double, double>> extended{
+      {10, {0.075, 0.175}}, {30, {0.138, 0.238}}, {60, {0.252, 0.354}}, {70, {0.395, 0.598}}};
   for (const auto& row : rows) {
+    ASSERT_EQ(row.size(), 7u);
     EXPECT_NEAR(row[1], annex_k.at(std::lround(row[0] * 10.0)), 0.005) << "amplitude " << row[0];
+    EXPECT_NEAR(row[2], 0.0, 0.01) << "symmetric pair: centred";  // annex B centre
+    EXPECT_NEAR(row[5], 0.0, 0.01) << "symmetric pair: centred";  // annex C centre
+    const auto [lo, hi] = extended.at(std::lround(row[0] * 10.0));
+    EXPECT_GE(row[4], lo) << "annex C, amplitude " << row[0];
+    EXPECT_LE(row[4], hi) << "annex C, amplitude " << row[0];
   }
+}
+
+// The 920 / 918 mm case of EN 15302 (wheel A mod): --r0-right 459 gives delta r = r_left -
+// r_right = +1 mm at y = 0 as in Annex J, so the oscillation centres on the negative side (Annex J:
+// delta r = 0 near y = -2.6). Annex K: 0.280 (1 mm), 0.261 (3 mm), 0.307 (5 mm), windows +-0.05.
+TEST(ContactCommand, DifferentRadiiGiveTheModCase) {
+  const fs::path out = tmp_dir() / "mod.csv";
+  ASSERT_EQ(run("conicity " + en15302_args() + " --r0-right 459 --amplitudes 1,3,5", out,
+                tmp_dir() / "mod.log"),
+            0);
+  const auto rows = read_csv(out);
+  ASSERT_EQ(rows.size(), 3u);
+  const std::map<long, double> annex_k{{10, 0.280}, {30, 0.261}, {50, 0.307}};
+  for (const auto& row : rows) {
+    EXPECT_NEAR(row[1], annex_k.at(std::lround(row[0] * 10.0)), 0.05) << "amplitude " << row[0];
+    EXPECT_LT(row[2], -1.0) << "amplitude " << row[0];
+    EXPECT_LT(row[5], -1.0) << "amplitude " << row[0];
+  }
+  EXPECT_NEAR(rows[0][2], -2.58, 0.05);  // from Annex J's own delta r: -2.584
+}
+
+// The A/B pair of EN 15302 (Annex J/K "AB"; in tread's convention wheel A left, wheel B right):
+// 0.136 (1 mm), 0.090 (2.8 mm), 0.270 (5 mm).
+TEST(ContactCommand, DifferentWheelsGiveTheABCase) {
+  const fs::path dir = tread::testing::test_data("rail/en15302");
+  const fs::path out = tmp_dir() / "ab.csv";
+  ASSERT_EQ(run("conicity --wheel-file " + (dir / "WheelA.csv").string() + " --wheel-right-file " +
+                    (dir / "WheelB.csv").string() + " --rail-file " + (dir / "RailA.csv").string() +
+                    " --rail-frame track --b2b 1360 --r0 460 --amplitudes 1,2.8,5",
+                out, tmp_dir() / "ab.log"),
+            0);
+  const auto rows = read_csv(out);
+  ASSERT_EQ(rows.size(), 3u);
+  const std::map<long, double> annex_k{{10, 0.136}, {28, 0.090}, {50, 0.270}};
+  for (const auto& row : rows) {
+    EXPECT_NEAR(row[1], annex_k.at(std::lround(row[0] * 10.0)), 0.045) << "amplitude " << row[0];
+  }
+  EXPECT_GT(rows[0][2], 0.3);  // Annex J: delta r(0) = -0.182, the motion sits on the + side
+}
+
+// An amplitude without a result is a marked row (nan and the reason), the others are computed,
+// and stderr names the amplitude.
+TEST(ContactCommand, AmplitudeWithoutOscillationIsMarked) {
+  const fs::path out = tmp_dir() / "marked.csv";
+  const fs::path log = tmp_dir() / "marked.log";
+  ASSERT_EQ(run("conicity " + en15302_args() + " --ymax 8 --amplitudes 1,9", out, log), 0);
+  const auto rows = read_csv(out);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_NEAR(rows[0][1], 0.125, 0.005);
+  EXPECT_TRUE(std::isnan(rows[1][1]));
+  EXPECT_TRUE(std::isnan(rows[1][4]));
+  const std::string csv = text_of(out);
+  EXPECT_NE(csv.find("1.000,0.12"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",ok\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("annex B: amplitude 9.000 mm: the motion (18.000 mm wide) is wider than the "
+                     "delta r table [-8.000; 8.000] mm"),
+            std::string::npos)
+      << csv;
+  EXPECT_NE(text_of(log).find("warning: annex C: amplitude 9.000 mm"), std::string::npos)
+      << text_of(log);
 }
 
 TEST(ContactCommand, BadInputFailsWithAMessage) {
