@@ -1,5 +1,7 @@
 #include "profile/miniprof_profile.hpp"
 
+#include "profile/text_line.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -86,6 +88,7 @@ MiniProfFile read_miniprof(std::istream& in, const std::string& source_name) {
   std::size_t line_no = 0;
   while (std::getline(in, line)) {
     ++line_no;
+    strip_utf8_bom(line, line_no);
     const std::string_view text = trim(line);
     if (!text.empty() && text.front() == '#') {
       continue;
@@ -136,7 +139,8 @@ MiniProfFile read_miniprof(std::istream& in, const std::string& source_name) {
     if (text.empty()) {
       continue;
     }
-    const auto fields = split_fields(text);
+    const std::string data = with_decimal_points(text);
+    const auto fields = split_fields(data);
     const std::size_t need = std::max(x_col, y_col) + 1;
     if (fields.size() < need) {
       fail(source_name, line_no,

@@ -1,5 +1,7 @@
 #include "profile/profile_csv.hpp"
 
+#include "profile/text_line.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -111,6 +113,10 @@ ProfilePoints read_profile_csv_points(std::istream& in, const std::string& sourc
   bool data_started = false;
   while (std::getline(in, line)) {
     ++line_no;
+    strip_utf8_bom(line, line_no);
+    if (tolerant) {
+      line = with_decimal_points(line);
+    }
     const std::string_view text = trim(line);
     if (text.empty() || text.front() == '#') {
       continue;

@@ -519,6 +519,14 @@ ProfileFile read_profile_file(const std::filesystem::path& path, ProfileRole rol
       break;
     }
     case ProfileFormat::kMiniProf: {
+      // MiniProf names the role by the extension: .whl wheel, .ban rail (track, "bane").
+      const std::string ext = lower_extension(path);
+      if ((ext == ".whl" && role == ProfileRole::kRail) ||
+          (ext == ".ban" && role == ProfileRole::kWheel)) {
+        throw std::runtime_error(file + ": a MiniProf " + ext + " file is a " +
+                                 (ext == ".whl" ? "wheel" : "rail") +
+                                 " profile, but it was given as the " + role_name(role));
+      }
       MiniProfFile read = read_miniprof(in, file);
       out.header = std::move(read.header);
       points = std::move(read.points);

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "profile/profile_csv.hpp"
+#include "profile/text_line.hpp"
 
 namespace tread::profile {
 
@@ -79,6 +80,7 @@ SimpackPoints read_simpack_points(std::istream& in, const std::string& source_na
   std::size_t line_no = 0;
   while (std::getline(in, line)) {
     ++line_no;
+    strip_utf8_bom(line, line_no);
     const std::string_view text = trim(strip_comment(line));
     if (text.empty()) {
       continue;

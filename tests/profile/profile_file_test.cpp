@@ -309,5 +309,27 @@ TEST(ProfileFile, TolerantCsvDialectAndErrorsNameTheFile) {
   EXPECT_NEAR(h.profile.z_mm[3], -0.15, 1e-12);
 }
 
+TEST(ProfileFile, DecimalCommasByteOrderMarkAndMiniProfRole) {
+  const fs::path dir = testing::test_dir("profile_file_test_locale");
+  // ';' or tab separated with decimal commas (European spreadsheets): the comma is a point.
+  std::ofstream(dir / "comma.csv") << "y_mm;z_mm\n-1,5;0,25\n0;0\n2,75;-0,125\n";
+  const ProfileFile c = read_profile_file(dir / "comma.csv", ProfileRole::kRail);
+  EXPECT_EQ(c.profile.y_mm, (std::vector<double>{-1.5, 0.0, 2.75}));
+  EXPECT_EQ(c.profile.z_mm, (std::vector<double>{0.25, 0.0, -0.125}));
+  std::ofstream(dir / "tab.csv") << "-1,5\t0,25\n0\t0\n";
+  EXPECT_EQ(read_profile_file(dir / "tab.csv", ProfileRole::kRail).profile.y_mm,
+            (std::vector<double>{-1.5, 0.0}));
+  // A UTF-8 byte-order mark before the header does not hide the column names.
+  std::ofstream(dir / "bom.csv") << "\xEF\xBB\xBFz_mm,y_mm\n0.5,-1\n0.25,0\n";
+  const ProfileFile b = read_profile_file(dir / "bom.csv", ProfileRole::kRail);
+  EXPECT_EQ(b.profile.y_mm, (std::vector<double>{-1.0, 0.0}));
+  EXPECT_EQ(b.profile.z_mm, (std::vector<double>{0.5, 0.25}));
+  // MiniProf names the role by the extension.
+  std::ofstream(dir / "r.ban") << "ColumnDef=X,Y\n\n0 0\n1 -0.1\n";
+  EXPECT_EQ(error_of(dir / "r.ban", ProfileRole::kWheel),
+            (dir / "r.ban").string() +
+                ": a MiniProf .ban file is a rail profile, but it was given as the wheel");
+}
+
 }  // namespace
 }  // namespace tread::profile
