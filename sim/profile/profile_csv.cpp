@@ -19,82 +19,36 @@ namespace tread::profile {
 
 namespace {
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r')) {
-    s.remove_prefix(1);
-  }
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) {
-    s.remove_suffix(1);
-  }
-  return s;
-}
-
 std::vector<std::string_view> split_commas(std::string_view line) {
   std::vector<std::string_view> fields;
   std::size_t start = 0;
   while (true) {
     const std::size_t comma = line.find(',', start);
     if (comma == std::string_view::npos) {
-      fields.push_back(trim(line.substr(start)));
+      fields.push_back(trim_blanks(line.substr(start)));
       return fields;
     }
-    fields.push_back(trim(line.substr(start, comma - start)));
+    fields.push_back(trim_blanks(line.substr(start, comma - start)));
     start = comma + 1;
   }
-}
-
-[[noreturn]] void fail(const std::string& source, std::size_t line, const std::string& message) {
-  throw std::runtime_error(source + ":" + std::to_string(line) + ": " + message);
 }
 
 double parse_number(std::string_view text, const std::string& source, std::size_t line,
                     const char* column) {
   double value = 0.0;
-  const char* first = text.data();
-  const char* last = text.data() + text.size();
-  if (!text.empty() && *first == '+') {
-    ++first;
-  }
-  const auto [ptr, ec] = std::from_chars(first, last, value);
-  if (ec != std::errc{} || ptr != last || text.empty()) {
-    fail(source, line,
-         std::string("column ") + column + ": '" + std::string(text) + "' is not a number");
+  if (!parse_number_text(text, value)) {
+    fail_at(source, line,
+            std::string("column ") + column + ": '" + std::string(text) + "' is not a number");
   }
   if (!std::isfinite(value)) {
-    fail(source, line, std::string("column ") + column + ": value is not finite");
+    fail_at(source, line, std::string("column ") + column + ": value is not finite");
   }
   return value;
 }
 
-std::vector<std::string_view> split_any(std::string_view line) {
-  std::vector<std::string_view> fields;
-  std::size_t start = 0;
-  const auto is_sep = [](char c) { return c == ',' || c == ';' || c == '\t' || c == ' '; };
-  while (start < line.size()) {
-    while (start < line.size() && is_sep(line[start])) {
-      ++start;
-    }
-    std::size_t end = start;
-    while (end < line.size() && !is_sep(line[end])) {
-      ++end;
-    }
-    if (end > start) {
-      fields.push_back(line.substr(start, end - start));
-    }
-    start = end;
-  }
-  return fields;
-}
-
-bool is_number(std::string_view text) {
+bool is_number_text(std::string_view text) {
   double value = 0.0;
-  const char* first = text.data();
-  const char* last = text.data() + text.size();
-  if (!text.empty() && *first == '+') {
-    ++first;
-  }
-  const auto [ptr, ec] = std::from_chars(first, last, value);
-  return ec == std::errc{} && ptr == last && first != last;
+  return parse_number_text(text, value);
 }
 
 }  // namespace
@@ -117,11 +71,11 @@ ProfilePoints read_profile_csv_points(std::istream& in, const std::string& sourc
     if (tolerant) {
       line = with_decimal_points(line);
     }
-    const std::string_view text = trim(line);
+    const std::string_view text = trim_blanks(line);
     if (text.empty() || text.front() == '#') {
       continue;
     }
-    const auto fields = tolerant ? split_any(text) : split_commas(text);
+    const auto fields = tolerant ? split_fields(text) : split_commas(text);
     if (!have_header && !data_started) {
       const auto y_it = std::find(fields.begin(), fields.end(), "y_mm");
       const auto z_it = std::find(fields.begin(), fields.end(), "z_mm");
@@ -133,10 +87,11 @@ ProfilePoints read_profile_csv_points(std::istream& in, const std::string& sourc
         continue;
       }
       if (!tolerant) {
-        fail(source_name, line_no,
-             "expected a header naming the columns y_mm and z_mm, got '" + std::string(text) + "'");
+        fail_at(
+            source_name, line_no,
+            "expected a header naming the columns y_mm and z_mm, got '" + std::string(text) + "'");
       }
-      if (fields.size() < 2 || !is_number(fields[0]) || !is_number(fields[1])) {
+      if (fields.size() < 2 || !is_number_text(fields[0]) || !is_number_text(fields[1])) {
         have_header = true;  // one header row of other names is allowed before the data
         continue;
       }
@@ -144,23 +99,23 @@ ProfilePoints read_profile_csv_points(std::istream& in, const std::string& sourc
     data_started = true;
     if (!tolerant || n_cols > 0) {
       if (tolerant ? fields.size() < n_cols : fields.size() != n_cols) {
-        fail(source_name, line_no,
-             "expected " + std::to_string(n_cols) + " columns, got " +
-                 std::to_string(fields.size()));
+        fail_at(source_name, line_no,
+                "expected " + std::to_string(n_cols) + " columns, got " +
+                    std::to_string(fields.size()));
       }
     } else if (fields.size() < 2) {
-      fail(source_name, line_no,
-           "expected two numbers 'y_mm,z_mm', got '" + std::string(text) + "'");
+      fail_at(source_name, line_no,
+              "expected two numbers 'y_mm,z_mm', got '" + std::string(text) + "'");
     }
     points.y_mm.push_back(parse_number(fields[y_col], source_name, line_no, "y_mm"));
     points.z_mm.push_back(parse_number(fields[z_col], source_name, line_no, "z_mm"));
     points.line.push_back(line_no);
   }
   if (!have_header && !tolerant) {
-    fail(source_name, line_no, "no header line (y_mm,z_mm) found");
+    fail_at(source_name, line_no, "no header line (y_mm,z_mm) found");
   }
   if (points.y_mm.size() < 2) {
-    fail(source_name, line_no, "fewer than 2 points");
+    fail_at(source_name, line_no, "fewer than 2 points");
   }
   return points;
 }
@@ -177,9 +132,9 @@ SampledProfile read_profile_csv(std::istream& in, const std::string& source_name
   for (std::size_t i = 1; i < profile.y_mm.size(); ++i) {
     const double dy = profile.y_mm[i] - profile.y_mm[i - 1];
     if (decreasing ? !(dy < 0.0) : !(dy > 0.0)) {
-      fail(source_name, lines[i],
-           std::string("y_mm is not strictly ") + (decreasing ? "decreasing" : "increasing") +
-               " (previous point at line " + std::to_string(lines[i - 1]) + ")");
+      fail_at(source_name, lines[i],
+              std::string("y_mm is not strictly ") + (decreasing ? "decreasing" : "increasing") +
+                  " (previous point at line " + std::to_string(lines[i - 1]) + ")");
     }
   }
   if (decreasing) {

@@ -19,21 +19,6 @@ namespace tread::profile {
 
 namespace {
 
-[[noreturn]] void fail(const std::string& source, std::size_t line, const std::string& message) {
-  throw std::runtime_error(source + ":" + std::to_string(line) + ": " + message);
-}
-
-std::string_view trim(std::string_view s) {
-  const auto is_space = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; };
-  while (!s.empty() && is_space(s.front())) {
-    s.remove_prefix(1);
-  }
-  while (!s.empty() && is_space(s.back())) {
-    s.remove_suffix(1);
-  }
-  return s;
-}
-
 /// The text before an unquoted '!' (SIMPACK's comment character) or '%' (CONTACT's).
 std::string_view strip_comment(std::string_view s) {
   bool quoted = false;
@@ -47,15 +32,9 @@ std::string_view strip_comment(std::string_view s) {
   return s;
 }
 
+/// A finite number filling the whole (trimmed) field.
 bool parse_double(std::string_view text, double& value) {
-  text = trim(text);
-  const char* first = text.data();
-  const char* last = text.data() + text.size();
-  if (first != last && *first == '+') {
-    ++first;
-  }
-  const auto [ptr, ec] = std::from_chars(first, last, value);
-  return ec == std::errc{} && ptr == last && first != last && std::isfinite(value);
+  return parse_number_text(trim_blanks(text), value) && std::isfinite(value);
 }
 
 struct Setting {
@@ -81,7 +60,7 @@ SimpackPoints read_simpack_points(std::istream& in, const std::string& source_na
   while (std::getline(in, line)) {
     ++line_no;
     strip_utf8_bom(line, line_no);
-    const std::string_view text = trim(strip_comment(line));
+    const std::string_view text = trim_blanks(strip_comment(line));
     if (text.empty()) {
       continue;
     }
@@ -92,7 +71,7 @@ SimpackPoints read_simpack_points(std::istream& in, const std::string& source_na
     }
     if (text == "point.begin") {
       if (block != "spline") {
-        fail(source_name, line_no, "point.begin outside a spline block");
+        fail_at(source_name, line_no, "point.begin outside a spline block");
       }
       block = "point";
       saw_points = true;
@@ -115,27 +94,27 @@ SimpackPoints read_simpack_points(std::istream& in, const std::string& source_na
       double y = 0.0;
       double z = 0.0;
       if (!parse_double(a, y) || !parse_double(b, z)) {
-        fail(source_name, line_no,
-             "expected a point 'y z [weight]', got '" + std::string(text) + "'");
+        fail_at(source_name, line_no,
+                "expected a point 'y z [weight]', got '" + std::string(text) + "'");
       }
       points.push_back({y, z, line_no});
       continue;
     }
     const std::size_t eq = text.find('=');
     if (eq == std::string_view::npos || block.empty()) {
-      fail(source_name, line_no, "unexpected line '" + std::string(text) + "'");
+      fail_at(source_name, line_no, "unexpected line '" + std::string(text) + "'");
     }
-    std::string value(trim(text.substr(eq + 1)));
+    std::string value(trim_blanks(text.substr(eq + 1)));
     if (value.size() >= 2 && value.front() == '\'' && value.back() == '\'') {
       value = value.substr(1, value.size() - 2);
     }
-    settings[block + "." + std::string(trim(text.substr(0, eq)))] = {value, line_no};
+    settings[block + "." + std::string(trim_blanks(text.substr(0, eq)))] = {value, line_no};
   }
   if (!saw_header) {
-    fail(source_name, line_no, "no header.begin … header.end block");
+    fail_at(source_name, line_no, "no header.begin … header.end block");
   }
   if (!saw_points || points.size() < 2) {
-    fail(source_name, line_no, "no point block with at least 2 points");
+    fail_at(source_name, line_no, "no point block with at least 2 points");
   }
 
   const auto number = [&](const std::string& key, double fallback) {
@@ -145,7 +124,7 @@ SimpackPoints read_simpack_points(std::istream& in, const std::string& source_na
     }
     double v = 0.0;
     if (!parse_double(it->second.value, v)) {
-      fail(source_name, it->second.line, key + ": '" + it->second.value + "' is not a number");
+      fail_at(source_name, it->second.line, key + ": '" + it->second.value + "' is not a number");
     }
     return v;
   };
@@ -153,14 +132,14 @@ SimpackPoints read_simpack_points(std::istream& in, const std::string& source_na
   SimpackPoints result;
   const double type = number("header.type", -1.0);
   if (type < -0.5) {
-    fail(source_name, line_no, "header.type is missing (0 = rail, 1 = wheel)");
+    fail_at(source_name, line_no, "header.type is missing (0 = rail, 1 = wheel)");
   }
   if (std::fabs(type - 1.0) < 0.5) {
     result.type = SimpackProfileType::kWheel;
   } else if (std::fabs(type) < 0.5) {
     result.type = SimpackProfileType::kRail;
   } else {
-    fail(source_name, settings["header.type"].line, "header.type must be 0 (rail) or 1 (wheel)");
+    fail_at(source_name, settings["header.type"].line, "header.type must be 0 (rail) or 1 (wheel)");
   }
   if (const auto it = settings.find("spline.comment"); it != settings.end()) {
     result.comment = it->second.value;
@@ -168,7 +147,7 @@ SimpackPoints read_simpack_points(std::istream& in, const std::string& source_na
   const double len_f = number("spline.units.len.f", 1000.0);
   const double ang_f = number("spline.units.ang.f", 1.0);
   if (!(len_f > 0.0) || !(ang_f > 0.0)) {
-    fail(source_name, settings["spline.units.len.f"].line, "unit factors must be positive");
+    fail_at(source_name, settings["spline.units.len.f"].line, "unit factors must be positive");
   }
   const double to_mm = 1000.0 / len_f;
   const double shift_y = number("spline.shift.y", 0.0) * to_mm;
@@ -209,7 +188,7 @@ SimpackPoints read_simpack_points(std::istream& in, const std::string& source_na
     kept.push_back({y, z, p.line});
   }
   if (kept.size() < 2) {
-    fail(source_name, line_no, "fewer than 2 points left after the bounds");
+    fail_at(source_name, line_no, "fewer than 2 points left after the bounds");
   }
   result.points.name = source_name;
   for (const RawPoint& p : kept) {
@@ -238,9 +217,9 @@ SimpackProfile read_simpack_profile(std::istream& in, const std::string& source_
   for (std::size_t i = 1; i < kept.size(); ++i) {
     const double dy = kept[i].y - kept[i - 1].y;
     if (decreasing ? !(dy < 0.0) : !(dy > 0.0)) {
-      fail(source_name, kept[i].line,
-           "y is not strictly monotonic after processing (previous point at line " +
-               std::to_string(kept[i - 1].line) + ")");
+      fail_at(source_name, kept[i].line,
+              "y is not strictly monotonic after processing (previous point at line " +
+                  std::to_string(kept[i - 1].line) + ")");
     }
   }
   if (decreasing) {

@@ -1,11 +1,71 @@
 #pragma once
-// Small line-level clean-ups shared by the profile readers (CSV, MiniProf, SIMPACK).
+// The line and field handling shared by the profile readers (CSV, MiniProf, SIMPACK): one
+// definition of trimming, splitting, number parsing, the "file:line: message" error and the
+// clean-ups of what spreadsheets write.
 
 #include <algorithm>
+#include <charconv>
+#include <cstddef>
+#include <stdexcept>
 #include <string>
 #include <string_view>
+#include <system_error>
+#include <vector>
 
 namespace tread::profile {
+
+/// Throws std::runtime_error "source:line: message".
+[[noreturn]] inline void fail_at(const std::string& source, std::size_t line,
+                                 const std::string& message) {
+  throw std::runtime_error(source + ":" + std::to_string(line) + ": " + message);
+}
+
+/// Without leading and trailing blanks (space, tab, CR, LF).
+inline std::string_view trim_blanks(std::string_view s) {
+  const auto is_space = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; };
+  while (!s.empty() && is_space(s.front())) {
+    s.remove_prefix(1);
+  }
+  while (!s.empty() && is_space(s.back())) {
+    s.remove_suffix(1);
+  }
+  return s;
+}
+
+/// The non-empty fields of a line separated by any run of ',', ';', tab, space or CR.
+inline std::vector<std::string_view> split_fields(std::string_view line) {
+  std::vector<std::string_view> fields;
+  const auto is_sep = [](char c) {
+    return c == ',' || c == ';' || c == '\t' || c == ' ' || c == '\r';
+  };
+  std::size_t start = 0;
+  while (start < line.size()) {
+    while (start < line.size() && is_sep(line[start])) {
+      ++start;
+    }
+    std::size_t end = start;
+    while (end < line.size() && !is_sep(line[end])) {
+      ++end;
+    }
+    if (end > start) {
+      fields.push_back(line.substr(start, end - start));
+    }
+    start = end;
+  }
+  return fields;
+}
+
+/// The whole of `text` as a number (an optional leading '+' allowed); false if anything is left
+/// over or it is empty. Does not judge finiteness (callers do where it matters).
+inline bool parse_number_text(std::string_view text, double& value) {
+  const char* first = text.data();
+  const char* last = text.data() + text.size();
+  if (first != last && *first == '+') {
+    ++first;
+  }
+  const auto [ptr, ec] = std::from_chars(first, last, value);
+  return ec == std::errc{} && ptr == last && first != last;
+}
 
 /// Removes a UTF-8 byte-order mark at the start of the first line of a file (spreadsheet exports
 /// write one); without this the first header key or column name would not be recognised.
