@@ -21,6 +21,12 @@ std::string lower(std::string_view s) {
   return out;
 }
 
+// Lines starting with one of these are comments (MiniProf exports and the tools that read them
+// use all four).
+bool is_comment_marker(char c) {
+  return c == '#' || c == '!' || c == '%' || c == '"';
+}
+
 bool starts_with_number(std::string_view text) {
   const auto fields = split_fields(text);
   double v = 0.0;
@@ -43,7 +49,7 @@ MiniProfFile read_miniprof(std::istream& in, const std::string& source_name) {
     ++line_no;
     strip_utf8_bom(line, line_no);
     const std::string_view text = trim_blanks(line);
-    if (!text.empty() && text.front() == '#') {
+    if (!text.empty() && is_comment_marker(text.front())) {
       continue;
     }
     if (in_header) {
@@ -54,14 +60,26 @@ MiniProfFile read_miniprof(std::istream& in, const std::string& source_name) {
       if (!starts_with_number(text)) {
         const std::size_t eq = text.find('=');
         if (eq == std::string_view::npos) {
-          fail_at(source_name, line_no,
-                  "expected a header line Key=Value or a point, got '" + std::string(text) + "'");
+          // Older exports start with plain words ("MiniProf", a section name): kept, not used.
+          out.header.emplace_back(std::string(text), std::string());
+          continue;
         }
         const std::string key(trim_blanks(text.substr(0, eq)));
         const std::string value(trim_blanks(text.substr(eq + 1)));
         out.header.emplace_back(key, value);
         const std::string k = lower(key);
-        if (k == "columndef") {
+        if (k == "xoffset" || k == "yoffset") {
+          double offset_mm = 0.0;
+          std::string number = value;  // a lone decimal comma is read as a point
+          if (number.find('.') == std::string::npos) {
+            std::replace(number.begin(), number.end(), ',', '.');
+          }
+          if (!parse_number_text(number, offset_mm) || !std::isfinite(offset_mm)) {
+            fail_at(source_name, line_no, key + " '" + value + "' is not a number (mm)");
+          }
+          (k == "xoffset" ? out.x_offset_mm : out.y_offset_mm) = offset_mm;
+          (k == "xoffset" ? out.x_offset_line : out.y_offset_line) = line_no;
+        } else if (k == "columndef") {
           const auto names = split_fields(value);
           std::size_t found = 0;
           for (std::size_t i = 0; i < names.size(); ++i) {
@@ -94,6 +112,12 @@ MiniProfFile read_miniprof(std::istream& in, const std::string& source_name) {
     }
     const std::string data = with_decimal_points(text);
     const auto fields = split_fields(data);
+    if (text.find('=') != std::string_view::npos) {
+      fail_at(source_name, line_no,
+              "header line '" + std::string(text) +
+                  "' after the points (the header ends at the "
+                  "first blank line)");
+    }
     const std::size_t need = std::max(x_col, y_col) + 1;
     if (fields.size() < need) {
       fail_at(source_name, line_no,
@@ -106,8 +130,8 @@ MiniProfFile read_miniprof(std::istream& in, const std::string& source_name) {
         !std::isfinite(x) || !std::isfinite(y)) {
       fail_at(source_name, line_no, "expected a point 'X Y', got '" + std::string(text) + "'");
     }
-    out.points.y_mm.push_back(x);
-    out.points.z_mm.push_back(y);
+    out.points.y_mm.push_back(x + out.x_offset_mm);
+    out.points.z_mm.push_back(y + out.y_offset_mm);
     out.points.line.push_back(line_no);
   }
   if (out.points.y_mm.size() < 2) {

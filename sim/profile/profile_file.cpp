@@ -7,6 +7,8 @@
 #include <fstream>
 #include <limits>
 #include <stdexcept>
+#include <string>
+#include <tuple>
 
 #include "profile/miniprof_profile.hpp"
 #include "profile/profile_csv.hpp"
@@ -528,6 +530,19 @@ ProfileFile read_profile_file(const std::filesystem::path& path, ProfileRole rol
                                  " profile, but it was given as the " + role_name(role));
       }
       MiniProfFile read = read_miniprof(in, file);
+      std::string offsets;
+      for (const auto& [name, mm, line] :
+           {std::tuple{"XOffset", read.x_offset_mm, read.x_offset_line},
+            std::tuple{"YOffset", read.y_offset_mm, read.y_offset_line}}) {
+        if (line > 0) {
+          offsets += (offsets.empty() ? "" : ", ") + std::string(name) + " = " + num(mm) +
+                     " mm (line " + std::to_string(line) + ")";
+        }
+      }
+      if (!offsets.empty()) {
+        out.warnings.push_back(file + ": the header's " + offsets +
+                               " added to every point's X and Y as read");
+      }
       out.header = std::move(read.header);
       points = std::move(read.points);
       if (role == ProfileRole::kWheel) {

@@ -5,9 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -189,13 +191,75 @@ TEST(ProfileFile, MiniProfErrorsNameFileAndLine) {
     }
     return std::string();
   };
-  EXPECT_EQ(err("Date=1\nnot a header\n"),
-            "m.whl:2: expected a header line Key=Value or a point, got 'not a header'");
+  EXPECT_EQ(err("Date=1\n\n1 2\nSide=Left\n"),
+            "m.whl:4: header line 'Side=Left' after the points (the header ends at the first "
+            "blank line)");
+  EXPECT_EQ(err("XOffset=left\n\n1 2\n2 3\n"), "m.whl:1: XOffset 'left' is not a number (mm)");
   EXPECT_EQ(err("ColumnDef=A,B\n\n1 2\n"),
             "m.whl:1: ColumnDef 'A,B' does not name the columns X and Y");
   EXPECT_EQ(err("Points=3\n\n1 2\n2 3\n"), "m.whl:1: the header declares 3 points, the file has 2");
   EXPECT_EQ(err("A=1\n\n1 2\n2 x\n"), "m.whl:4: expected a point 'X Y', got '2 x'");
   EXPECT_EQ(err("ColumnDef=Y,X,F\n\n1 2 0\n2\n"), "m.whl:4: expected at least 2 columns, got 1");
+}
+
+TEST(ProfileFile, MiniProfPlainWordsCommentsAndOffsets) {
+  std::istringstream in(
+      "MiniProf\n! exported\nDate=1\nXOffset=1.5\nYoffset=-0,25\n\n% first point\n1 2\n"
+      "\"x\n2 3\n");
+  const MiniProfFile m = read_miniprof(in, "m.ban");
+  ASSERT_EQ(m.header.size(), 4u);
+  EXPECT_EQ(m.header[0].first, "MiniProf");
+  EXPECT_EQ(m.header[0].second, "");
+  EXPECT_DOUBLE_EQ(m.x_offset_mm, 1.5);
+  EXPECT_DOUBLE_EQ(m.y_offset_mm, -0.25);
+  EXPECT_EQ(m.x_offset_line, 4u);
+  EXPECT_EQ(m.y_offset_line, 5u);
+  ASSERT_EQ(m.points.y_mm.size(), 2u);
+  EXPECT_DOUBLE_EQ(m.points.y_mm[0], 2.5);
+  EXPECT_DOUBLE_EQ(m.points.z_mm[0], 1.75);
+  EXPECT_DOUBLE_EQ(m.points.y_mm[1], 3.5);
+  EXPECT_DOUBLE_EQ(m.points.z_mm[1], 2.75);
+  EXPECT_EQ(m.points.line[1], 10u);
+}
+
+TEST(ProfileFile, MiniProfOffsetsAreAppliedAndSaid) {
+  const fs::path dir = tread::testing::test_dir("miniprof_offsets");
+  std::ifstream src(corpus("uic60_measured.ban"));
+  std::stringstream body;
+  body << src.rdbuf();
+  const fs::path shifted = dir / "shifted.ban";
+  {
+    // Every point 3 mm to -y and 1 mm down, with the shift kept in the header: the same rail.
+    std::ofstream out(shifted);
+    std::string line;
+    bool header = true;
+    out << "XOffset=3\nYOffset=1\n";
+    while (std::getline(body, line)) {
+      if (header) {
+        out << line << '\n';
+        header = !line.empty();
+        continue;
+      }
+      std::replace(line.begin(), line.end(), ',', ' ');
+      std::istringstream fields(line);  // ColumnDef=Y, X, Flags
+      double x = 0.0;
+      double y = 0.0;
+      int flags = 0;
+      ASSERT_TRUE(fields >> y >> x >> flags) << line;
+      out << std::setprecision(17) << y - 1.0 << ", " << x - 3.0 << ", " << flags << '\n';
+    }
+  }
+  const ProfileFile a = read_profile_file(corpus("uic60_measured.ban"), ProfileRole::kRail);
+  const ProfileFile b = read_profile_file(shifted, ProfileRole::kRail);
+  bool said = false;
+  for (const auto& w : b.warnings) {
+    said = said || w.find("XOffset = 3.000 mm (line 1), YOffset = 1.000 mm (line 2) added") !=
+                       std::string::npos;
+  }
+  EXPECT_TRUE(said) << (b.warnings.empty() ? "" : b.warnings.back());
+  for (double y = -44.0; y <= 29.0; y += 0.5) {
+    EXPECT_NEAR(z_at(b.profile, y), z_at(a.profile, y), 1e-6) << y;
+  }
 }
 
 TEST(ProfileFile, ContactStyleUndercutRailKeepsItsUpperEnvelope) {
