@@ -44,30 +44,34 @@ std::uint32_t isqrt64(std::uint64_t v);
 
 }  // namespace kernel
 
-/// atan(x) in Q2.29 radians (|x| any; atan(±max) is ±π/2 to within a step).
-template <int F>
-Angle atan(Q<F> x) {
-  static_assert(F <= 30, "atan: at most 30 fraction bits");
-  if (x.raw == 0) {
+/// atan(raw·2^−frac) in Q2.29 radians, for a format chosen at run time (0 ≤ frac ≤ 30).
+inline Angle atan_of(std::int32_t raw, int frac) {
+  if (raw == 0) {
     return Angle{0};
   }
-  const bool negative = x.raw < 0;
-  const std::uint64_t a = negative ? static_cast<std::uint64_t>(-std::int64_t{x.raw})
-                                   : static_cast<std::uint64_t>(x.raw);
-  const std::uint64_t one = std::uint64_t{1} << F;
+  const bool negative = raw < 0;
+  const std::uint64_t a =
+      negative ? static_cast<std::uint64_t>(-std::int64_t{raw}) : static_cast<std::uint64_t>(raw);
+  const std::uint64_t one = std::uint64_t{1} << frac;
   std::int64_t result_q30 = 0;
   if (a <= one) {
-    const auto t = static_cast<std::int32_t>((a << (30 - F)));
-    result_q30 = kernel::atan_unit_q30(t);
+    result_q30 = kernel::atan_unit_q30(static_cast<std::int32_t>(a << (30 - frac)));
   } else {
     // atan(a) = π/2 − atan(1/a), 1/a in Q30 rounded.
-    const std::uint64_t num = (std::uint64_t{1} << (30 + F));
+    const std::uint64_t num = std::uint64_t{1} << (30 + frac);
     const auto inv = static_cast<std::int32_t>((num + a / 2) / a);
     constexpr std::int64_t kHalfPiQ30 = 1686629713;  // π/2·2^30
     result_q30 = kHalfPiQ30 - kernel::atan_unit_q30(inv);
   }
   const auto r = static_cast<std::int32_t>((result_q30 + 1) >> 1);  // Q30 → Q29
   return Angle{negative ? -r : r};
+}
+
+/// atan(x) in Q2.29 radians (|x| any; atan(±max) is ±π/2 to within a step).
+template <int F>
+Angle atan(Q<F> x) {
+  static_assert(F <= 30, "atan: at most 30 fraction bits");
+  return atan_of(x.raw, F);
 }
 
 /// sin and cos of an angle in radians, Q1.30 results.
