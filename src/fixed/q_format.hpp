@@ -62,13 +62,17 @@ constexpr std::int64_t shift_round(std::int64_t v, int shift) {
   return (v + (std::int64_t{1} << (shift - 1))) >> shift;
 }
 
+/// Called only by a constant outside its format; not constexpr, so such a constant does not
+/// compile.
+inline void constant_outside_the_format() {}
+
 /// A constant: consteval so that no floating point reaches an image.
 template <int F>
 consteval Q<F> q(double value) {
   const double scaled = value * static_cast<double>(std::int64_t{1} << F);
   const double rounded = scaled < 0.0 ? scaled - 0.5 : scaled + 0.5;
   if (!(rounded < 2147483647.5) || !(rounded > -2147483648.5)) {
-    throw "q<F>(value): value outside the format";  // a compile error in a constant expression
+    constant_outside_the_format();  // not constexpr: a compile error in a constant expression
   }
   return Q<F>{static_cast<std::int32_t>(rounded)};
 }

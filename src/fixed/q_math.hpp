@@ -74,23 +74,28 @@ Angle atan(Q<F> x) {
   return atan_of(x.raw, F);
 }
 
-/// sin and cos of an angle in radians, Q1.30 results.
-template <int F>
-void sin_cos(Q<F> angle, Unit& sin_out, Unit& cos_out) {
+/// sin and cos of raw·2^−frac radians (0 ≤ frac ≤ 31), Q1.30 results.
+inline void sin_cos_of(std::int32_t raw, int frac, Unit& sin_out, Unit& cos_out) {
   // Binary angle: turns = angle/(2π)·2^32 mod 2^32. The factor 2^32/(2π) is used with 64
   // fraction bits (integer part and a 32-bit fraction), so even a Q15.16 angle of 32768 rad is
   // converted to within a fraction of a step; only the low 32 bits (the angle mod one turn) are
   // kept.
   constexpr std::int64_t kTurnsPerRadInt = 683565275;    // ⌊2^32/(2π)⌋
   constexpr std::int64_t kTurnsPerRadFrac = 2475754826;  // the fraction·2^32
-  const std::int64_t whole = std::int64_t{angle.raw} * kTurnsPerRadInt;
-  const std::int64_t part = (std::int64_t{angle.raw} * kTurnsPerRadFrac) >> 32;
-  const std::int64_t turns = shift_round(whole + part, F);
+  const std::int64_t whole = std::int64_t{raw} * kTurnsPerRadInt;
+  const std::int64_t part = (std::int64_t{raw} * kTurnsPerRadFrac) >> 32;
+  const std::int64_t turns = shift_round(whole + part, frac);
   std::int32_t s = 0;
   std::int32_t c = 0;
   kernel::sin_cos_turns(static_cast<std::uint32_t>(static_cast<std::uint64_t>(turns)), s, c);
   sin_out = Unit{s};
   cos_out = Unit{c};
+}
+
+/// sin and cos of an angle in radians, Q1.30 results.
+template <int F>
+void sin_cos(Q<F> angle, Unit& sin_out, Unit& cos_out) {
+  sin_cos_of(angle.raw, F, sin_out, cos_out);
 }
 template <int F>
 Unit sin(Q<F> angle) {

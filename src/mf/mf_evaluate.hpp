@@ -71,6 +71,30 @@ using MaskOf = decltype(std::declval<const T&>() < std::declval<const T&>());
 template <typename T>
 constexpr bool is_lanes = !std::is_same_v<MaskOf<T>, bool>;
 
+/// Fixed-point scalars (fixed::Fixed64) mark themselves with a kIsFixedPoint member.
+template <typename T>
+constexpr bool is_fixed_point = requires {
+  T::kIsFixedPoint;
+};
+
+/// √(a² + b²). Floating point: as written (so its results do not change by a bit). Fixed point:
+/// scaled by the larger magnitude, so squares of large values (a side-slip speed tan α·Vx near
+/// α = 90°) do not leave the format.
+template <typename T>
+T hypot_of(const T& a, const T& b) {
+  if constexpr (is_fixed_point<T>) {
+    const T x = abs(a);
+    const T y = abs(b);
+    const T big = x < y ? y : x;
+    const T small = x < y ? x : y;
+    if (!(big > T(0))) return big;  // 0 (or invalid)
+    const T ratio = small / big;
+    return big * sqrt(T(1) + ratio * ratio);
+  } else {
+    return sqrt(a * a + b * b);
+  }
+}
+
 inline bool any_lane(bool b) {
   return b;
 }
@@ -240,10 +264,10 @@ void rolling_radius(const MfParameters<P>& p, Prepared<T>& in) {
   T re_old = r0;
   T omega = T(0);
   T romega = r0 * p.q_re0;
-  // MFeval: while |Re_old − Re| > 1e-9 (in float: 1e-6, the 1e-9 step is below float's
-  // resolution). The cap only guards against a diverging file.
+  // MFeval: while |Re_old − Re| > 1e-9 (in float and fixed point: 1e-6, the 1e-9 step is at or
+  // below their resolution of a radius). The cap only guards against a diverging file.
   // Lanes iterate until all have converged; a converged lane keeps its values.
-  const T tolerance = T(std::is_same_v<T, float> || is_lanes<T> ? 1e-6 : 1e-9);
+  const T tolerance = T(std::is_same_v<T, float> || is_lanes<T> || is_fixed_point<T> ? 1e-6 : 1e-9);
   for (int i = 0; i < 100; ++i) {
     const auto active = abs(re_old - re) > tolerance;
     if (!any_lane(active)) break;
@@ -343,7 +367,7 @@ Prepared<T> prepare(const MfParameters<P>& p, const MfInput<T>& input, const MfO
     const T fz0_prime = p.lfzo * p.fnomin_n;
     const T dfz = (fz - fz0_prime) / fz0_prime;
     const T vsy = -mf_tan(alpha) * abs(vx);
-    T vc_prime = sqrt(vx * vx + vsy * vsy);
+    T vc_prime = hypot_of(vx, vsy);
     in.epsilong = p.pecp1 * (T(1) + p.pecp2 * dfz);
     vc_prime = if_else(abs(vx) < p.vxlow_mps, p.vxlow_mps * sgn_nz(vx), vc_prime);
     const T psi_dot = -phit * vc_prime;
@@ -359,7 +383,7 @@ Basic<T> basic(const MfParameters<P>& p, const Prepared<T>& in, const MfOptions&
   const T vcx = in.vx;
   const T tan_alpha = mf_tan(in.alpha);
   const T vsy = tan_alpha * abs(vcx);
-  const T vc = sqrt(vcx * vcx + vsy * vsy);
+  const T vc = hypot_of(vcx, vsy);
   b.fz0_prime = p.lfzo * p.fnomin_n;
   b.dfz = (in.fz - b.fz0_prime) / b.fz0_prime;
   b.dpi = (in.p - p.nompres_pa) / p.nompres_pa;
@@ -767,8 +791,8 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
     const T kk = div_or(kxk, kya_prime, T(0)) * in.kappa;
     const T tan_r = mf_tan(alphar);
     const T tan_t = mf_tan(alphat);
-    alphar_eq = mf_atan(sqrt(tan_r * tan_r + kk * kk)) * sgn(alphar);
-    const T alphat_eq = mf_atan(sqrt(tan_t * tan_t + kk * kk)) * sgn(alphat);
+    alphar_eq = mf_atan(hypot_of(tan_r, kk)) * sgn(alphar);
+    const T alphat_eq = mf_atan(hypot_of(tan_t, kk)) * sgn(alphat);
     const T bta = bt * alphat_eq;
     gxa_a = gxa_args(p, in, b, options);
     lane_trail = cores.add(ct, bta, et, true);
@@ -805,9 +829,12 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
     const T drp = ddrp * mf_sin(cdrp * mf_atan(bdrp * r0 * in.phit));
     const T mzp90 = mzp_inf * (T(2) / pi<T>()) * mf_atan(p.qcrp2 * r0 * abs(in.phit)) * gyk;
     // MFeval: acos(Mzp90/|Drp|), NaN for a ratio above 1 (e.g. 0/0 at φt = 0). Here the ratio
-    // is clamped to [−1, 1], and Drp = 0 gives the turn-slip-free Cr = 1.
-    const T ratio = max_of(T(-1), min_of(T(1), mzp90 / abs(drp)));
-    zeta7 = if_else(is_zero(drp), T(1), (T(2) / pi<T>()) * acos(ratio));
+    // is clamped to [−1, 1]; Drp = 0 gives the turn-slip-free Cr = 1 where Mzp90 = 0 too (φt = 0),
+    // and otherwise the limit of the clamped ratio, sign(Mzp90) (Cr = 0 or 2): Drp is 0 at φt ≠ 0
+    // when Kzγr0 is (e.g. at Fz = FNOMIN for a file without QDZ10/QDZ11), and Cr must not jump
+    // there.
+    const T ratio = max_of(T(-1), min_of(T(1), div_or(mzp90, abs(drp), sgn(mzp90))));
+    zeta7 = if_else(is_zero(drp) && is_zero(mzp90), T(1), (T(2) / pi<T>()) * acos(ratio));
     zeta8 = T(1) + drp;
   }
   const T dr =
