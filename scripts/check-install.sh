@@ -3,7 +3,8 @@
 # `cmake --install` of its build to build/install/<preset>, checks that every header there finds
 # the headers it includes, and builds examples/consumer against that prefix alone (find_package
 # (tread)), cross builds with the toolchain and CPU files the package installed. A host consumer
-# must run and print "consumer: sane"; a bare-metal one must link an Arm ELF image.
+# must run and print "consumer: sane" (a Linux cross one too, under the build's emulator); a
+# bare-metal one must link an Arm ELF image.
 #
 #   scripts/check-install.sh [--no-build] [--out DIR] [PRESET | BUILD_DIR]...
 #
@@ -85,7 +86,9 @@ check_one() {
   toolchain=$(config_value "$config" tread_TOOLCHAIN_FILE)
   cpu_file=$(config_value "$config" tread_CPU_FILE)
   if [[ -n $toolchain ]]; then
-    args+=(-DCMAKE_TOOLCHAIN_FILE="$prefix/share/tread/toolchains/$toolchain")
+    # tread_DIR too: the Linux cross toolchains confine find_package to their sysroot.
+    args+=(-DCMAKE_TOOLCHAIN_FILE="$prefix/share/tread/toolchains/$toolchain"
+      -Dtread_DIR="$prefix/lib/cmake/tread")
     [[ -z $cpu_file ]] || args+=(-DTREAD_CPU_FILE="$prefix/share/tread/cpu/$cpu_file")
   else
     args+=(-DCMAKE_CXX_COMPILER="$(cache_value "$build" CMAKE_CXX_COMPILER)")
@@ -104,10 +107,15 @@ check_one() {
     file "$image" | grep -q 'ELF 32-bit LSB executable, ARM' ||
       { echo "check-install: $image is not an Arm executable" >&2; return 1; }
     echo "bare-metal image: $(arm-none-eabi-size "$image" | tail -n 1 | awk '{print $1 " B text, " $2 " B data, " $3 " B bss"}')"
-  elif [[ -n $toolchain ]]; then
-    echo "cross consumer built: $(file -b "$consumer/tread_consumer" | cut -d, -f1-2)"
   else
-    "$consumer/tread_consumer" | tee "$consumer/output.txt"
+    # A Linux cross consumer runs under the build's emulator (qemu-user), if it has one.
+    local emulator=()
+    if [[ -n $toolchain ]]; then
+      echo "cross consumer: $(file -b "$consumer/tread_consumer" | cut -d, -f1-2)"
+      IFS=';' read -r -a emulator <<<"$(cache_value "$build" CMAKE_CROSSCOMPILING_EMULATOR)"
+      ((${#emulator[@]})) || return 0
+    fi
+    "${emulator[@]}" "$consumer/tread_consumer" | tee "$consumer/output.txt"
     grep -qx 'consumer: sane' "$consumer/output.txt"
   fi
 }
