@@ -99,19 +99,22 @@ check_one() {
   cmake --build "$consumer" -j "$jobs" >/dev/null
 
   local system
-  system=$(cache_value "$consumer" CMAKE_SYSTEM_NAME)
-  [[ -n $system ]] || system=$(sed -n 's/^set(CMAKE_SYSTEM_NAME "\(.*\)")$/\1/p' \
+  system=$(sed -n 's/^set(CMAKE_SYSTEM_NAME "\(.*\)")$/\1/p' \
     "$consumer"/CMakeFiles/*/CMakeSystem.cmake | head -n 1)
-  if [[ -n $toolchain && $system == Generic ]]; then
+  if [[ $system == Generic ]]; then
     local image=$consumer/tread_consumer.elf
-    file "$image" | grep -q 'ELF 32-bit LSB executable, ARM' ||
-      { echo "check-install: $image is not an Arm executable" >&2; return 1; }
+    local header
+    header=$(readelf -h "$image")
+    if ! grep -Eq 'Type: +EXEC' <<<"$header" || ! grep -Eq 'Machine: +ARM$' <<<"$header"; then
+      echo "check-install: $image is not an Arm executable" >&2
+      return 1
+    fi
     echo "bare-metal image: $(arm-none-eabi-size "$image" | tail -n 1 | awk '{print $1 " B text, " $2 " B data, " $3 " B bss"}')"
   else
     # A Linux cross consumer runs under the build's emulator (qemu-user), if it has one.
     local emulator=()
     if [[ -n $toolchain ]]; then
-      echo "cross consumer: $(file -b "$consumer/tread_consumer" | cut -d, -f1-2)"
+      echo "cross consumer: $(readelf -h "$consumer/tread_consumer" | sed -n 's/^ *Machine: *//p')"
       IFS=';' read -r -a emulator <<<"$(cache_value "$build" CMAKE_CROSSCOMPILING_EMULATOR)"
       ((${#emulator[@]})) || return 0
     fi
