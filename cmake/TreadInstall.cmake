@@ -35,6 +35,18 @@ foreach(backend IN LISTS TREAD_HAL_BACKENDS)
   set_target_properties(tread_hal_${backend} PROPERTIES EXPORT_NAME hal_${backend})
 endforeach()
 
+# The warnings and the core's flags are build-only: a library that links them plainly
+# (PRIVATE tread_warnings, as a new HAL backend may) is given $<BUILD_INTERFACE:...> here, so the
+# export never asks a consumer for them.
+foreach(target IN LISTS _tread_export_targets)
+  get_target_property(_tread_libs ${target} INTERFACE_LINK_LIBRARIES)
+  if(_tread_libs)
+    list(TRANSFORM _tread_libs REPLACE "^\\$<LINK_ONLY:(tread_warnings|tread_core_flags)>$"
+                                       "$<LINK_ONLY:$<BUILD_INTERFACE:\\1>>")
+    set_property(TARGET ${target} PROPERTY INTERFACE_LINK_LIBRARIES "${_tread_libs}")
+  endif()
+endforeach()
+
 foreach(target IN LISTS _tread_export_targets)
   if(target STREQUAL "tread_core_flags")
     continue()
