@@ -2,6 +2,7 @@
 // coefficients) and one lookup in the first flashed wheel–rail contact table. The includes are the
 // ones the tread tree itself writes.
 #include <cmath>
+#include <cstdint>
 
 #include "core/status.hpp"
 #include "hal_concepts.hpp"
