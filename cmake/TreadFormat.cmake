@@ -7,6 +7,7 @@ if(CLANG_FORMAT_EXE)
        ${PROJECT_SOURCE_DIR}/sim/*.hpp ${PROJECT_SOURCE_DIR}/sim/*.cpp
        ${PROJECT_SOURCE_DIR}/tests/*.hpp ${PROJECT_SOURCE_DIR}/tests/*.cpp
        ${PROJECT_SOURCE_DIR}/firmware/*.hpp ${PROJECT_SOURCE_DIR}/firmware/*.cpp
+       ${PROJECT_SOURCE_DIR}/examples/*.hpp ${PROJECT_SOURCE_DIR}/examples/*.cpp
        ${PROJECT_SOURCE_DIR}/lut/*.hpp ${PROJECT_SOURCE_DIR}/lut/*.cpp)
   list(FILTER _tread_fmt_files EXCLUDE REGEX "/lut/generated/")
   add_custom_target(format-check

@@ -54,6 +54,18 @@ else
   total_failed=$((total_failed + 1))
 fi
 
+echo "=== installed package: bash scripts/check-install.sh (host, cortex-m4f) ==="
+# cmake --install of the host and Cortex-M4F builds, and examples/consumer built against each
+# (find_package(tread)); the host consumer runs.
+if bash scripts/check-install.sh host cortex-m4f >"$log_dir/check-install.log" 2>&1; then
+  grep -E "^(headers|bare-metal image|consumer|check-install):" "$log_dir/check-install.log"
+  total_passed=$((total_passed + 1))
+else
+  tail -20 "$log_dir/check-install.log"
+  failed_steps+=("check-install")
+  total_failed=$((total_failed + 1))
+fi
+
 echo "=== format check ==="
 if cmake --build --preset host --target format-check; then
   total_passed=$((total_passed + 1))

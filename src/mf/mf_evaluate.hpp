@@ -1005,4 +1005,13 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
   return out;
 }
 
+// float and double are compiled once, in the core (mf_evaluate.cpp), with the core's flags and
+// optimisation: a program using this header calls those instead of compiling (and inlining) its own
+// copy with its own. Otherwise the numbers would depend on the caller's build: on a Cortex-M4F,
+// a·b + c becomes one vfma.f32 at -O2 and a vmul and a vadd at -O0.
+extern template MfOutput<float> evaluate<float>(const MfParameters<float>&, const MfInput<float>&,
+                                                const MfOptions&);
+extern template MfOutput<double> evaluate<double>(const MfParameters<double>&,
+                                                  const MfInput<double>&, const MfOptions&);
+
 }  // namespace tread::mf
