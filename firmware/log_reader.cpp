@@ -10,6 +10,7 @@ Status LogReader::open(std::string_view path) noexcept {
     return opened.status;
   }
   file_ = opened.value;
+  open_ = true;
   begin_ = end_ = 0;
   eof_ = false;
   return Status::ok;
@@ -63,9 +64,9 @@ Status LogReader::next(std::string_view& line) noexcept {
 }
 
 void LogReader::close() noexcept {
-  if (file_.value >= 0) {
+  if (open_) {
     static_cast<void>(semihost::close(file_));
-    file_ = {};
+    open_ = false;
   }
 }
 

@@ -31,7 +31,8 @@ class LogReader {
  private:
   Status fill() noexcept;
 
-  hal::semihost::Handle file_{};
+  hal::semihost::Handle file_{0};  // zero-initialised: the object can live in .bss
+  bool open_{false};
   std::array<char, 1024> buffer_{};
   std::size_t begin_{0};
   std::size_t end_{0};

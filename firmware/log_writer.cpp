@@ -12,6 +12,7 @@ Status LogWriter::open(std::string_view path, std::string_view interface) noexce
     return opened.status;
   }
   file_ = opened.value;
+  open_ = true;
   interface_len_ = interface.size() < interface_.size() ? interface.size() : interface_.size();
   for (std::size_t i = 0; i < interface_len_; ++i) {
     interface_[i] = interface[i];
@@ -22,7 +23,7 @@ Status LogWriter::open(std::string_view path, std::string_view interface) noexce
 }
 
 void LogWriter::write(const proto::CanFrame& frame, std::int64_t time_ns) noexcept {
-  if (file_.value < 0) return;
+  if (!open_) return;
   if (buffer_.size() - used_ < proto::kCandumpLineMax + 1) {
     flush();
   }
@@ -40,11 +41,11 @@ void LogWriter::flush() noexcept {
 }
 
 Status LogWriter::close() noexcept {
-  if (file_.value < 0) return status_;
+  if (!open_) return status_;
   flush();
   const Status closed = semihost::close(file_);
   if (status_ == Status::ok) status_ = closed;
-  file_ = {};
+  open_ = false;
   return status_;
 }
 

@@ -29,7 +29,8 @@ class LogWriter {
  private:
   void flush() noexcept;
 
-  hal::semihost::Handle file_{};
+  hal::semihost::Handle file_{0};  // zero-initialised: the object can live in .bss
+  bool open_{false};
   std::array<char, 32> interface_{};
   std::size_t interface_len_{0};
   std::array<char, 2048> buffer_{};

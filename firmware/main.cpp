@@ -1,15 +1,18 @@
 // The firmware image: replays a recorded rig log through the real node, cycle by cycle, and writes
 // the frames the node transmits as a candump log — on the target, through semihosting:
 //
-//   tread_firmware --replay IN.log --tx-log OUT.log [--fd] [--sync] [--period-us N] [--timing]
+//   tread_firmware --replay IN.log --tx-log OUT.log [--expect HOST_TX.log] [--fd] [--sync]
+//                  [--period-us N] [--timing]
 //
 // (qemu: -semihosting-config enable=on,target=native,arg=tread_firmware,arg=--replay,arg=IN,...).
 // The node is the host's `tread node` with its defaults: MF 6.1 (data/tyres/
 // MagicFormula61_Parameters.tir, useMode 111) on 4 wheels, the flashed S1002/60E1 1:40 contact
 // table on 2 wheelsets, 10 ms input timeout; the schedule is node/log_replay.hpp, as the host's
 // replay. --timing adds instruction counts (SysTick ticks) per node cycle, MF evaluation and
-// contact lookup. The exit status (SYS_EXIT_EXTENDED) is 0 when the log replayed, 1 for a bad log,
-// 2 for bad arguments or I/O.
+// contact lookup. --expect checks every transmitted frame against the host's replay of the same
+// log (firmware/tx_check.hpp: same time and message, each signal within one quantisation step).
+// The exit status (SYS_EXIT_EXTENDED) is 0 when the log replayed (and matched), 1 for a bad log
+// or a mismatch, 2 for bad arguments or I/O.
 #include <array>
 #include <cstdint>
 #include <string_view>
@@ -28,6 +31,7 @@
 #include "text_line.hpp"
 #include "timed_node.hpp"
 #include "timing_benchmarks.hpp"
+#include "tx_check.hpp"
 
 #ifdef TREAD_HEAP_PROBE
 #include "core/heap_probe.hpp"
@@ -45,6 +49,7 @@ constexpr int kExitUsage = 2;
 struct Options {
   std::string_view replay;
   std::string_view tx_log;
+  std::string_view expect;
   bool fd{false};
   bool sync{false};
   std::int64_t period_us{1000};
@@ -84,6 +89,8 @@ Options parse_options(std::string_view cmdline) {
       o.replay = words[++i];
     } else if (w == "--tx-log" && has_value) {
       o.tx_log = words[++i];
+    } else if (w == "--expect" && has_value) {
+      o.expect = words[++i];
     } else if (w == "--period-us" && has_value && parse_int(words[i + 1], o.period_us) &&
                o.period_us > 0) {
       ++i;
@@ -100,18 +107,20 @@ Options parse_options(std::string_view cmdline) {
   }
   if (o.replay.empty() || o.tx_log.empty()) {
     TextLine m;
-    fail(kExitUsage, m << "usage: tread_firmware --replay IN.log --tx-log OUT.log [--fd] [--sync] "
-                          "[--period-us N] [--timing]");
+    fail(kExitUsage, m << "usage: tread_firmware --replay IN.log --tx-log OUT.log "
+                          "[--expect HOST_TX.log] [--fd] [--sync] [--period-us N] [--timing]");
   }
   return o;
 }
 
-/// The replay's sink: the replayed frames into the TX log.
+/// The replay's sink: the replayed frames into the TX log (and the check, if any).
 struct TxSink {
   firmware::LogWriter* writer;
+  firmware::TxCheck* check;
   void on_logged_tx(const proto::CanFrame& /*frame*/, std::int64_t /*time_ns*/) noexcept {}
   void on_tx(const proto::CanFrame& frame, std::int64_t now_ns) noexcept {
     writer->write(frame, now_ns);
+    if (check != nullptr) check->check(frame, now_ns);
   }
 };
 
@@ -161,7 +170,13 @@ int main() {
     fail(kExitUsage, m << options.replay << ": cannot open");
   }
   static firmware::LogWriter writer;
-  TxSink sink{&writer};
+  static firmware::TxCheck check;
+  const bool checking = !options.expect.empty();
+  if (checking && check.open(options.expect, config.layout) != Status::ok) {
+    TextLine m;
+    fail(kExitUsage, m << options.expect << ": cannot open");
+  }
+  TxSink sink{&writer, checking ? &check : nullptr};
   node::LogReplay replay(timed, sink, options.period_us * 1000);
   std::string_view line;
   std::uint64_t line_no = 0;
@@ -211,6 +226,19 @@ int main() {
   if (counts.logged_tx_frames == 0) {
     TextLine m;
     fail(kExitBadLog, m << options.replay << ": holds no frames sent by the node");
+  }
+  if (checking) {
+    check.finish();
+    TextLine m;
+    m << "check " << check.frames() << " frames against " << options.expect << ": "
+      << check.identical() << " bit-identical, " << check.failures()
+      << " failed (a signal beyond one quantisation step, another time or message, a bad CRC, a "
+         "frame too many or too few)\n";
+    semihost::console(m.c_str());
+    if (!check.passed()) {
+      TextLine f;
+      fail(kExitBadLog, f << "check FAILED: " << check.first_failure());
+    }
   }
   if (options.timing) {
     print_ticks("node_cycle_all", timed.all_cycles());
