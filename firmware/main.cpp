@@ -28,6 +28,7 @@
 #include "node/node.hpp"
 #include "proto/candump_line.hpp"
 #include "semihost/semihost.hpp"
+#include "stack_watermark.hpp"
 #include "text_line.hpp"
 #include "timed_node.hpp"
 #include "timing_benchmarks.hpp"
@@ -140,6 +141,7 @@ const mf::MfOptions kTyreOptions = [] {
 }  // namespace
 
 int main() {
+  firmware::StackWatermark::paint();
   std::array<char, 512> cmdline{};
   const Result<std::size_t> got = semihost::command_line(cmdline);
   if (!got.ok()) {
@@ -243,8 +245,12 @@ int main() {
   if (options.timing) {
     print_ticks("node_cycle_all", timed.all_cycles());
     print_ticks("node_cycle_full", timed.full_cycles());
+    print_ticks("receive_frame", timed.receives());
     firmware::run_timing_benchmarks(counter, firmware::kTyre, kTyreOptions,
                                     lut::contact_pairs()[0].f32);
+    TextLine m;
+    m << "memory stack_peak_bytes: " << firmware::StackWatermark::peak_bytes() << "\n";
+    semihost::console(m.c_str());
   }
 #ifdef TREAD_HEAP_PROBE
   static_cast<void>(tread::core_heap_probe());

@@ -2,6 +2,7 @@
 // Wraps the node for the replay and measures each compute() in SysTick ticks (instructions under
 // qemu's -icount: hal/cortex_m/systick_counter.hpp). Cycles in which every configured channel was
 // computed (none stale, node enabled) are counted apart: that is the node cycle's real cost.
+// receive() is measured too, per frame.
 
 #include <cstdint>
 #include <span>
@@ -30,7 +31,10 @@ class TimedNode {
   TimedNode(N& node, hal::SysTickCounter& counter) noexcept : node_(node), counter_(counter) {}
 
   bool receive(const proto::CanFrame& frame, std::int64_t now_ns) noexcept {
-    return node_.receive(frame, now_ns);
+    const std::uint32_t start = counter_.ticks();
+    const bool cycle_frame = node_.receive(frame, now_ns);
+    receive_.add(counter_.ticks() - start);
+    return cycle_frame;
   }
   std::size_t compute(std::int64_t now_ns, std::span<proto::CanFrame> tx) noexcept {
     const std::uint32_t start = counter_.ticks();
@@ -47,12 +51,15 @@ class TimedNode {
 
   [[nodiscard]] const TickStats& all_cycles() const noexcept { return all_; }
   [[nodiscard]] const TickStats& full_cycles() const noexcept { return full_; }
+  /// Per received frame (validation, E2E check, decode); a frame is a few ticks, so read the mean.
+  [[nodiscard]] const TickStats& receives() const noexcept { return receive_; }
 
  private:
   N& node_;
   hal::SysTickCounter& counter_;
   TickStats all_{};
   TickStats full_{};
+  TickStats receive_{};
 };
 
 }  // namespace tread::firmware

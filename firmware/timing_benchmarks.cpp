@@ -5,6 +5,9 @@
 
 #include "mf/mf_evaluate.hpp"
 #include "node/contact_table_channel.hpp"
+#include "proto/codec.hpp"
+#include "proto/e2e_profile1.hpp"
+#include "proto/messages.hpp"
 #include "semihost/semihost.hpp"
 #include "text_line.hpp"
 
@@ -72,6 +75,30 @@ void run_timing_benchmarks(hal::SysTickCounter& counter, const mf::MfParameters<
     g_sink = r.delta_r_mm + r.gamma_left_rad;
   }
   report("contact_lookup", kLookups, counter.ticks() - start);
+
+  // Encoding the node's outputs (classic CAN: every node-to-rig frame, with E2E protection), as
+  // compute() ends each cycle.
+  proto::NodeData outputs;
+  for (auto& w : outputs.wheels) {
+    w = proto::WheelOutput{-2345.6F, 1234.5F, -45.6F, 12.3F, -23.4F, 0.3456F, 0};
+  }
+  for (auto& ws : outputs.wheelsets) {
+    ws = proto::WheelsetOutput{460.1F, 459.9F, 0.2F, 0.025F, -0.025F, 0};
+  }
+  constexpr std::uint32_t kRounds = 16;
+  std::uint32_t frames = 0;
+  proto::CanFrame frame;
+  start = counter.ticks();
+  for (std::uint32_t r = 0; r < kRounds; ++r) {
+    for (const proto::MessageSpec& m : proto::messages(proto::Layout::classic)) {
+      if (m.direction != proto::Direction::node_to_rig) continue;
+      static_cast<void>(proto::encode(
+          m, outputs, static_cast<std::uint8_t>(r % proto::kE2eCounterModulo), frame));
+      g_sink = static_cast<float>(frame.data[0]);
+      ++frames;
+    }
+  }
+  report("encode_frame", frames, counter.ticks() - start);
 }
 
 }  // namespace tread::firmware

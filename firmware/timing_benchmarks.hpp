@@ -1,8 +1,8 @@
 #pragma once
 // Instruction counts on the target (under qemu's -icount: hal/cortex_m/systick_counter.hpp):
-// a calibration loop of known length, the Magic Formula evaluation and the contact lookup, each
-// over a fixed grid of inputs, printed as ticks to the semihosting console for
-// scripts/target-timing.sh. Figures, not checks.
+// a calibration loop of known length, the Magic Formula evaluation, the contact lookup and the
+// encoding of output frames, each over fixed inputs, printed as ticks to the semihosting console
+// for scripts/target-timing.sh. Figures, not checks.
 
 #include "cortex_m/systick_counter.hpp"
 #include "mf/mf_options.hpp"
