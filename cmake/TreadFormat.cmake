@@ -9,7 +9,7 @@ if(CLANG_FORMAT_EXE)
        ${PROJECT_SOURCE_DIR}/firmware/*.hpp ${PROJECT_SOURCE_DIR}/firmware/*.cpp
        ${PROJECT_SOURCE_DIR}/examples/*.hpp ${PROJECT_SOURCE_DIR}/examples/*.cpp
        ${PROJECT_SOURCE_DIR}/lut/*.hpp ${PROJECT_SOURCE_DIR}/lut/*.cpp)
-  list(FILTER _tread_fmt_files EXCLUDE REGEX "/lut/generated/")
+  list(FILTER _tread_fmt_files EXCLUDE REGEX "/(lut|firmware)/generated/")
   add_custom_target(format-check
     COMMAND ${CLANG_FORMAT_EXE} --dry-run --Werror ${_tread_fmt_files}
     WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} COMMENT "clang-format check" VERBATIM)

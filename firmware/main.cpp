@@ -1,15 +1,38 @@
-// The firmware image's main: runs the real-time core on fixed inputs so the linker keeps it all —
-// the E2E codec, the Magic Formula in float (MF 6.1, the book's default coefficients), and the
-// flashed wheel–rail contact table — under the no-heap trap.
+// The firmware image: replays a recorded rig log through the real node, cycle by cycle, and writes
+// the frames the node transmits as a candump log — on the target, through semihosting:
+//
+//   tread_firmware --replay IN.log --tx-log OUT.log [--expect HOST_TX.log] [--fd] [--sync]
+//                  [--period-us N] [--timing]
+//
+// (qemu: -semihosting-config enable=on,target=native,arg=tread_firmware,arg=--replay,arg=IN,...).
+// The node is the host's `tread node` with its defaults: MF 6.1 (data/tyres/
+// MagicFormula61_Parameters.tir, useMode 111) on 4 wheels, the flashed S1002/60E1 1:40 contact
+// table on 2 wheelsets, 10 ms input timeout; the schedule is node/log_replay.hpp, as the host's
+// replay. --timing adds instruction counts (SysTick ticks) per node cycle, MF evaluation and
+// contact lookup. --expect checks every transmitted frame against the host's replay of the same
+// log (firmware/tx_check.hpp: same time and message, each signal within one quantisation step).
+// The exit status (SYS_EXIT_EXTENDED) is 0 when the log replayed (and matched), 1 for a bad log
+// or a mismatch, 2 for bad arguments or I/O.
 #include <array>
 #include <cstdint>
+#include <string_view>
 
+#include "cortex_m/systick_counter.hpp"
+#include "generated/tyre_mf61.hpp"
+#include "log_reader.hpp"
+#include "log_writer.hpp"
 #include "lut/tread_lut.hpp"
-#include "mf/mf_evaluate.hpp"
 #include "node/contact_table_channel.hpp"
+#include "node/log_replay.hpp"
 #include "node/mf_tyre_channel.hpp"
 #include "node/node.hpp"
-#include "proto/rig_link.hpp"
+#include "proto/candump_line.hpp"
+#include "semihost/semihost.hpp"
+#include "stack_watermark.hpp"
+#include "text_line.hpp"
+#include "timed_node.hpp"
+#include "timing_benchmarks.hpp"
+#include "tx_check.hpp"
 
 #ifdef TREAD_HEAP_PROBE
 #include "core/heap_probe.hpp"
@@ -17,43 +40,220 @@
 
 namespace {
 
-volatile float g_sink;  // keeps results observable
-volatile std::uint32_t g_frames;
+using namespace tread;
+namespace semihost = hal::semihost;
+using firmware::TextLine;
 
-const tread::mf::MfParameters<float> kTyre{};  // MF 6.1 with the book's default coefficients
+constexpr int kExitBadLog = 1;
+constexpr int kExitUsage = 2;
+
+struct Options {
+  std::string_view replay;
+  std::string_view tx_log;
+  std::string_view expect;
+  bool fd{false};
+  bool sync{false};
+  std::int64_t period_us{1000};
+  bool timing{false};
+};
+
+[[noreturn]] void fail(int status, TextLine& message) {
+  semihost::console((message << "\n").c_str());
+  semihost::exit(status);
+}
+
+bool parse_int(std::string_view text, std::int64_t& value) {
+  if (text.empty() || text.size() > 9) return false;
+  value = 0;
+  for (const char c : text) {
+    if (c < '0' || c > '9') return false;
+    value = value * 10 + (c - '0');
+  }
+  return true;
+}
+
+/// The semihosting command line: the image's name, then the options (words split at spaces).
+Options parse_options(std::string_view cmdline) {
+  std::array<std::string_view, 16> words{};
+  std::size_t count = 0;
+  while (!cmdline.empty() && count < words.size()) {
+    const std::size_t space = cmdline.find(' ');
+    const std::size_t len = space == std::string_view::npos ? cmdline.size() : space;
+    if (len > 0) words[count++] = std::string_view(cmdline.data(), len);
+    cmdline.remove_prefix(len == cmdline.size() ? len : len + 1);
+  }
+  Options o;
+  for (std::size_t i = 1; i < count; ++i) {
+    const std::string_view w = words[i];
+    const bool has_value = i + 1 < count;
+    if (w == "--replay" && has_value) {
+      o.replay = words[++i];
+    } else if (w == "--tx-log" && has_value) {
+      o.tx_log = words[++i];
+    } else if (w == "--expect" && has_value) {
+      o.expect = words[++i];
+    } else if (w == "--period-us" && has_value && parse_int(words[i + 1], o.period_us) &&
+               o.period_us > 0) {
+      ++i;
+    } else if (w == "--fd") {
+      o.fd = true;
+    } else if (w == "--sync") {
+      o.sync = true;
+    } else if (w == "--timing") {
+      o.timing = true;
+    } else {
+      TextLine m;
+      fail(kExitUsage, m << "tread_firmware: bad argument '" << w << "'");
+    }
+  }
+  if (o.replay.empty() || o.tx_log.empty()) {
+    TextLine m;
+    fail(kExitUsage, m << "usage: tread_firmware --replay IN.log --tx-log OUT.log "
+                          "[--expect HOST_TX.log] [--fd] [--sync] [--period-us N] [--timing]");
+  }
+  return o;
+}
+
+/// The replay's sink: the replayed frames into the TX log (and the check, if any).
+struct TxSink {
+  firmware::LogWriter* writer;
+  firmware::TxCheck* check;
+  void on_logged_tx(const proto::CanFrame& /*frame*/, std::int64_t /*time_ns*/) noexcept {}
+  void on_tx(const proto::CanFrame& frame, std::int64_t now_ns) noexcept {
+    writer->write(frame, now_ns);
+    if (check != nullptr) check->check(frame, now_ns);
+  }
+};
+
+void print_ticks(std::string_view name, const firmware::TickStats& s) {
+  TextLine m;
+  m << "timing " << name << ": " << s.count << " cycles, ticks min " << (s.count > 0 ? s.min : 0U)
+    << " mean*100 " << (s.count > 0 ? s.total * 100U / s.count : 0U) << " max " << s.max << "\n";
+  semihost::console(m.c_str());
+}
+
+const mf::MfOptions kTyreOptions = [] {
+  mf::MfOptions o = mf::options_from_use_mode(111).value;
+  o.extras = true;  // Rl is an output
+  return o;
+}();
 
 }  // namespace
 
 int main() {
-  using namespace tread;
-  std::array<node::MfTyreChannel, 4> tyres{};
-  for (auto& t : tyres) {
-    t = node::MfTyreChannel(kTyre, mf::MfOptions{});
+  firmware::StackWatermark::paint();
+  std::array<char, 512> cmdline{};
+  const Result<std::size_t> got = semihost::command_line(cmdline);
+  if (!got.ok()) {
+    TextLine m;
+    fail(kExitUsage, m << "tread_firmware: no semihosting command line");
   }
-  std::array<node::ContactTableChannel, 2> contacts{};
+  const Options options = parse_options(std::string_view(cmdline.data(), got.value));
+
+  static std::array<node::MfTyreChannel, 4> tyres{};
+  for (auto& t : tyres) {
+    t = node::MfTyreChannel(firmware::kTyre, kTyreOptions);
+  }
+  static std::array<node::ContactTableChannel, 2> contacts{};
   for (auto& c : contacts) {
     c = node::ContactTableChannel(lut::contact_pairs()[0].f32);
   }
-  const node::NodeConfig config{proto::Layout::fd,        4,    2, 10'000'000,
-                                node::Schedule::periodic, true, 3};
-  node::Node<node::MfTyreChannel, node::ContactTableChannel> n(config, tyres, contacts);
+  const node::NodeConfig config{
+      options.fd ? proto::Layout::fd : proto::Layout::classic,        4,    2, 10'000'000,
+      options.sync ? node::Schedule::sync : node::Schedule::periodic, true, 3};
+  static node::Node<node::MfTyreChannel, node::ContactTableChannel> node(config, tyres, contacts);
+  hal::SysTickCounter counter;
+  counter.start();
+  firmware::TimedNode timed(node, counter);
 
-  proto::RigData inputs{};
-  for (auto& w : inputs.wheels) {
-    w = proto::WheelInput{0.05F, 0.02F, 0.0F, 4000.0F, 16.7F, 0.0F, false};
+  static firmware::LogReader reader;
+  if (reader.open(options.replay) != Status::ok) {
+    TextLine m;
+    fail(kExitUsage, m << options.replay << ": cannot open");
   }
-  inputs.wheelsets[0].lateral_mm = 3.0F;
-  proto::RigLink rig(proto::Layout::fd, 4, 2);
-  std::array<proto::CanFrame, proto::RigLink::kMaxRigFrames> rx{};
-  std::array<proto::CanFrame, node::kMaxTxFrames> tx{};
-  const std::size_t count = rig.encode_cycle(inputs, rx);
-  for (std::size_t i = 0; i < count; ++i) {
-    static_cast<void>(n.receive(rx[i], 1'000'000));
+  static firmware::LogWriter writer;
+  static firmware::TxCheck check;
+  const bool checking = !options.expect.empty();
+  if (checking && check.open(options.expect, config.layout) != Status::ok) {
+    TextLine m;
+    fail(kExitUsage, m << options.expect << ": cannot open");
   }
-  g_frames = static_cast<std::uint32_t>(n.compute(1'000'000, tx));
-  g_sink = n.outputs().wheels[0].fx_n + n.outputs().wheelsets[0].delta_r_mm;
+  TxSink sink{&writer, checking ? &check : nullptr};
+  node::LogReplay replay(timed, sink, options.period_us * 1000);
+  std::string_view line;
+  std::uint64_t line_no = 0;
+  bool opened = false;
+  for (;;) {
+    const Status next = reader.next(line);
+    if (next == Status::would_block) break;
+    ++line_no;
+    if (next != Status::ok) {
+      TextLine m;
+      fail(kExitBadLog, m << options.replay << ":" << line_no << ": "
+                          << (next == Status::out_of_range ? "line too long" : "cannot read"));
+    }
+    if (line.empty() || line.front() == '#') continue;
+    proto::CandumpLine parsed;
+    const proto::CandumpError error = proto::parse_candump_line(line, parsed);
+    if (error != proto::CandumpError::none) {
+      TextLine m;
+      fail(kExitBadLog, m << options.replay << ":" << line_no << ": " << proto::describe(error));
+    }
+    if (!opened) {  // the TX log names the interface of the log's first frame, as the host's
+      if (writer.open(options.tx_log, parsed.interface) != Status::ok) {
+        TextLine m;
+        fail(kExitUsage, m << options.tx_log << ": cannot create");
+      }
+      opened = true;
+    }
+    if (replay.add(parsed.frame, parsed.time_ns) != Status::ok) {
+      TextLine m;
+      fail(kExitBadLog, m << options.replay << ":" << line_no
+                          << ": earlier than the line before (the log is not in time order)");
+    }
+  }
+  replay.finish();
+  reader.close();
+  if (writer.close() != Status::ok) {
+    TextLine m;
+    fail(kExitUsage, m << options.tx_log << ": cannot write");
+  }
+  const node::ReplayCounts& counts = replay.counts();
+  TextLine summary;
+  summary << "replay " << counts.cycles << " cycles, " << counts.input_frames << " input frames, "
+          << counts.tx_frames << " frames transmitted; the log holds " << counts.logged_tx_frames
+          << "; overruns " << counts.overruns << ", rejected " << node.counters().rx_rejected()
+          << "\n";
+  semihost::console(summary.c_str());
+  if (counts.logged_tx_frames == 0) {
+    TextLine m;
+    fail(kExitBadLog, m << options.replay << ": holds no frames sent by the node");
+  }
+  if (checking) {
+    check.finish();
+    TextLine m;
+    m << "check " << check.frames() << " frames against " << options.expect << ": "
+      << check.identical() << " bit-identical, " << check.failures()
+      << " failed (a signal beyond one quantisation step, another time or message, a bad CRC, a "
+         "frame too many or too few)\n";
+    semihost::console(m.c_str());
+    if (!check.passed()) {
+      TextLine f;
+      fail(kExitBadLog, f << "check FAILED: " << check.first_failure());
+    }
+  }
+  if (options.timing) {
+    print_ticks("node_cycle_all", timed.all_cycles());
+    print_ticks("node_cycle_full", timed.full_cycles());
+    print_ticks("receive_frame", timed.receives());
+    firmware::run_timing_benchmarks(counter, firmware::kTyre, kTyreOptions,
+                                    lut::contact_pairs()[0].f32);
+    TextLine m;
+    m << "memory stack_peak_bytes: " << firmware::StackWatermark::peak_bytes() << "\n";
+    semihost::console(m.c_str());
+  }
 #ifdef TREAD_HEAP_PROBE
-  g_sink = g_sink + static_cast<float>(tread::core_heap_probe());
+  static_cast<void>(tread::core_heap_probe());
 #endif
-  return 0;
+  semihost::exit(0);
 }

@@ -22,15 +22,19 @@ constexpr std::size_t kCoreVectors = 16;
 using Vector = void (*)();
 }  // namespace
 
+#if defined(__ARM_FP)
 // SCB->CPACR: enable CP10/CP11 (the FPU) before any float instruction runs.
 static void enable_fpu() {
   volatile std::uint32_t* const cpacr = reinterpret_cast<volatile std::uint32_t*>(0xE000ED88U);
   *cpacr = *cpacr | (0xFU << 20U);
   __asm volatile("dsb\n\tisb" ::: "memory");
 }
+#endif
 
 extern "C" [[noreturn]] void Reset_Handler() {
+#if defined(__ARM_FP)
   enable_fpu();
+#endif
   const std::uint32_t* src = _sidata;
   for (std::uint32_t* dst = _sdata; dst < _edata;) {
     *dst++ = *src++;

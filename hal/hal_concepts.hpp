@@ -1,6 +1,7 @@
 #pragma once
 // What the real-time loop needs from its edges, as C++20 concepts (checked at compile time, no
-// virtual dispatch on the hot path). Backends: socketcan/, gpiod/, posix/, stub/.
+// virtual dispatch on the hot path). Backends: socketcan/, gpiod/, posix/, stub/; for bare-metal
+// Cortex-M targets semihost/ (files, console, exit status) and cortex_m/ (SysTick tick counter).
 
 #include <concepts>
 #include <cstdint>

@@ -14,6 +14,7 @@ packages=(
   # cross compilers and emulators
   g++-aarch64-linux-gnu g++-arm-linux-gnueabihf gcc-arm-none-eabi libstdc++-arm-none-eabi-newlib
   libnewlib-arm-none-eabi binutils-arm-none-eabi qemu-user-static qemu-system-x86
+  qemu-system-arm  # the Cortex-M firmware image on the emulated MPS2 boards (ctest -L target)
   # the vcan VM harness: initramfs tools (the kernel itself is fetched by scripts/fetch-vm-kernel.sh)
   busybox-static cpio xz-utils zstd kmod
   # style

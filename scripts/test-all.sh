@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Every test, from a fresh clone: installs the Debian packages, then builds and tests every preset —
 # host (unit, golden, vcan through the VM harness), asan, aarch64 and armhf (under qemu-user),
-# the cortex-m4f firmware link — runs the main job (scripts/demo.sh) and checks formatting. Exits
-# non-zero if anything fails.
+# cortex-m4f and cortex-m3 (the firmware images, run under qemu-system-arm) — runs the main job
+# (scripts/demo.sh) and checks formatting. Exits non-zero if anything fails.
 set -uo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -37,7 +37,7 @@ run_workflow() {
 }
 
 start=$(date +%s)
-for preset in host asan aarch64 armhf cortex-m4f; do
+for preset in host asan aarch64 armhf cortex-m4f cortex-m3; do
   run_workflow "$preset"
 done
 

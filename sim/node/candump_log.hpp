@@ -1,8 +1,6 @@
 #pragma once
-// candump log format (can-utils `candump -l`, read by canplayer):
-//   (seconds.micros) iface ID#DATA         classic; ID 3 hex digits (11-bit) or 8 (29-bit)
-//   (seconds.micros) iface ID##FDATA       FD; F = one hex digit of flags (1 = BRS)
-// Error frames carry CAN_ERR_FLAG (0x20000000) in an 8-digit ID.
+// candump logs on the host: whole files, with errors naming file and line. One line's format and
+// parsing is the core's heap-free proto/candump_line.hpp, shared with the firmware image.
 
 #include <cstdint>
 #include <cstdio>
@@ -12,6 +10,7 @@
 #include <vector>
 
 #include "proto/can_frame.hpp"
+#include "proto/candump_line.hpp"
 
 namespace tread::host {
 
@@ -21,11 +20,8 @@ struct LoggedFrame {
   proto::CanFrame frame{};
 };
 
-/// One log line (no newline) into `out`, which must hold at least kCandumpLineMax characters.
-/// Returns the length. Allocation-free: usable from the real-time loop.
-inline constexpr std::size_t kCandumpLineMax = 192;
-std::size_t format_candump_line(const proto::CanFrame& frame, std::int64_t time_ns,
-                                std::string_view interface, char* out) noexcept;
+using proto::format_candump_line;
+using proto::kCandumpLineMax;
 
 /// Parses one line. Throws std::runtime_error naming `where` ("file:line") on malformed input.
 LoggedFrame parse_candump_line(std::string_view line, const std::string& where);

@@ -10,6 +10,7 @@
 
 #include "gpiod/gpiod_pin.hpp"
 #include "node/candump_log.hpp"
+#include "node/log_replay.hpp"
 #include "posix/posix_clock.hpp"
 #include "socketcan/socketcan_bus.hpp"
 #include "stub/stub_can_bus.hpp"
@@ -22,11 +23,6 @@ hal::LoopConfig loop_config(const NodeSettings& s, std::int64_t period_us) {
   c.period_ns = period_us * 1000;
   c.schedule = s.node.schedule;
   return c;
-}
-
-bool is_node_output(proto::Layout layout, std::uint32_t id) {
-  const proto::MessageSpec* m = proto::find_message(layout, id);
-  return m != nullptr && m->direction == proto::Direction::node_to_rig;
 }
 
 template <typename Bus, typename Pin>
@@ -96,6 +92,24 @@ SessionReport run_live(const NodeSettings& settings, const LiveOptions& options,
   return run_with(bus, pin, runtime, settings, options, stop, report);
 }
 
+namespace {
+
+/// The host replay's sink: the replayed frames as log lines (and into the --tx-log file).
+struct ReplaySink {
+  std::string interface;
+  CandumpWriter* writer{nullptr};
+  std::vector<std::string> lines;
+  void on_logged_tx(const proto::CanFrame& /*frame*/, std::int64_t /*time_ns*/) noexcept {}
+  void on_tx(const proto::CanFrame& frame, std::int64_t now_ns) {
+    char line[kCandumpLineMax];
+    format_candump_line(frame, now_ns, interface, line);
+    lines.emplace_back(line);
+    writer->write(frame, now_ns);
+  }
+};
+
+}  // namespace
+
 ReplayResult run_replay(const NodeSettings& settings, const std::filesystem::path& log,
                         std::int64_t period_us, const std::filesystem::path& tx_log) {
   const std::vector<LoggedFrame> frames = read_candump_log(log);
@@ -103,74 +117,49 @@ ReplayResult run_replay(const NodeSettings& settings, const std::filesystem::pat
     throw std::runtime_error(log.string() + ": no frames");
   }
   const proto::Layout layout = settings.node.layout;
-  // The node's own frames mark the cycles it ran (every cycle sends NodeStatus); the rest are its
-  // inputs, logged at the time the node consumed them. Replaying both in time order (inputs before
-  // the computation at the same time) repeats the run exactly, in periodic and in sync mode alike.
-  std::vector<const LoggedFrame*> inputs;
-  std::vector<std::int64_t> cycle_times;
+  // The node's own frames mark its cycles (node/log_replay.hpp, the schedule the firmware image
+  // replays with too); here the log need not be in time order: it is replayed stably sorted.
   std::vector<std::string> logged_tx;
-  char line[kCandumpLineMax + 1];
+  std::vector<const LoggedFrame*> ordered;
+  char line[kCandumpLineMax];
   for (const LoggedFrame& f : frames) {
-    if (is_node_output(layout, f.frame.id) && !f.frame.error) {
+    if (node::is_node_output(layout, f.frame)) {
       format_candump_line(f.frame, f.time_ns, f.interface, line);
       logged_tx.emplace_back(line);
-      if (cycle_times.empty() || cycle_times.back() != f.time_ns) {
-        cycle_times.push_back(f.time_ns);
-      }
-    } else {
-      inputs.push_back(&f);
     }
+    ordered.push_back(&f);
   }
-  if (cycle_times.empty()) {
+  if (logged_tx.empty()) {
     throw std::runtime_error(log.string() +
                              ": holds no frames sent by the node, so its cycles are unknown "
                              "(record with tread node --log, which logs both directions)");
   }
-  std::stable_sort(inputs.begin(), inputs.end(), [](const LoggedFrame* a, const LoggedFrame* b) {
+  std::stable_sort(ordered.begin(), ordered.end(), [](const LoggedFrame* a, const LoggedFrame* b) {
     return a->time_ns < b->time_ns;
   });
-  std::sort(cycle_times.begin(), cycle_times.end());
-  cycle_times.erase(std::unique(cycle_times.begin(), cycle_times.end()), cycle_times.end());
 
   NodeRuntime runtime(settings);
   RuntimeNode& node = runtime.node();
   CandumpWriter writer;
-  const std::string interface = frames.front().interface;
+  ReplaySink sink{frames.front().interface, &writer, {}};
   if (!tx_log.empty()) {
-    writer.open(tx_log, interface);
+    writer.open(tx_log, sink.interface);
   }
-  const std::int64_t period_ns = period_us * 1000;
-  const bool periodic = settings.node.schedule == node::Schedule::periodic;
-  std::vector<std::string> replayed_tx;
-  std::array<proto::CanFrame, node::kMaxTxFrames> tx{};
-  std::size_t next = 0;
+  node::LogReplay replay(node, sink, period_us * 1000);
+  for (const LoggedFrame* f : ordered) {
+    static_cast<void>(replay.add(f->frame, f->time_ns));  // in time order: always ok
+  }
+  replay.finish();
+
   ReplayResult result;
-  for (std::size_t k = 0; k < cycle_times.size(); ++k) {
-    const std::int64_t now = cycle_times[k];
-    if (periodic && k > 0) {
-      // Deadlines the live run skipped after an overrun: reported by the runner before this cycle.
-      const std::int64_t missed = (now - cycle_times[k - 1]) / period_ns - 1;
-      if (missed > 0) {
-        node.note_overrun(static_cast<std::uint64_t>(missed));
-        result.report.loop.overruns += static_cast<std::uint64_t>(missed);
-      }
-    }
-    while (next < inputs.size() && inputs[next]->time_ns <= now) {
-      static_cast<void>(node.receive(inputs[next]->frame, inputs[next]->time_ns));
-      ++next;
-    }
-    const std::size_t n = node.compute(now, tx);
-    for (std::size_t i = 0; i < n; ++i) {
-      format_candump_line(tx[i], now, interface, line);
-      replayed_tx.emplace_back(line);
-      writer.write(tx[i], now);
-    }
-    ++result.report.loop.cycles;
-  }
+  const node::ReplayCounts& counts = replay.counts();
+  result.report.loop.cycles = counts.cycles;
+  result.report.loop.overruns = counts.overruns;
   result.report.counters = node.counters();
-  result.input_frames = inputs.size();
-  result.tx_frames = replayed_tx.size();
+  result.input_frames = counts.input_frames;
+  result.tx_frames = counts.tx_frames;
   result.logged_tx_frames = logged_tx.size();
+  const std::vector<std::string>& replayed_tx = sink.lines;
   result.identical = logged_tx == replayed_tx;
   if (!result.identical) {
     const std::size_t n = std::min(logged_tx.size(), replayed_tx.size());

@@ -239,9 +239,17 @@ inline Status encode_signal(const SignalSpec& spec, float value,
     return Status::out_of_range;
   }
   // Round half away from zero (no libm call on the hot path). float(raw_max) may round up past
-  // raw_max for long signals; encode_raw_signal saturates exactly.
-  const auto raw = steps >= 0.0F ? static_cast<std::int64_t>(steps + 0.5F)
-                                 : -static_cast<std::int64_t>(0.5F - steps);
+  // raw_max for long signals; encode_raw_signal saturates exactly. Signals of up to 30 bits
+  // (|steps| ≤ 2^30 + 0.5) convert through int32: the same integer, but one instruction on a
+  // 32-bit core, where float → int64 is a soft-double library call (__aeabi_f2lz).
+  std::int64_t raw = 0;
+  if (spec.length <= 30U) {
+    raw = steps >= 0.0F ? static_cast<std::int32_t>(steps + 0.5F)
+                        : -static_cast<std::int32_t>(0.5F - steps);
+  } else {
+    raw = steps >= 0.0F ? static_cast<std::int64_t>(steps + 0.5F)
+                        : -static_cast<std::int64_t>(0.5F - steps);
+  }
   static_cast<void>(encode_raw_signal(spec, raw, data));
   return Status::ok;
 }
@@ -249,7 +257,11 @@ inline Status encode_signal(const SignalSpec& spec, float value,
 /// Decodes a physical value.
 [[nodiscard]] inline float decode_signal(const SignalSpec& spec,
                                          std::span<const std::uint8_t> data) noexcept {
-  return static_cast<float>(decode_raw_signal(spec, data)) * spec.factor_f + spec.offset_f;
+  const std::int64_t raw = decode_raw_signal(spec, data);
+  // Up to 31 bits through int32: the same rounding to float, without the int64 library call.
+  const float value = spec.length <= 31U ? static_cast<float>(static_cast<std::int32_t>(raw))
+                                         : static_cast<float>(raw);
+  return value * spec.factor_f + spec.offset_f;
 }
 
 }  // namespace tread::proto
