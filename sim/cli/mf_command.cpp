@@ -36,6 +36,7 @@ struct MfEvalArgs {
   std::string tir;
   int mode = 111;
   bool use_float = false;
+  bool use_fixed = false;
   std::string side = "as-measured";
   std::string input;
   std::string output;
@@ -70,6 +71,7 @@ void run_mf_eval(const MfEvalArgs& args) {
   if (args.side == "right") o.side = mf::MountedSide::right;
   mf::MfCsvOptions csv;
   csv.use_float = args.use_float;
+  csv.use_fixed = args.use_fixed;
   csv.strict = args.strict;
   csv.tyre_name = args.tir;
   csv.table.separator = separator(args.sep);
@@ -142,7 +144,12 @@ void add_mf_command(CLI::App& app) {
                "output is written whole or not at all.");
   eval->add_option("--tir", args.tir, "Tyre property file (.tir)")->required();
   eval->add_option("--mode", args.mode, "MFeval useMode: 111 (default) … 222");
-  eval->add_flag("--float", args.use_float, "Evaluate in float (as on the ECU) instead of double");
+  CLI::Option* as_float = eval->add_flag("--float", args.use_float,
+                                         "Evaluate in float (as on the ECU) instead of double");
+  eval->add_flag("--fixed", args.use_fixed,
+                 "Evaluate in fixed point (Q31.32 integer arithmetic, bit for bit as on an "
+                 "FPU-less ECU) instead of double")
+      ->excludes(as_float);
   eval->add_option("--side", args.side,
                    "Mounted side: as-measured (default, like MFeval), left, right")
       ->check(CLI::IsMember({"as-measured", "left", "right"}));

@@ -9,9 +9,11 @@
 #include <ostream>
 #include <stdexcept>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "mf/mf_evaluate.hpp"
+#include "mf/mf_fixed.hpp"
 #include "tir/tir_file.hpp"
 
 namespace tread::mf {
@@ -67,23 +69,44 @@ std::string format(double v) {
   return buffer;
 }
 
+/// An input in the evaluation's scalar: float/double by a cast, fixed point rounded to nearest
+/// Q31.32 — a value beyond its range (±2^31) taken as ±2^31, so that it is clamped to the
+/// model's envelope and reported out_of_range as in double (the reader refuses NaN and inf).
+template <typename T>
+T scalar_of(double v) {
+  if constexpr (std::is_same_v<T, fixed::Fixed64>) {
+    constexpr double kLimit = 2147483647.0;
+    return fixed::Fixed64::from_double(v > kLimit ? kLimit : (v < -kLimit ? -kLimit : v));
+  } else {
+    return static_cast<T>(v);
+  }
+}
+template <typename T>
+double as_double(const T& v) {
+  if constexpr (std::is_same_v<T, fixed::Fixed64>) {
+    return v.to_double();
+  } else {
+    return static_cast<double>(v);
+  }
+}
+
 template <typename T>
 // Returns the first output column that is not finite under status ok ("" when none).
 std::string write_row(std::ostream& out, const std::array<double, kColumnCount>& values,
                       const MfParameters<T>& params, const MfOptions& options) {
   MfInput<T> in;
-  in.fz_n = static_cast<T>(values[kFz]);
-  in.kappa = static_cast<T>(values[kKappa]);
-  in.alpha_rad = static_cast<T>(values[kAlpha]);
-  in.gamma_rad = static_cast<T>(values[kGamma]);
-  in.vx_mps = static_cast<T>(values[kVx]);
-  in.phit_1pm = static_cast<T>(values[kPhit]);
-  in.p_pa = static_cast<T>(values[kP]);
+  in.fz_n = scalar_of<T>(values[kFz]);
+  in.kappa = scalar_of<T>(values[kKappa]);
+  in.alpha_rad = scalar_of<T>(values[kAlpha]);
+  in.gamma_rad = scalar_of<T>(values[kGamma]);
+  in.vx_mps = scalar_of<T>(values[kVx]);
+  in.phit_1pm = scalar_of<T>(values[kPhit]);
+  in.p_pa = scalar_of<T>(values[kP]);
   const MfOutput<T> result = evaluate(params, in, options);
   std::string non_finite;
   for (double v : values) out << format(v) << ',';
   for (const auto& c : out_columns<T>()) {
-    const double v = static_cast<double>(result.*(c.member));
+    const double v = as_double(result.*(c.member));
     if (!std::isfinite(v) && non_finite.empty())
       non_finite = std::string(c.name) + " = " + format(v);
     out << format(v) << ',';
@@ -138,6 +161,8 @@ MfCsvReport evaluate_csv(const MfParameters<double>& params, const MfOptions& op
                          const MfCsvOptions& csv, std::istream& in, const std::string& in_name,
                          std::ostream& out) {
   const MfParameters<float> params_f = convert_parameters<float>(params);
+  const MfParameters<fixed::Fixed64> params_q =
+      csv.use_fixed ? to_fixed_parameters(params) : MfParameters<fixed::Fixed64>{};
   InputTable table(in, in_name, csv.table);
   MfCsvReport report;
   report.ignored = table.ignored_columns();
@@ -179,8 +204,9 @@ MfCsvReport evaluate_csv(const MfParameters<double>& params, const MfOptions& op
     }
     std::array<double, kColumnCount> values{};
     for (std::size_t q = 0; q < kColumnCount; ++q) values[q] = row->value[q];
-    const std::string non_finite = csv.use_float ? write_row(out, values, params_f, options)
-                                                 : write_row(out, values, params, options);
+    const std::string non_finite = csv.use_fixed   ? write_row(out, values, params_q, options)
+                                   : csv.use_float ? write_row(out, values, params_f, options)
+                                                   : write_row(out, values, params, options);
     if (!non_finite.empty()) {
       // Never a NaN or Inf under status ok. The core already writes a non-finite output as 0
       // with Status::non_finite; this is the last check where numbers leave the program.

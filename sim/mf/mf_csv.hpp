@@ -27,8 +27,11 @@ namespace tread::mf {
 
 struct MfCsvOptions {
   bool use_float = false;  ///< evaluate in float (parameters converted once), as on the ECU
-  bool strict = false;     ///< a row outside the model's range is an error
-  std::string tyre_name;   ///< the .tir, for messages
+  /// Evaluate in fixed point (fixed::Fixed64, Q31.32): the exact integer arithmetic of an
+  /// FPU-less target; inputs and parameters rounded to Q31.32.
+  bool use_fixed = false;
+  bool strict = false;    ///< a row outside the model's range is an error
+  std::string tyre_name;  ///< the .tir, for messages
   InputTableOptions table;
 };
 
