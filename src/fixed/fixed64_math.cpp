@@ -137,28 +137,38 @@ Fixed64 pow(Fixed64 x, Fixed64 y) {
   return exp(y * log(x));
 }
 
-Fixed64 sin(Fixed64 x) {
+namespace {
+
+enum class Trig { sine, cosine, tangent };
+
+Fixed64 trig(Fixed64 x, Trig which) {
   if (!x.valid()) return x;
   Unit s;
   Unit c;
   sin_cos_fixed(x, s, c);
-  return from_unit(s);
+  switch (which) {
+    case Trig::sine:
+      return from_unit(s);
+    case Trig::cosine:
+      return from_unit(c);
+    case Trig::tangent:
+      break;
+  }
+  return from_unit(s) / from_unit(c);
+}
+
+}  // namespace
+
+Fixed64 sin(Fixed64 x) {
+  return trig(x, Trig::sine);
 }
 
 Fixed64 cos(Fixed64 x) {
-  if (!x.valid()) return x;
-  Unit s;
-  Unit c;
-  sin_cos_fixed(x, s, c);
-  return from_unit(c);
+  return trig(x, Trig::cosine);
 }
 
 Fixed64 tan(Fixed64 x) {
-  if (!x.valid()) return x;
-  Unit s;
-  Unit c;
-  sin_cos_fixed(x, s, c);
-  return from_unit(s) / from_unit(c);
+  return trig(x, Trig::tangent);
 }
 
 Fixed64 atan(Fixed64 x) {
