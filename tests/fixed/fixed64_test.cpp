@@ -35,6 +35,10 @@ TEST(Fixed64, ConstantsAndConversions) {
 }
 
 TEST(Fixed64, ProductsAreRoundedToNearestAndDivisionWithinTwoSteps) {
+#ifndef __SIZEOF_INT128__
+  GTEST_SKIP() << "the exact reference needs a 128-bit integer type, which this target's compiler "
+                  "lacks (32-bit Arm); the same integer code is checked on x86-64 and aarch64";
+#else
   std::mt19937_64 rng(11);
   std::uniform_int_distribution<std::int64_t> any(std::numeric_limits<std::int64_t>::min() + 1,
                                                   std::numeric_limits<std::int64_t>::max());
@@ -65,6 +69,7 @@ TEST(Fixed64, ProductsAreRoundedToNearestAndDivisionWithinTwoSteps) {
           << a.raw() << " / " << b.raw();
     }
   }
+#endif
 }
 
 TEST(Fixed64, InvalidBehavesLikeNaN) {

@@ -65,17 +65,21 @@ TEST(QFormat, RandomOperandsMatchExactArithmetic) {
   std::mt19937_64 rng(20261125);
   std::uniform_int_distribution<std::int32_t> any(kRawMin, kRawMax);
   std::uniform_int_distribution<int> width(0, 31);
-  const auto expect_rounded = [](long double exact, std::int32_t got, bool hit, bool ties_up) {
-    if (exact > static_cast<long double>(kRawMax) + 0.5L ||
-        exact < static_cast<long double>(kRawMin) - 0.5L) {
-      EXPECT_TRUE(hit);
-      EXPECT_EQ(got, exact > 0 ? kRawMax : kRawMin);
+  // The exact result is num/den (den > 0), all in 64-bit integers (exact on every target).
+  const auto expect_rounded = [](std::int64_t num, std::int64_t den, std::int32_t got, bool hit,
+                                 bool ties_up) {
+    if (hit) {
+      EXPECT_TRUE(got == kRawMax || got == kRawMin);
+      // Beyond the extreme by more than half a step.
+      const std::int64_t beyond =
+          got == kRawMax ? num - std::int64_t{kRawMax} * den : std::int64_t{kRawMin} * den - num;
+      EXPECT_GT(2 * beyond, den) << num << " / " << den;
       return;
     }
-    const long double err = static_cast<long double>(got) - exact;
-    EXPECT_LE(std::fabs(static_cast<double>(err)), 0.5) << static_cast<double>(exact);
-    if (ties_up && std::fabs(static_cast<double>(err)) >= 0.5) {
-      EXPECT_GT(err, 0.0L);
+    const std::int64_t diff = std::int64_t{got} * den - num;  // (got − exact)·den
+    EXPECT_LE(2 * (diff < 0 ? -diff : diff), den) << num << " / " << den << " got " << got;
+    if (ties_up && 2 * (diff < 0 ? -diff : diff) == den) {
+      EXPECT_GT(diff, 0);
     }
   };
   for (int i = 0; i < 200000; ++i) {
@@ -84,14 +88,15 @@ TEST(QFormat, RandomOperandsMatchExactArithmetic) {
     const std::int32_t b = any(rng) >> width(rng);
     Saturation sat;
     const Q<20> m = mul<20>(Q<16>{a}, Q<24>{b}, sat);  // a·b·2^−(16+24−20)
-    expect_rounded(static_cast<long double>(a) * b / 1048576.0L, m.raw, sat.hit, true);
+    expect_rounded(std::int64_t{a} * b, std::int64_t{1} << 20, m.raw, sat.hit, true);
     sat = {};
     const Q<12> s = add(Q<12>{a}, Q<12>{b}, sat);
-    expect_rounded(static_cast<long double>(a) + b, s.raw, sat.hit, true);
+    expect_rounded(std::int64_t{a} + b, 1, s.raw, sat.hit, true);
     sat = {};
     if (b != 0) {
       const Q<18> d = div<18>(Q<16>{a}, Q<20>{b}, sat);  // a/b·2^(18+20−16)
-      expect_rounded(static_cast<long double>(a) / b * 4194304.0L, d.raw, sat.hit, false);
+      const std::int64_t num = std::int64_t{a} * (std::int64_t{1} << 22);
+      expect_rounded(b < 0 ? -num : num, b < 0 ? -std::int64_t{b} : b, d.raw, sat.hit, false);
     }
   }
 }
