@@ -10,34 +10,21 @@
 
 #include "core/status.hpp"
 #include "fixed/fixed64.hpp"
+#include "node/channels.hpp"
+#include "proto/codec.hpp"
 #include "rail/contact_lookup.hpp"
 
 namespace tread::node {
 
-/// ContactResult in fixed point.
-struct ContactResultFixed {
-  fixed::Fixed64 r_left_mm{};
-  fixed::Fixed64 r_right_mm{};
-  fixed::Fixed64 delta_r_mm{};
-  fixed::Fixed64 gamma_left_rad{};
-  fixed::Fixed64 gamma_right_rad{};
-  bool clamped{false};  ///< the displacement lay outside the table and was clamped to its range
-};
-
-/// The wheelset's received inputs in fixed point (proto::WheelsetInput's physical values).
-struct WheelsetInputFixed {
-  fixed::Fixed64 lateral_mm{};
-  fixed::Fixed64 yaw_rad{};
-  bool yaw_valid{false};
-};
-
 class ContactTableChannelFixed {
  public:
+  using Scalar = fixed::Fixed64;
+
   ContactTableChannelFixed() = default;
   /// The table's rows must outlive the channel.
   explicit ContactTableChannelFixed(const rail::ContactTableQ& table) noexcept : table_(table) {}
 
-  ContactResultFixed evaluate(const WheelsetInputFixed& in) const noexcept {
+  ContactResultFixed evaluate(const proto::WheelsetInputFixed& in) const noexcept {
     ContactResultFixed out;
     if (!in.lateral_mm.valid()) {
       out.clamped = true;
@@ -93,5 +80,7 @@ class ContactTableChannelFixed {
  private:
   rail::ContactTableQ table_{};
 };
+
+static_assert(ContactChannel<ContactTableChannelFixed>);
 
 }  // namespace tread::node

@@ -6,42 +6,24 @@
 // overflow, an invalid input: the fixed-point NaN) reported as non_finite, optional first-order
 // relaxation restarted by reset() — on Fixed64 inputs and results, so a caller that decodes the
 // CAN signals with proto::decode_signal_fixed and encodes with encode_signal_fixed never touches
-// a float. One wheel at a time (no vector lanes on the cores it is for).
+// a float. One wheel at a time (no vector lanes on the cores it is for). A channel of the node
+// (channels.hpp) with Scalar = Fixed64.
 
 #include "core/status.hpp"
 #include "fixed/fixed64.hpp"
 #include "mf/mf_fixed.hpp"
 #include "mf/mf_transient.hpp"
+#include "node/channels.hpp"
+#include "proto/codec.hpp"
 
 namespace tread::node {
 
 using fixed::Fixed64;
 
-/// A wheel's received inputs in fixed point (proto::WheelInput's physical values).
-struct WheelInputFixed {
-  Fixed64 kappa{};
-  Fixed64 alpha_rad{};
-  Fixed64 gamma_rad{};
-  Fixed64 fz_n{};
-  Fixed64 vx_mps{};
-  Fixed64 omega_radps{};
-  bool omega_valid{false};
-};
-
-/// TyreResult in fixed point.
-struct TyreResultFixed {
-  Fixed64 fx_n{};
-  Fixed64 fy_n{};
-  Fixed64 mz_nm{};
-  Fixed64 mx_nm{};
-  Fixed64 my_nm{};
-  Fixed64 rl_m{};
-  bool clamped{false};     ///< an input was outside the model's limits and was clamped to them
-  bool non_finite{false};  ///< the model gave an invalid output: not to be sent
-};
-
 class MfTyreChannelFixed {
  public:
+  using Scalar = Fixed64;
+
   MfTyreChannelFixed() = default;
   /// `params` (e.g. a generated header's constants) must outlive the channel. `relaxation`:
   /// first-order transient slips. Without relaxation only Rl of the extras is evaluated.
@@ -53,7 +35,7 @@ class MfTyreChannelFixed {
   }
 
   /// `dt_s`: the time since the previous evaluation (0 on the first one).
-  TyreResultFixed evaluate(const WheelInputFixed& in, Fixed64 dt_s) noexcept {
+  TyreResultFixed evaluate(const proto::WheelInputFixed& in, Fixed64 dt_s) noexcept {
     TyreResultFixed result;
     if (params_ == nullptr) {
       return result;
@@ -89,7 +71,7 @@ class MfTyreChannelFixed {
  private:
   /// The input clamped to the file's limits; `clamped` set when a limit applied. An invalid
   /// input stays invalid (every comparison with it is false), as a NaN does in MfTyreChannel.
-  mf::MfInput<Fixed64> limited(const WheelInputFixed& in, bool& clamped) const noexcept {
+  mf::MfInput<Fixed64> limited(const proto::WheelInputFixed& in, bool& clamped) const noexcept {
     const mf::MfParameters<Fixed64>& p = *params_;
     const auto clamp = [&clamped](Fixed64 v, Fixed64 lo, Fixed64 hi) {
       if (v < lo) {
@@ -117,5 +99,7 @@ class MfTyreChannelFixed {
   bool restart_{true};
   mf::MfTransient<Fixed64> transient_{};
 };
+
+static_assert(TyreChannel<MfTyreChannelFixed>);
 
 }  // namespace tread::node

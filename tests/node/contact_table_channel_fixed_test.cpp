@@ -27,7 +27,7 @@ TEST(ContactTableChannelFixed, FollowsTheFloatChannelOverTheTableAndBeyond) {
     const double y_mm = 0.0173 * k;  // beyond ±12 mm on both sides
     proto::WheelsetInput in;
     in.lateral_mm = static_cast<float>(y_mm);
-    WheelsetInputFixed inx;
+    proto::WheelsetInputFixed inx;
     inx.lateral_mm = Fixed64::from_double(y_mm);
     const ContactResult want = f.evaluate(in);
     const ContactResultFixed got = x.evaluate(inx);
@@ -70,7 +70,7 @@ TEST(ContactTableChannelFixed, ConversionsRoundHalfAwayFromZeroAndSaturate) {
   EXPECT_NEAR(C::from_units(4601234, rail::kQLengthPerMm).to_double(), 460.1234, 1e-9);
   // An invalid displacement (the fixed-point NaN) gives zeros, flagged.
   const ContactTableChannelFixed x(lut::contact_pairs()[0].q);
-  WheelsetInputFixed in;
+  proto::WheelsetInputFixed in;
   in.lateral_mm = Fixed64::invalid();
   const ContactResultFixed r = x.evaluate(in);
   EXPECT_TRUE(r.clamped);

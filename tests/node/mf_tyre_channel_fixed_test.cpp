@@ -20,8 +20,8 @@ const mf::MfParameters<double>& book_tyre() {
   return p;
 }
 
-WheelInputFixed to_fixed(const proto::WheelInput& in) {
-  WheelInputFixed f;
+proto::WheelInputFixed to_fixed(const proto::WheelInput& in) {
+  proto::WheelInputFixed f;
   f.kappa = Fixed64::from_double(in.kappa);
   f.alpha_rad = Fixed64::from_double(in.alpha_rad);
   f.gamma_rad = Fixed64::from_double(in.gamma_rad);
@@ -106,7 +106,7 @@ TEST(MfTyreChannelFixed, AnInvalidInputIsNonFiniteAndAnEmptyChannelGivesZeros) {
   const mf::MfOptions options = mf::options_from_use_mode(111).value;
   const auto px = mf::to_fixed_parameters(book_tyre());
   MfTyreChannelFixed x(px, options);
-  WheelInputFixed in = to_fixed(inputs()[0]);
+  proto::WheelInputFixed in = to_fixed(inputs()[0]);
   in.kappa = Fixed64::invalid();
   EXPECT_TRUE(x.evaluate(in, Fixed64(0.0)).non_finite);
   MfTyreChannelFixed empty;
