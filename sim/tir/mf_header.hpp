@@ -26,6 +26,10 @@ struct MfHeaderOptions {
   std::string name_space = "tyres";
   bool use_float = true;  ///< MfParameters<float> (ECU) or <double>
   std::string source;     ///< mentioned in the header comment
+  /// MfParameters<fixed::Fixed64> (cores without an FPU), overriding use_float: every value as
+  /// Fixed64::from_raw of mf::to_fixed_parameters()'s raw value (bit-identical to the host's
+  /// conversion), its decimal in the comment; a value outside Q31.32 as Fixed64::invalid().
+  bool use_fixed = false;
 };
 
 /// Throws TirError (line 0) for an invalid identifier or namespace.

@@ -28,6 +28,9 @@ int main(int argc, char** argv) {
   bool use_double = false;
   app.add_flag("--mf", mf, "emit tread::mf::MfParameters instead of a key/value table");
   app.add_flag("--double", use_double, "with --mf: MfParameters<double> instead of <float>");
+  bool use_fixed = false;
+  app.add_flag("--fixed", use_fixed,
+               "with --mf: MfParameters<fixed::Fixed64> (Q31.32 raw values) instead of <float>");
   CLI11_PARSE(app, argc, argv);
   try {
     const auto file = tread::tir::read_tir(input);
@@ -39,6 +42,7 @@ int main(int argc, char** argv) {
       mo.name = options.name;
       mo.name_space = options.name_space;
       mo.use_float = !use_double;
+      mo.use_fixed = use_fixed;
       mo.source = std::filesystem::path(input).filename().string();
       text = tread::tir::generate_mf_header(loaded.params, mo);
     } else {

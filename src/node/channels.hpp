@@ -8,35 +8,59 @@
 #include <cstdint>
 #include <span>
 
+#include "fixed/fixed64.hpp"
 #include "proto/codec.hpp"
 
 namespace tread::node {
 
-struct TyreResult {
-  float fx_n{0.0F};
-  float fy_n{0.0F};
-  float mz_nm{0.0F};
-  float mx_nm{0.0F};
-  float my_nm{0.0F};
-  float rl_m{0.0F};
+/// The results in the channel's scalar: float, or fixed::Fixed64 on the integer-only path.
+template <typename S>
+struct BasicTyreResult {
+  S fx_n{};
+  S fy_n{};
+  S mz_nm{};
+  S mx_nm{};
+  S my_nm{};
+  S rl_m{};
   bool clamped{false};  ///< an input was outside the model's limits and was clamped to them
   /// the model gave a non-finite output (defective parameters, a NaN input): not to be sent
   bool non_finite{false};
 };
+using TyreResult = BasicTyreResult<float>;
+using TyreResultFixed = BasicTyreResult<fixed::Fixed64>;
 
-struct ContactResult {
-  float r_left_mm{0.0F};
-  float r_right_mm{0.0F};
-  float delta_r_mm{0.0F};
-  float gamma_left_rad{0.0F};
-  float gamma_right_rad{0.0F};
+template <typename S>
+struct BasicContactResult {
+  S r_left_mm{};
+  S r_right_mm{};
+  S delta_r_mm{};
+  S gamma_left_rad{};
+  S gamma_right_rad{};
   bool clamped{false};  ///< the displacement lay outside the table and was clamped to its range
 };
+using ContactResult = BasicContactResult<float>;
+using ContactResultFixed = BasicContactResult<fixed::Fixed64>;
+
+/// The scalar a channel computes in: its `Scalar` member type, float when it has none.
+template <typename T>
+struct channel_scalar {
+  using type = float;
+};
+template <typename T>
+requires requires {
+  typename T::Scalar;
+}
+struct channel_scalar<T> {
+  using type = typename T::Scalar;
+};
+template <typename T>
+using ChannelScalar = typename channel_scalar<T>::type;
 
 /// A road-wheel channel. `dt_s` is the time since the previous evaluation (0 on the first one).
 template <typename T>
-concept TyreChannel = requires(T tyre, const proto::WheelInput& input, float dt_s) {
-  { tyre.evaluate(input, dt_s) } -> std::same_as<TyreResult>;
+concept TyreChannel = requires(T tyre, const proto::BasicWheelInput<ChannelScalar<T>>& input,
+                               ChannelScalar<T> dt_s) {
+  { tyre.evaluate(input, dt_s) } -> std::same_as<BasicTyreResult<ChannelScalar<T>>>;
   { tyre.reset() } -> std::same_as<void>;
 };
 
@@ -49,15 +73,17 @@ constexpr bool is_due(std::uint8_t due, std::size_t i) {
 /// vector lanes): results[i] for every bit i of `due`; the node uses it when the type has it.
 template <typename T>
 concept BatchTyreChannel = TyreChannel<T> &&
-    requires(std::span<T> tyres, std::span<const proto::WheelInput> inputs, std::uint8_t due,
-             float dt_s, std::span<TyreResult> results) {
+    requires(std::span<T> tyres, std::span<const proto::BasicWheelInput<ChannelScalar<T>>> inputs,
+             std::uint8_t due, ChannelScalar<T> dt_s,
+             std::span<BasicTyreResult<ChannelScalar<T>>> results) {
   { T::evaluate_wheels(tyres, inputs, due, dt_s, results) } -> std::same_as<void>;
 };
 
 /// A rail-wheelset channel.
 template <typename C>
-concept ContactChannel = requires(C contact, const proto::WheelsetInput& input) {
-  { contact.evaluate(input) } -> std::same_as<ContactResult>;
+concept ContactChannel = requires(C contact,
+                                  const proto::BasicWheelsetInput<ChannelScalar<C>>& input) {
+  { contact.evaluate(input) } -> std::same_as<BasicContactResult<ChannelScalar<C>>>;
 };
 
 /// A channel type for builds without wheelsets (or without road wheels).

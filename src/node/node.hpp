@@ -11,6 +11,7 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <concepts>
 #include <cstdint>
 #include <limits>
 #include <span>
@@ -27,8 +28,14 @@ namespace tread::node {
 inline constexpr std::size_t kMaxTxFrames = 16;
 
 template <TyreChannel Tyre, ContactChannel Contact>
+requires std::same_as<ChannelScalar<Tyre>, ChannelScalar<Contact>>
 class Node {
  public:
+  /// The physical values' scalar: float, or fixed::Fixed64 (channels on the integer-only path).
+  using Scalar = ChannelScalar<Tyre>;
+  using RigData = proto::BasicRigData<Scalar>;
+  using NodeData = proto::BasicNodeData<Scalar>;
+
   /// `tyres` must hold config.wheels channels and `contacts` config.wheelsets; both outlive the
   /// node.
   Node(const NodeConfig& config, std::span<Tyre> tyres, std::span<Contact> contacts) noexcept
@@ -110,25 +117,23 @@ class Node {
   /// @return the number of frames written (at most kMaxTxFrames)
   std::size_t compute(std::int64_t now_ns, std::span<proto::CanFrame> tx) noexcept {
     ++counters_.cycles;
-    // Integer nanoseconds to float seconds without double arithmetic (soft-float on Cortex-M4F).
-    const float dt_s =
-        last_compute_ns_ == kNever ? 0.0F : static_cast<float>(now_ns - last_compute_ns_) * 1e-9F;
+    const Scalar dt_s = last_compute_ns_ == kNever ? Scalar{} : seconds(now_ns - last_compute_ns_);
     last_compute_ns_ = now_ns;
 
     std::uint8_t stale_mask = 0;
     std::uint8_t clamp_mask = 0;
     std::uint8_t due = 0;  // wheels to compute this cycle
     for (std::size_t i = 0; i < config_.wheels; ++i) {
-      proto::WheelOutput& out = outputs_.wheels[i];
+      WheelOutput& out = outputs_.wheels[i];
       const auto bit = static_cast<std::uint8_t>(1U << i);
       if (!enabled_) {
-        out = proto::WheelOutput{};
+        out = WheelOutput{};
         out.status = proto::kStatusDisabled;
         tyres_[i].reset();  // restart transients cleanly when the node is enabled again
         continue;
       }
       if (!fresh(bit, now_ns)) {
-        out = proto::WheelOutput{};
+        out = WheelOutput{};
         out.status = proto::kStatusStale;
         stale_mask = static_cast<std::uint8_t>(stale_mask | bit);
         tyres_[i].reset();  // restart transients cleanly when inputs return
@@ -136,12 +141,12 @@ class Node {
       }
       due = static_cast<std::uint8_t>(due | bit);
     }
-    std::array<TyreResult, proto::kMaxWheels> results{};
+    std::array<BasicTyreResult<Scalar>, proto::kMaxWheels> results{};
     if constexpr (BatchTyreChannel<Tyre>) {
       Tyre::evaluate_wheels(
           tyres_.first(config_.wheels),
-          std::span<const proto::WheelInput>(latest_.wheels).first(config_.wheels), due, dt_s,
-          results);
+          std::span<const proto::BasicWheelInput<Scalar>>(latest_.wheels).first(config_.wheels),
+          due, dt_s, results);
     } else {
       for (std::size_t i = 0; i < config_.wheels; ++i) {
         if (is_due(due, i)) results[i] = tyres_[i].evaluate(latest_.wheels[i], dt_s);
@@ -150,9 +155,9 @@ class Node {
     for (std::size_t i = 0; i < config_.wheels; ++i) {
       const auto bit = static_cast<std::uint8_t>(1U << i);
       if (!is_due(due, i)) continue;
-      proto::WheelOutput& out = outputs_.wheels[i];
-      const TyreResult& r = results[i];
-      out = proto::WheelOutput{r.fx_n, r.fy_n, r.mz_nm, r.mx_nm, r.my_nm, r.rl_m, 0};
+      WheelOutput& out = outputs_.wheels[i];
+      const BasicTyreResult<Scalar>& r = results[i];
+      out = WheelOutput{r.fx_n, r.fy_n, r.mz_nm, r.mx_nm, r.my_nm, r.rl_m, 0};
       if (r.clamped) {
         out.status = proto::kStatusClamped;
         clamp_mask = static_cast<std::uint8_t>(clamp_mask | bit);
@@ -160,27 +165,27 @@ class Node {
       if (r.non_finite || !all_finite(out)) {  // zeros, flagged as an output that did not fit
         ++counters_.non_finite_outputs;
         const std::uint8_t status = out.status;
-        out = proto::WheelOutput{};
+        out = WheelOutput{};
         out.status = static_cast<std::uint8_t>(status | proto::kStatusOutOfRange);
       }
     }
     for (std::size_t j = 0; j < config_.wheelsets; ++j) {
-      proto::WheelsetOutput& out = outputs_.wheelsets[j];
+      WheelsetOutput& out = outputs_.wheelsets[j];
       const auto bit = static_cast<std::uint8_t>(1U << (4U + j));
       if (!enabled_) {
-        out = proto::WheelsetOutput{};
+        out = WheelsetOutput{};
         out.status = proto::kStatusDisabled;
         continue;
       }
       if (!fresh(bit, now_ns)) {
-        out = proto::WheelsetOutput{};
+        out = WheelsetOutput{};
         out.status = proto::kStatusStale;
         stale_mask = static_cast<std::uint8_t>(stale_mask | bit);
         continue;
       }
-      const ContactResult r = contacts_[j].evaluate(latest_.wheelsets[j]);
-      out = proto::WheelsetOutput{r.r_left_mm,      r.r_right_mm,      r.delta_r_mm,
-                                  r.gamma_left_rad, r.gamma_right_rad, 0};
+      const BasicContactResult<Scalar> r = contacts_[j].evaluate(latest_.wheelsets[j]);
+      out = WheelsetOutput{r.r_left_mm,      r.r_right_mm,      r.delta_r_mm,
+                           r.gamma_left_rad, r.gamma_right_rad, 0};
       if (r.clamped) {
         out.status = proto::kStatusClamped;
         clamp_mask = static_cast<std::uint8_t>(clamp_mask | bit);
@@ -188,7 +193,7 @@ class Node {
       if (!all_finite(out)) {  // zeros, flagged as an output that did not fit
         ++counters_.non_finite_outputs;
         const std::uint8_t status = out.status;
-        out = proto::WheelsetOutput{};
+        out = WheelsetOutput{};
         out.status = static_cast<std::uint8_t>(status | proto::kStatusOutOfRange);
       }
     }
@@ -227,13 +232,27 @@ class Node {
   void note_overrun(std::uint64_t missed = 1) noexcept { counters_.overruns += missed; }
 
   [[nodiscard]] const NodeCounters& counters() const noexcept { return counters_; }
-  [[nodiscard]] const proto::NodeData& outputs() const noexcept { return outputs_; }
-  [[nodiscard]] const proto::RigData& latest_inputs() const noexcept { return latest_; }
+  [[nodiscard]] const NodeData& outputs() const noexcept { return outputs_; }
+  [[nodiscard]] const RigData& latest_inputs() const noexcept { return latest_; }
   [[nodiscard]] const NodeConfig& config() const noexcept { return config_; }
   [[nodiscard]] bool enabled() const noexcept { return enabled_; }
 
  private:
   static constexpr std::int64_t kNever = std::numeric_limits<std::int64_t>::min();
+  using WheelOutput = proto::BasicWheelOutput<Scalar>;
+  using WheelsetOutput = proto::BasicWheelsetOutput<Scalar>;
+
+  /// Integer nanoseconds to seconds: in float without double arithmetic (soft-float on
+  /// Cortex-M4F); in Q31.32 as ns·2^−32 × (2^32·10^−9), integer only.
+  static Scalar seconds(std::int64_t ns) noexcept {
+    if constexpr (std::same_as<Scalar, fixed::Fixed64>) {
+      return fixed::Fixed64::from_raw(ns) * fixed::Fixed64(4.294967296);
+    } else {
+      return static_cast<float>(ns) * 1e-9F;
+    }
+  }
+  static bool finite(float x) noexcept { return std::isfinite(x); }
+  static bool finite(fixed::Fixed64 x) noexcept { return x.valid(); }
 
   static bool is_wheel_role(proto::Role r) noexcept {
     using proto::Role;
@@ -290,14 +309,13 @@ class Node {
       counters_.overruns = overruns;  // a fact about the schedule, not about the session
     }
   }
-  static bool all_finite(const proto::WheelOutput& o) noexcept {
-    return std::isfinite(o.fx_n) && std::isfinite(o.fy_n) && std::isfinite(o.mz_nm) &&
-           std::isfinite(o.mx_nm) && std::isfinite(o.my_nm) && std::isfinite(o.rl_m);
+  static bool all_finite(const WheelOutput& o) noexcept {
+    return finite(o.fx_n) && finite(o.fy_n) && finite(o.mz_nm) && finite(o.mx_nm) &&
+           finite(o.my_nm) && finite(o.rl_m);
   }
-  static bool all_finite(const proto::WheelsetOutput& o) noexcept {
-    return std::isfinite(o.r_left_mm) && std::isfinite(o.r_right_mm) &&
-           std::isfinite(o.delta_r_mm) && std::isfinite(o.gamma_left_rad) &&
-           std::isfinite(o.gamma_right_rad);
+  static bool all_finite(const WheelsetOutput& o) noexcept {
+    return finite(o.r_left_mm) && finite(o.r_right_mm) && finite(o.delta_r_mm) &&
+           finite(o.gamma_left_rad) && finite(o.gamma_right_rad);
   }
   static std::uint8_t saturate8(std::uint64_t v) noexcept {
     return static_cast<std::uint8_t>(v > 255U ? 255U : v);
@@ -322,8 +340,8 @@ class Node {
   std::span<Tyre> tyres_;
   std::span<Contact> contacts_;
   bool enabled_{true};
-  proto::RigData latest_{};
-  proto::NodeData outputs_{};
+  RigData latest_{};
+  NodeData outputs_{};
   NodeCounters counters_{};
   std::array<proto::E2eReceiver, proto::kMaxMessages> receivers_{};
   std::array<std::int64_t, proto::kMaxMessages> last_valid_ns_{};

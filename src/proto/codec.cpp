@@ -3,8 +3,10 @@
 #include <array>
 #include <concepts>
 #include <type_traits>
+#include <utility>
 
 #include "proto/e2e_profile1.hpp"
+#include "proto/signal_fixed.hpp"
 
 namespace tread::proto {
 namespace {
@@ -20,16 +22,21 @@ std::size_t index_of(const MessageSpec& m, const SignalSpec& s, std::size_t coun
 // the per-signal lookup is a load instead of a switch.
 constexpr std::size_t kRoleCount = static_cast<std::size_t>(Role::node_clamp_mask) + 1U;
 
-template <typename Wheel, typename Wheelset>
+template <typename S, typename Wheel, typename Wheelset>
 struct FloatMember {
-  float Wheel::*wheel = nullptr;
-  float Wheelset::*wheelset = nullptr;
+  S Wheel::*wheel = nullptr;
+  S Wheelset::*wheelset = nullptr;
 };
 
-using RigMember = FloatMember<WheelInput, WheelsetInput>;
-using NodeMember = FloatMember<WheelOutput, WheelsetOutput>;
+template <typename S>
+using RigMember = FloatMember<S, BasicWheelInput<S>, BasicWheelsetInput<S>>;
+template <typename S>
+using NodeMember = FloatMember<S, BasicWheelOutput<S>, BasicWheelsetOutput<S>>;
 
-constexpr RigMember rig_member(Role role) noexcept {
+template <typename S>
+constexpr RigMember<S> rig_member(Role role) noexcept {
+  using WheelInput = BasicWheelInput<S>;
+  using WheelsetInput = BasicWheelsetInput<S>;
   switch (role) {
     case Role::kappa:
       return {&WheelInput::kappa, nullptr};
@@ -52,7 +59,10 @@ constexpr RigMember rig_member(Role role) noexcept {
   }
 }
 
-constexpr NodeMember node_member(Role role) noexcept {
+template <typename S>
+constexpr NodeMember<S> node_member(Role role) noexcept {
+  using WheelOutput = BasicWheelOutput<S>;
+  using WheelsetOutput = BasicWheelsetOutput<S>;
   switch (role) {
     case Role::fx:
       return {&WheelOutput::fx_n, nullptr};
@@ -88,22 +98,34 @@ constexpr std::array<Member, kRoleCount> make_members() noexcept {
   return table;
 }
 
-constexpr auto kRigMembers = make_members<RigMember, rig_member>();
-constexpr auto kNodeMembers = make_members<NodeMember, node_member>();
+template <typename S>
+constexpr auto kRigMembers = make_members<RigMember<S>, rig_member<S>>();
+template <typename S>
+constexpr auto kNodeMembers = make_members<NodeMember<S>, node_member<S>>();
+
+template <typename D>
+inline constexpr bool kIsRigData = std::same_as<std::remove_const_t<D>, RigData> ||
+                                   std::same_as<std::remove_const_t<D>, RigDataFixed>;
+template <typename D>
+inline constexpr bool kIsNodeData = std::same_as<std::remove_const_t<D>, NodeData> ||
+                                    std::same_as<std::remove_const_t<D>, NodeDataFixed>;
+
+/// The scalar of a data model (float or fixed::Fixed64).
+template <typename D>
+using ScalarOf = std::remove_cvref_t<decltype(std::declval<D&>().wheels[0].fx_n)>;
 
 template <typename D>
 constexpr const auto& members_for() noexcept {
-  if constexpr (std::same_as<std::remove_const_t<D>, RigData>) {
-    return kRigMembers;
+  if constexpr (kIsRigData<D>) {
+    return kRigMembers<std::remove_cvref_t<decltype(std::declval<D&>().wheels[0].kappa)>>;
   } else {
-    return kNodeMembers;
+    return kNodeMembers<ScalarOf<D>>;
   }
 }
 
 // A physical (float) field of the data model, or nullptr for integer-valued roles.
 template <typename D>
-requires std::same_as<std::remove_const_t<D>, RigData> ||
-    std::same_as<std::remove_const_t<D>, NodeData>
+requires kIsRigData<D> || kIsNodeData<D>
 auto float_field(D& d, const MessageSpec& m, const SignalSpec& s) noexcept
     -> decltype(&(d.wheels[0].*members_for<D>()[0].wheel)) {
   const auto& member = members_for<D>()[static_cast<std::size_t>(s.role)];
@@ -118,7 +140,7 @@ auto float_field(D& d, const MessageSpec& m, const SignalSpec& s) noexcept
 
 // Integer-valued roles: read (get) or write (set) through one accessor.
 template <typename D, typename Visit>
-requires std::same_as<std::remove_const_t<D>, RigData>
+requires kIsRigData<D>
 void int_field(D& d, const MessageSpec& m, const SignalSpec& s, Visit&& visit) noexcept {
   auto& w = d.wheels[index_of(m, s, kMaxWheels)];
   auto& ws = d.wheelsets[index_of(m, s, kMaxWheelsets)];
@@ -150,7 +172,7 @@ void int_field(D& d, const MessageSpec& m, const SignalSpec& s, Visit&& visit) n
 }
 
 template <typename D, typename Visit>
-requires std::same_as<std::remove_const_t<D>, NodeData>
+requires kIsNodeData<D>
 void int_field(D& d, const MessageSpec& m, const SignalSpec& s, Visit&& visit) noexcept {
   auto& w = d.wheels[index_of(m, s, kMaxWheels)];
   auto& ws = d.wheelsets[index_of(m, s, kMaxWheelsets)];
@@ -184,6 +206,23 @@ void int_field(D& d, const MessageSpec& m, const SignalSpec& s, Visit&& visit) n
   }
 }
 
+// The float or the integer-only route, by the data model's scalar.
+inline Status encode_physical(const SignalSpec& s, float v, std::span<std::uint8_t> b) noexcept {
+  return encode_signal(s, v, b);
+}
+inline Status encode_physical(const SignalSpec& s, fixed::Fixed64 v,
+                              std::span<std::uint8_t> b) noexcept {
+  return encode_signal_fixed(s, v, b);
+}
+template <typename S>
+S decode_physical(const SignalSpec& s, std::span<const std::uint8_t> b) noexcept {
+  if constexpr (std::same_as<S, fixed::Fixed64>) {
+    return decode_signal_fixed(s, b);
+  } else {
+    return decode_signal(s, b);
+  }
+}
+
 template <typename Data>
 Status encode_impl(const MessageSpec& message, const Data& data, std::uint8_t counter,
                    CanFrame& frame) noexcept {
@@ -198,8 +237,8 @@ Status encode_impl(const MessageSpec& message, const Data& data, std::uint8_t co
     if (s.role == Role::crc || s.role == Role::counter) {
       continue;
     }
-    if (const float* f = float_field(data, message, s); f != nullptr) {
-      if (encode_signal(s, *f, bytes) != Status::ok) {
+    if (const auto* f = float_field(data, message, s); f != nullptr) {
+      if (encode_physical(s, *f, bytes) != Status::ok) {
         status = Status::out_of_range;
       }
       continue;
@@ -224,8 +263,8 @@ Status decode_impl(const MessageSpec& message, const CanFrame& frame, Data& data
     if (s.role == Role::crc || s.role == Role::counter) {
       continue;
     }
-    if (float* f = float_field(data, message, s); f != nullptr) {
-      *f = decode_signal(s, bytes);
+    if (auto* f = float_field(data, message, s); f != nullptr) {
+      *f = decode_physical<std::remove_cvref_t<decltype(*f)>>(s, bytes);
       continue;
     }
     const std::int64_t raw = decode_raw_signal(s, bytes);
@@ -262,6 +301,36 @@ Status decode(const MessageSpec& message, const CanFrame& frame, RigData& data) 
 }
 
 Status decode(const MessageSpec& message, const CanFrame& frame, NodeData& data) noexcept {
+  if (message.direction != Direction::node_to_rig) {
+    return Status::invalid_argument;
+  }
+  return decode_impl(message, frame, data);
+}
+
+Status encode(const MessageSpec& message, const RigDataFixed& data, std::uint8_t counter,
+              CanFrame& frame) noexcept {
+  if (message.direction != Direction::rig_to_node) {
+    return Status::invalid_argument;
+  }
+  return encode_impl(message, data, counter, frame);
+}
+
+Status encode(const MessageSpec& message, const NodeDataFixed& data, std::uint8_t counter,
+              CanFrame& frame) noexcept {
+  if (message.direction != Direction::node_to_rig) {
+    return Status::invalid_argument;
+  }
+  return encode_impl(message, data, counter, frame);
+}
+
+Status decode(const MessageSpec& message, const CanFrame& frame, RigDataFixed& data) noexcept {
+  if (message.direction != Direction::rig_to_node) {
+    return Status::invalid_argument;
+  }
+  return decode_impl(message, frame, data);
+}
+
+Status decode(const MessageSpec& message, const CanFrame& frame, NodeDataFixed& data) noexcept {
   if (message.direction != Direction::node_to_rig) {
     return Status::invalid_argument;
   }

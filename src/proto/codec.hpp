@@ -6,27 +6,37 @@
 #include <cstdint>
 
 #include "core/status.hpp"
+#include "fixed/fixed64.hpp"
 #include "proto/can_frame.hpp"
 #include "proto/messages.hpp"
 
 namespace tread::proto {
 
+// The physical values are float (the float path), or fixed::Fixed64 (the ...Fixed types: the
+// integer-only path for cores without an FPU, through signal_fixed.hpp).
+
 // ---- rig -> node ------------------------------------------------------------------------------
-struct WheelInput {
-  float kappa{0.0F};
-  float alpha_rad{0.0F};
-  float gamma_rad{0.0F};
-  float fz_n{0.0F};
-  float vx_mps{0.0F};
-  float omega_radps{0.0F};
+template <typename S>
+struct BasicWheelInput {
+  S kappa{};
+  S alpha_rad{};
+  S gamma_rad{};
+  S fz_n{};
+  S vx_mps{};
+  S omega_radps{};
   bool omega_valid{false};
 };
+using WheelInput = BasicWheelInput<float>;
+using WheelInputFixed = BasicWheelInput<fixed::Fixed64>;
 
-struct WheelsetInput {
-  float lateral_mm{0.0F};
-  float yaw_rad{0.0F};
+template <typename S>
+struct BasicWheelsetInput {
+  S lateral_mm{};
+  S yaw_rad{};
   bool yaw_valid{false};
 };
+using WheelsetInput = BasicWheelsetInput<float>;
+using WheelsetInputFixed = BasicWheelsetInput<fixed::Fixed64>;
 
 struct Command {
   bool enable{false};
@@ -35,12 +45,15 @@ struct Command {
   std::uint8_t profile_set{0};
 };
 
-struct RigData {
-  std::array<WheelInput, kMaxWheels> wheels{};
-  std::array<WheelsetInput, kMaxWheelsets> wheelsets{};
+template <typename S>
+struct BasicRigData {
+  std::array<BasicWheelInput<S>, kMaxWheels> wheels{};
+  std::array<BasicWheelsetInput<S>, kMaxWheelsets> wheelsets{};
   std::uint32_t rig_cycle{0};
   Command command{};
 };
+using RigData = BasicRigData<float>;
+using RigDataFixed = BasicRigData<fixed::Fixed64>;
 
 // ---- node -> rig ------------------------------------------------------------------------------
 /// Status bits of a wheel / wheelset output.
@@ -53,24 +66,30 @@ enum StatusBits : std::uint8_t {
   kStatusOutOfRange = 1U << 3U,
 };
 
-struct WheelOutput {
-  float fx_n{0.0F};
-  float fy_n{0.0F};
-  float mz_nm{0.0F};
-  float mx_nm{0.0F};
-  float my_nm{0.0F};
-  float rl_m{0.0F};
+template <typename S>
+struct BasicWheelOutput {
+  S fx_n{};
+  S fy_n{};
+  S mz_nm{};
+  S mx_nm{};
+  S my_nm{};
+  S rl_m{};
   std::uint8_t status{0};
 };
+using WheelOutput = BasicWheelOutput<float>;
+using WheelOutputFixed = BasicWheelOutput<fixed::Fixed64>;
 
-struct WheelsetOutput {
-  float r_left_mm{0.0F};
-  float r_right_mm{0.0F};
-  float delta_r_mm{0.0F};
-  float gamma_left_rad{0.0F};
-  float gamma_right_rad{0.0F};
+template <typename S>
+struct BasicWheelsetOutput {
+  S r_left_mm{};
+  S r_right_mm{};
+  S delta_r_mm{};
+  S gamma_left_rad{};
+  S gamma_right_rad{};
   std::uint8_t status{0};
 };
+using WheelsetOutput = BasicWheelsetOutput<float>;
+using WheelsetOutputFixed = BasicWheelsetOutput<fixed::Fixed64>;
 
 /// NodeStatus.State bits.
 inline constexpr std::uint8_t kNodeEnabled = 1U << 0U;
@@ -87,11 +106,14 @@ struct NodeStatusData {
   std::uint8_t clamp_mask{0};
 };
 
-struct NodeData {
-  std::array<WheelOutput, kMaxWheels> wheels{};
-  std::array<WheelsetOutput, kMaxWheelsets> wheelsets{};
+template <typename S>
+struct BasicNodeData {
+  std::array<BasicWheelOutput<S>, kMaxWheels> wheels{};
+  std::array<BasicWheelsetOutput<S>, kMaxWheelsets> wheelsets{};
   NodeStatusData status{};
 };
+using NodeData = BasicNodeData<float>;
+using NodeDataFixed = BasicNodeData<fixed::Fixed64>;
 
 /// Fills `frame` (id, length, FD flag, payload) from `data`, then writes counter and CRC.
 /// @retval Status::ok            every signal fitted
@@ -108,5 +130,13 @@ Status encode(const MessageSpec& message, const NodeData& data, std::uint8_t cou
 /// @retval Status::invalid_argument  wrong length or direction
 Status decode(const MessageSpec& message, const CanFrame& frame, RigData& data) noexcept;
 Status decode(const MessageSpec& message, const CanFrame& frame, NodeData& data) noexcept;
+
+/// The same on the fixed-point data model (no float on the way).
+Status encode(const MessageSpec& message, const RigDataFixed& data, std::uint8_t counter,
+              CanFrame& frame) noexcept;
+Status encode(const MessageSpec& message, const NodeDataFixed& data, std::uint8_t counter,
+              CanFrame& frame) noexcept;
+Status decode(const MessageSpec& message, const CanFrame& frame, RigDataFixed& data) noexcept;
+Status decode(const MessageSpec& message, const CanFrame& frame, NodeDataFixed& data) noexcept;
 
 }  // namespace tread::proto

@@ -93,10 +93,14 @@ struct SignalSpec {
   float factor_f;  ///< factor and offset as float for the real-time path
   float offset_f;
   float inverse_factor_f;  ///< 1 / factor, so encoding multiplies
-  // Derived once, at compile time, for the per-frame path (12 bytes a signal: the tables may live
-  // in RAM on a microcontroller):
-  float raw_min_f;          ///< raw_min() as float (exact: |raw_min| ≤ 2^31)
-  float raw_max_f;          ///< raw_max() as float (may round up for 32-bit signals)
+  // Derived once, at compile time, for the per-frame path (12 bytes a signal, and 16 for the
+  // Q31.32 pair: the tables may live in RAM on a microcontroller):
+  float raw_min_f;  ///< raw_min() as float (exact: |raw_min| ≤ 2^31)
+  float raw_max_f;  ///< raw_max() as float (may round up for 32-bit signals)
+  /// factor and offset in Q31.32 (fixed::Fixed64 raw values, rounded to nearest) for the
+  /// integer-only path (signal_fixed.hpp); factor_q32 ≥ 1 for every DBC factor ≥ 2^−32.
+  std::int64_t factor_q32;
+  std::int64_t offset_q32;
   bool whole_bytes;         ///< starts on a byte and spans whole bytes
   std::uint8_t first_byte;  ///< start_bit / 8
   std::uint8_t byte_count;  ///< length / 8 when whole_bytes
@@ -119,6 +123,8 @@ struct SignalSpec {
         inverse_factor_f(static_cast<float>(1.0 / factor_)),
         raw_min_f(static_cast<float>(raw_min())),
         raw_max_f(static_cast<float>(raw_max())),
+        factor_q32(to_q32(factor_)),
+        offset_q32(to_q32(offset_)),
         whole_bytes((start % 8U) == 0U && (len % 8U) == 0U),
         first_byte(static_cast<std::uint8_t>(start / 8U)),
         byte_count(static_cast<std::uint8_t>(len / 8U)) {}
@@ -129,6 +135,13 @@ struct SignalSpec {
   [[nodiscard]] constexpr std::int64_t raw_max() const noexcept {
     return is_signed ? (std::int64_t{1} << (length - 1U)) - 1 : (std::int64_t{1} << length) - 1;
   }
+  /// A DBC factor or offset in Q31.32, rounded half away from zero (evaluated where the tables
+  /// are built: at compile time for the node's constexpr tables).
+  static constexpr std::int64_t to_q32(double value) noexcept {
+    const double scaled = value * 4294967296.0;
+    return static_cast<std::int64_t>(scaled < 0.0 ? scaled - 0.5 : scaled + 0.5);
+  }
+
   [[nodiscard]] constexpr double physical_min() const noexcept {
     return static_cast<double>(raw_min()) * factor + offset;
   }

@@ -1,6 +1,7 @@
 // The MF constexpr header: generated at build time from MagicFormula61_Parameters.tir (float and
 // double) and compared member by member, bit for bit, with the host loader's values
-// (mf::load_mf_parameters, converted with mf::convert_parameters<float> for the float header).
+// (mf::load_mf_parameters, converted with mf::convert_parameters<float> for the float header and
+// mf::to_fixed_parameters for the Fixed64 one).
 #include "tir/mf_header.hpp"
 
 #include <gtest/gtest.h>
@@ -8,10 +9,13 @@
 #include <bit>
 #include <cstdint>
 #include <filesystem>
+#include <type_traits>
 
 #include "generated/mf61_params_double.hpp"
+#include "generated/mf61_params_fixed.hpp"
 #include "generated/mf61_params_float.hpp"
 #include "golden_path.hpp"
+#include "mf/mf_fixed.hpp"
 #include "mf/mf_parameters_from_tir.hpp"
 #include "tir/tir_file.hpp"
 
@@ -19,7 +23,9 @@ namespace {
 
 template <typename T>
 auto bits(T v) {
-  if constexpr (sizeof(T) == 4) {
+  if constexpr (std::is_same_v<T, tread::fixed::Fixed64>) {
+    return v.raw();
+  } else if constexpr (sizeof(T) == 4) {
     return std::bit_cast<std::uint32_t>(v);
   } else {
     return std::bit_cast<std::uint64_t>(v);
@@ -45,6 +51,7 @@ TEST(MfHeader, GeneratedParametersEqualTheLoader) {
   const auto loaded = tread::mf::load_mf_parameters(path).params;
   expect_identical(tyres::kMf61Double, loaded);
   expect_identical(tyres::kMf61Float, tread::mf::convert_parameters<float>(loaded));
+  expect_identical(tyres::kMf61Fixed, tread::mf::to_fixed_parameters(loaded));
   EXPECT_EQ(tyres::kMf61Float.fit_type, tread::mf::FitType::mf61);
   EXPECT_EQ(tyres::kMf61Float.tyre_side, tread::mf::TyreSide::right);  // TYRESIDE = 'RIGHT'
 }
@@ -53,6 +60,7 @@ TEST(MfHeader, GeneratedParametersEqualTheLoader) {
 static_assert(tyres::kMf61Float.fit_type == tread::mf::FitType::mf61);
 static_assert(std::bit_cast<std::uint64_t>(tyres::kMf61Double.fnomin_n) ==
               std::bit_cast<std::uint64_t>(6752.0));  // FNOMIN in the file
+static_assert(tyres::kMf61Fixed.fnomin_n == tread::fixed::Fixed64(6752.0));
 
 TEST(MfHeader, RejectsBadNames) {
   tread::mf::MfParameters<double> p;
