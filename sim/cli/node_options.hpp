@@ -52,6 +52,9 @@ inline void add_node_options(CLI::App& cmd, NodeCliState& s, bool tir_required) 
       ->capture_default_str();
   cmd.add_option("--side", s.settings.side, "mounted side: as-measured, left or right")
       ->capture_default_str();
+  cmd.add_flag("--fixed", s.settings.fixed,
+               "run the node in fixed point, exactly as the FPU-less firmware image does (Q31.32 "
+               "Magic Formula, the contact table in integers, integer signal scaling)");
 }
 
 /// Turns the parsed options into NodeSettings (call from the command's callback).

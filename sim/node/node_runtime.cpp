@@ -1,8 +1,10 @@
 #include "node/node_runtime.hpp"
 
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
+#include "mf/mf_fixed.hpp"
 #include "mf/mf_parameters_from_tir.hpp"
 
 namespace tread::host {
@@ -76,8 +78,15 @@ NodeRuntime::NodeRuntime(const NodeSettings& settings) {
       throw std::runtime_error("--side: want as-measured, left or right, not '" + settings.side +
                                "'");
     }
-    for (auto& tyre : tyres_) {
-      tyre = node::MfTyreChannel(params_, options_, settings.relaxation);
+    if (settings.fixed) {
+      params_fixed_ = mf::to_fixed_parameters(params_double_);
+      for (auto& tyre : tyres_fixed_) {
+        tyre = node::MfTyreChannelFixed(params_fixed_, options_, settings.relaxation);
+      }
+    } else {
+      for (auto& tyre : tyres_) {
+        tyre = node::MfTyreChannel(params_, options_, settings.relaxation);
+      }
     }
   }
   if (config.wheelsets > 0) {
@@ -99,11 +108,37 @@ NodeRuntime::NodeRuntime(const NodeSettings& settings) {
     table_ =
         rail::ContactTableF32{static_cast<float>(t.y_first_mm), static_cast<float>(t.y_step_mm),
                               static_cast<std::uint32_t>(n), rows_.data()};
+    // In integers as the LUT generator flashes them (sim/lut/lut_generator.cpp): rounded to
+    // nearest.
+    const auto q = [](double v, double per_unit) {
+      return static_cast<std::int32_t>(std::llround(v * per_unit));
+    };
+    rows_q_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      rows_q_[i] = rail::ContactRowQ{
+          q(t.r_left_mm[i], rail::kQLengthPerMm), q(t.r_right_mm[i], rail::kQLengthPerMm),
+          q(t.delta_r_mm[i], rail::kQLengthPerMm), q(t.gamma_left_rad[i], rail::kQAnglePerRad),
+          q(t.gamma_right_rad[i], rail::kQAnglePerRad)};
+    }
+    table_q_ = rail::ContactTableQ{q(t.y_first_mm, rail::kQYPerMm), q(t.y_step_mm, rail::kQYPerMm),
+                                   static_cast<std::uint32_t>(n), rows_q_.data()};
+    if (settings.fixed && table_q_.y_step <= 0) {
+      throw std::runtime_error(
+          "--wheelset-step-mm: the fixed-point contact table needs a step of "
+          "at least 1 µm");
+    }
     for (auto& c : contacts_) {
       c = node::ContactTableChannel(table_);
     }
+    for (auto& c : contacts_fixed_) {
+      c = node::ContactTableChannelFixed(table_q_);
+    }
   }
-  node_ = std::make_unique<RuntimeNode>(config, tyres_, contacts_);
+  if (settings.fixed) {
+    node_fixed_ = std::make_unique<RuntimeNodeFixed>(config, tyres_fixed_, contacts_fixed_);
+  } else {
+    node_ = std::make_unique<RuntimeNode>(config, tyres_, contacts_);
+  }
 }
 
 }  // namespace tread::host

@@ -36,11 +36,12 @@ SessionReport run_with(Bus& bus, Pin& pin, NodeRuntime& runtime, const NodeSetti
     writer.open(options.log, options.can);
     recorder.writer = &writer;
   }
-  hal::LoopRunner loop(runtime.node(), bus, clock, pin, loop_config(settings, options.period_us),
-                       recorder);
-  loop.run(options.cycles == 0 ? ~std::uint64_t{0} : options.cycles, stop);
-  report.loop = loop.stats();
-  report.counters = runtime.node().counters();
+  report.loop = runtime.visit([&](auto& node) {
+    hal::LoopRunner loop(node, bus, clock, pin, loop_config(settings, options.period_us), recorder);
+    loop.run(options.cycles == 0 ? ~std::uint64_t{0} : options.cycles, stop);
+    return loop.stats();
+  });
+  report.counters = runtime.counters();
   return report;
 }
 
@@ -139,23 +140,24 @@ ReplayResult run_replay(const NodeSettings& settings, const std::filesystem::pat
   });
 
   NodeRuntime runtime(settings);
-  RuntimeNode& node = runtime.node();
   CandumpWriter writer;
   ReplaySink sink{frames.front().interface, &writer, {}};
   if (!tx_log.empty()) {
     writer.open(tx_log, sink.interface);
   }
-  node::LogReplay replay(node, sink, period_us * 1000);
-  for (const LoggedFrame* f : ordered) {
-    static_cast<void>(replay.add(f->frame, f->time_ns));  // in time order: always ok
-  }
-  replay.finish();
+  const node::ReplayCounts counts = runtime.visit([&](auto& node) {
+    node::LogReplay replay(node, sink, period_us * 1000);
+    for (const LoggedFrame* f : ordered) {
+      static_cast<void>(replay.add(f->frame, f->time_ns));  // in time order: always ok
+    }
+    replay.finish();
+    return replay.counts();
+  });
 
   ReplayResult result;
-  const node::ReplayCounts& counts = replay.counts();
   result.report.loop.cycles = counts.cycles;
   result.report.loop.overruns = counts.overruns;
-  result.report.counters = node.counters();
+  result.report.counters = runtime.counters();
   result.input_frames = counts.input_frames;
   result.tx_frames = counts.tx_frames;
   result.logged_tx_frames = logged_tx.size();

@@ -33,7 +33,7 @@ ScenarioContext context_of(const DemoSettings& s) {
 template <typename ClockT, typename NodeBus, typename RigBus>
 DemoResult co_simulate(const DemoSettings& s, NodeRuntime& runtime, ClockT& clock,
                        NodeBus& node_bus, RigBus& rig_bus) {
-  const node::NodeConfig& cfg = runtime.node().config();
+  const node::NodeConfig& cfg = runtime.config();
   const ScenarioContext context = context_of(s);
   const std::vector<std::unique_ptr<RigScenario>> scenarios = make_scenarios(s.scenarios, context);
   contact::ContactTable contact_reference;
@@ -56,47 +56,49 @@ DemoResult co_simulate(const DemoSettings& s, NodeRuntime& runtime, ClockT& cloc
   hal::NoPin pin;
   hal::LoopConfig loop_config;
   loop_config.period_ns = s.period_us * 1000;
-  hal::LoopRunner loop(runtime.node(), node_bus, clock, pin, loop_config, recorder);
-  proto::RigLink link(cfg.layout, cfg.wheels, cfg.wheelsets);
-  const double dt_s = static_cast<double>(s.period_us) * 1e-6;
-  std::filesystem::create_directories(s.out_dir);
+  return runtime.visit([&](auto& node) {
+    hal::LoopRunner loop(node, node_bus, clock, pin, loop_config, recorder);
+    proto::RigLink link(cfg.layout, cfg.wheels, cfg.wheelsets);
+    const double dt_s = static_cast<double>(s.period_us) * 1e-6;
+    std::filesystem::create_directories(s.out_dir);
 
-  DemoResult result;
-  std::uint32_t rig_cycle = 0;
-  // Outcomes (results, reference runs, traces, plots) after the last cycle, as `tread rig` does.
-  std::vector<std::unique_ptr<ScenarioRunner>> runners;
-  for (auto& scenario : scenarios) {
-    runners.push_back(std::make_unique<ScenarioRunner>(*scenario, link, cfg.layout, cfg.wheels,
-                                                       cfg.wheelsets, reference));
-    ScenarioRunner& runner = *runners.back();
-    while (!runner.done()) {
-      for (const proto::CanFrame& f : runner.begin_cycle(runner.time_s(), rig_cycle++)) {
-        static_cast<void>(rig_bus.send(f));
-      }
-      loop.run_periodic_cycle();
-      // The node's answer of this cycle (SocketCAN delivers within microseconds; poll briefly).
-      bool answered = false;
-      const std::int64_t give_up = clock.now_ns() + 200'000;
-      proto::CanFrame f{};
-      do {
-        while (rig_bus.receive(f) == Status::ok) {
-          answered = runner.on_frame(f) || answered;
+    DemoResult result;
+    std::uint32_t rig_cycle = 0;
+    // Outcomes (results, reference runs, traces, plots) after the last cycle, as `tread rig` does.
+    std::vector<std::unique_ptr<ScenarioRunner>> runners;
+    for (auto& scenario : scenarios) {
+      runners.push_back(std::make_unique<ScenarioRunner>(*scenario, link, cfg.layout, cfg.wheels,
+                                                         cfg.wheelsets, reference));
+      ScenarioRunner& runner = *runners.back();
+      while (!runner.done()) {
+        for (const proto::CanFrame& f : runner.begin_cycle(runner.time_s(), rig_cycle++)) {
+          static_cast<void>(rig_bus.send(f));
         }
-      } while (!answered && clock.now_ns() < give_up && !std::is_same_v<ClockT, hal::SimClock>);
-      result.unanswered_cycles += answered ? 0U : 1U;
-      runner.end_cycle(dt_s);
+        loop.run_periodic_cycle();
+        // The node's answer of this cycle (SocketCAN delivers within microseconds; poll briefly).
+        bool answered = false;
+        const std::int64_t give_up = clock.now_ns() + 200'000;
+        proto::CanFrame f{};
+        do {
+          while (rig_bus.receive(f) == Status::ok) {
+            answered = runner.on_frame(f) || answered;
+          }
+        } while (!answered && clock.now_ns() < give_up && !std::is_same_v<ClockT, hal::SimClock>);
+        result.unanswered_cycles += answered ? 0U : 1U;
+        runner.end_cycle(dt_s);
+      }
     }
-  }
-  for (auto& runner : runners) {
-    ScenarioOutcome o = finish_scenario(*runner, s.out_dir, s.plot);
-    result.answers.add(o.check);
-    result.scenarios.push_back(std::move(o));
-  }
-  result.report.loop = loop.stats();
-  result.report.counters = runtime.node().counters();
-  result.rig_frames_accepted = link.accepted();
-  result.rig_frames_rejected = link.rejected();
-  return result;
+    for (auto& runner : runners) {
+      ScenarioOutcome o = finish_scenario(*runner, s.out_dir, s.plot);
+      result.answers.add(o.check);
+      result.scenarios.push_back(std::move(o));
+    }
+    result.report.loop = loop.stats();
+    result.report.counters = runtime.counters();
+    result.rig_frames_accepted = link.accepted();
+    result.rig_frames_rejected = link.rejected();
+    return result;
+  });
 }
 
 }  // namespace
@@ -141,9 +143,10 @@ void print_demo(std::ostream& out, const DemoSettings& s, const DemoResult& r) {
   out << "tread HIL demo — node + rig on " << (s.can == "stub" ? "the in-process CAN bus" : s.can)
       << " (" << (s.node.node.layout == proto::Layout::fd ? "CAN FD" : "classic CAN") << " layout, "
       << (s.sim_clock ? "simulated" : "real") << " clock, period " << s.period_us << " us)\n";
+  const char* arithmetic = s.node.fixed ? "fixed point" : "float";
   if (s.node.node.wheels > 0) {
-    out << "tyre model        " << s.node.tir.string()
-        << " (float on the node, double reference)\n";
+    out << "tyre model        " << s.node.tir.string() << " (" << arithmetic
+        << " on the node, double reference)\n";
   }
   if (s.node.node.wheelsets > 0) {
     out << "wheelsets         " << static_cast<int>(s.node.node.wheelsets) << ": "
@@ -158,13 +161,13 @@ void print_demo(std::ostream& out, const DemoSettings& s, const DemoResult& r) {
   if (s.node.node.wheels > 0) {
     out << "  max |dF|          " << r.answers.max_force_error_n << " N  ("
         << 100.0 * r.answers.max_force_error_n / std::max(r.answers.max_force_n, 1.0)
-        << " % of the largest force " << r.answers.max_force_n
-        << " N; quantisation 0.5 N + float)\n";
+        << " % of the largest force " << r.answers.max_force_n << " N; quantisation 0.5 N + "
+        << arithmetic << ")\n";
     out << "  max |dMz|         " << r.answers.max_moment_error_nm << " N m\n";
   }
   if (s.node.node.wheelsets > 0) {
     out << "  max |d delta_r|   " << r.answers.max_delta_r_error_mm
-        << " mm (quantisation 0.0005 mm + float table)\n";
+        << " mm (quantisation 0.0005 mm + " << (s.node.fixed ? "integer" : "float") << " table)\n";
   }
   for (const ScenarioOutcome& o : r.scenarios) {
     print_scenario_outcome(out, o);

@@ -181,5 +181,32 @@ TEST(RigScenarios, EveryAnswerMatchesTheReferenceModel) {
   }
 }
 
+// The fixed-point node (`tread demo --fixed`: the FPU-less image's arithmetic) answers within the
+// same bounds: its Magic Formula is within 0.1 % of the peak of double (tests/fixed), far below the
+// force signals' 0.5 N step on 7 kN, and its contact table is the flashed integer one (0.1 µm).
+TEST(RigScenarios, EveryAnswerOfTheFixedPointNodeMatchesTheReferenceModel) {
+  DemoSettings settings = demo_settings({"sine-dwell", "sweep", "hunting"}, "answers_fixed");
+  settings.node.fixed = true;
+  const DemoResult r = run_demo(settings);
+  ASSERT_EQ(r.scenarios.size(), 3U);
+  EXPECT_EQ(r.rig_frames_rejected, 0U);
+  EXPECT_EQ(r.unanswered_cycles, 0U);
+  EXPECT_EQ(r.report.loop.overruns, 0U);
+  EXPECT_EQ(r.report.counters.rx_bad_crc + r.report.counters.rx_bad_counter +
+                r.report.counters.rx_bad_length,
+            0U);
+  for (const ScenarioOutcome& o : r.scenarios) {
+    EXPECT_GT(o.check.answers_checked, 1000U) << o.name;
+    EXPECT_LE(o.check.max_force_error_n, 0.6) << o.name;
+    EXPECT_LE(o.check.max_moment_error_nm, 0.03) << o.name;
+    // Δr: the signal's 1 µm step (0.5 µm rounding) plus the integer table's rows rounded to
+    // 0.1 µm (0.05 µm) and the interpolated value rounded to 0.1 µm again (0.05 µm).
+    EXPECT_LE(o.check.max_delta_r_error_mm, 0.0006) << o.name;
+  }
+  const ScenarioOutcome* hunting = find_outcome(r, "hunting");
+  ASSERT_NE(hunting, nullptr);
+  EXPECT_LT(std::abs(metric(*hunting, "wheelset 0 wavelength vs Klingel")), 1.0);
+}
+
 }  // namespace
 }  // namespace tread::host
