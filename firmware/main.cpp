@@ -8,24 +8,23 @@
 // The node is the host's `tread node` with its defaults: MF 6.1 (data/tyres/
 // MagicFormula61_Parameters.tir, useMode 111) on 4 wheels, the flashed S1002/60E1 1:40 contact
 // table on 2 wheelsets, 10 ms input timeout; the schedule is node/log_replay.hpp, as the host's
-// replay. --timing adds instruction counts (SysTick ticks) per node cycle, MF evaluation and
-// contact lookup. --expect checks every transmitted frame against the host's replay of the same
-// log (firmware/tx_check.hpp: same time and message, each signal within one quantisation step).
-// The exit status (SYS_EXIT_EXTENDED) is 0 when the log replayed (and matched), 1 for a bad log
-// or a mismatch, 2 for bad arguments or I/O.
+// replay. In float, or (TREAD_FIRMWARE_FIXED, the FPU-less image) in fixed point as
+// `tread node --fixed` (node_path.hpp). --timing adds instruction counts (SysTick ticks) per node
+// cycle, MF evaluation and contact lookup. --expect checks every transmitted frame against the
+// host's replay of the same log (firmware/tx_check.hpp: same time and message, each signal within
+// one quantisation step on the float image, bit-identical on the fixed-point one). The exit status
+// (SYS_EXIT_EXTENDED) is 0 when the log replayed (and matched), 1 for a bad log or a mismatch, 2
+// for bad arguments or I/O.
 #include <array>
 #include <cstdint>
 #include <string_view>
 
 #include "cortex_m/systick_counter.hpp"
-#include "generated/tyre_mf61.hpp"
 #include "log_reader.hpp"
 #include "log_writer.hpp"
-#include "lut/tread_lut.hpp"
-#include "node/contact_table_channel.hpp"
 #include "node/log_replay.hpp"
-#include "node/mf_tyre_channel.hpp"
 #include "node/node.hpp"
+#include "node_path.hpp"
 #include "proto/candump_line.hpp"
 #include "semihost/semihost.hpp"
 #include "stack_watermark.hpp"
@@ -132,12 +131,6 @@ void print_ticks(std::string_view name, const firmware::TickStats& s) {
   semihost::console(m.c_str());
 }
 
-const mf::MfOptions kTyreOptions = [] {
-  mf::MfOptions o = mf::options_from_use_mode(111).value;
-  o.extras = true;  // Rl is an output
-  return o;
-}();
-
 }  // namespace
 
 int main() {
@@ -150,18 +143,18 @@ int main() {
   }
   const Options options = parse_options(std::string_view(cmdline.data(), got.value));
 
-  static std::array<node::MfTyreChannel, 4> tyres{};
+  static std::array<firmware::TyreChannel, 4> tyres{};
   for (auto& t : tyres) {
-    t = node::MfTyreChannel(firmware::kTyre, kTyreOptions);
+    t = firmware::TyreChannel(firmware::kTyreParameters, firmware::tyre_options());
   }
-  static std::array<node::ContactTableChannel, 2> contacts{};
+  static std::array<firmware::ContactChannel, 2> contacts{};
   for (auto& c : contacts) {
-    c = node::ContactTableChannel(lut::contact_pairs()[0].f32);
+    c = firmware::ContactChannel(firmware::contact_table());
   }
   const node::NodeConfig config{
       options.fd ? proto::Layout::fd : proto::Layout::classic,        4,    2, 10'000'000,
       options.sync ? node::Schedule::sync : node::Schedule::periodic, true, 3};
-  static node::Node<node::MfTyreChannel, node::ContactTableChannel> node(config, tyres, contacts);
+  static node::Node<firmware::TyreChannel, firmware::ContactChannel> node(config, tyres, contacts);
   hal::SysTickCounter counter;
   counter.start();
   firmware::TimedNode timed(node, counter);
@@ -174,7 +167,7 @@ int main() {
   static firmware::LogWriter writer;
   static firmware::TxCheck check;
   const bool checking = !options.expect.empty();
-  if (checking && check.open(options.expect, config.layout) != Status::ok) {
+  if (checking && check.open(options.expect, config.layout, firmware::kMaxRawSteps) != Status::ok) {
     TextLine m;
     fail(kExitUsage, m << options.expect << ": cannot open");
   }
@@ -246,8 +239,7 @@ int main() {
     print_ticks("node_cycle_all", timed.all_cycles());
     print_ticks("node_cycle_full", timed.full_cycles());
     print_ticks("receive_frame", timed.receives());
-    firmware::run_timing_benchmarks(counter, firmware::kTyre, kTyreOptions,
-                                    lut::contact_pairs()[0].f32);
+    firmware::run_timing_benchmarks(counter);
     TextLine m;
     m << "memory stack_peak_bytes: " << firmware::StackWatermark::peak_bytes() << "\n";
     semihost::console(m.c_str());

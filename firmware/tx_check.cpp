@@ -5,8 +5,9 @@
 
 namespace tread::firmware {
 
-Status TxCheck::open(std::string_view path, proto::Layout layout) noexcept {
+Status TxCheck::open(std::string_view path, proto::Layout layout, std::int64_t max_steps) noexcept {
   layout_ = layout;
+  max_steps_ = max_steps;
   return expected_.open(path);
 }
 
@@ -57,7 +58,7 @@ void TxCheck::check(const proto::CanFrame& frame, std::int64_t time_ns) noexcept
     fail() << "transmitted at another time (cycle schedule differs)";
     return;
   }
-  const proto::FrameComparison c = proto::compare_frames(layout_, expected, frame, 1);
+  const proto::FrameComparison c = proto::compare_frames(layout_, expected, frame, max_steps_);
   if (c.status == Status::ok) {
     bool same = true;
     for (std::size_t i = 0; i < frame.len; ++i) {

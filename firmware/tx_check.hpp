@@ -1,7 +1,8 @@
 #pragma once
 // Checks the frames the image transmits against an expected candump log (the host's replay of the
-// same rig log), frame by frame: same time, same message, every signal within one quantisation
-// step (proto/frame_compare.hpp). Counts the frames that are bit-identical as well.
+// same rig log), frame by frame: same time, same message, every signal within `max_steps` raw
+// steps (proto/frame_compare.hpp; 0: bit-identical). Counts the frames that are bit-identical as
+// well. Integer arithmetic only.
 
 #include <cstdint>
 #include <string_view>
@@ -17,7 +18,8 @@ namespace tread::firmware {
 class TxCheck {
  public:
   /// @retval Status::io_error  the host could not open `path`
-  Status open(std::string_view path, proto::Layout layout) noexcept;
+  /// `max_steps`: how far a signal may be from the expected, in raw steps (integer signals: 0).
+  Status open(std::string_view path, proto::Layout layout, std::int64_t max_steps) noexcept;
 
   /// The next transmitted frame.
   void check(const proto::CanFrame& frame, std::int64_t time_ns) noexcept;
@@ -39,6 +41,7 @@ class TxCheck {
 
   LogReader expected_;
   proto::Layout layout_{proto::Layout::classic};
+  std::int64_t max_steps_{1};
   std::uint64_t frames_{0};
   std::uint64_t identical_{0};
   std::uint64_t failures_{0};

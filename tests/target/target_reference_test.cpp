@@ -1,9 +1,11 @@
 // The host end of the firmware's replay check (tests/target/CMakeLists.txt): the cortex-m4f image
 // replays tests/data/target/sweep_rig.log under qemu and compares its frames with
-// sweep_host_tx.log, which the cortex preset cannot regenerate (no host tools). Here: the host's
-// replay still produces exactly that file, and the host replay's node is the image's node — the
-// same float tyre parameters (firmware/generated/tyre_mf61.hpp, still what the generator makes of
-// the .tir) and the same contact table (the flashed one).
+// sweep_host_tx.log, the fixed-point cortex-m3 image with sweep_host_tx_fixed.log; the cortex
+// presets cannot regenerate them (no host tools). Here: the host's replay (float, and --fixed)
+// still produces exactly those files, and the host replay's node is the image's node — the same
+// tyre parameters (firmware/generated/tyre_mf61.hpp in float, tyre_mf61_fixed.hpp in Q31.32, still
+// what the generator makes of the .tir) and the same contact table (the flashed one, in float and
+// in integers).
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -13,8 +15,10 @@
 #include <string>
 
 #include "generated/tyre_mf61.hpp"
+#include "generated/tyre_mf61_fixed.hpp"
 #include "golden_path.hpp"
 #include "lut/tread_lut.hpp"
+#include "mf/mf_fixed.hpp"
 #include "mf/mf_parameters_from_tir.hpp"
 #include "node/node_runtime.hpp"
 #include "node/node_session.hpp"
@@ -56,6 +60,62 @@ TEST(TargetReference, HostReplayStillWritesTheCommittedTxLog) {
   EXPECT_EQ(r.report.loop.cycles, 250U);
   EXPECT_EQ(slurp(out), slurp(expected))
       << "the host replay changed: regenerate " << expected << " (see its README) if intended";
+}
+
+TEST(TargetReference, HostFixedReplayStillWritesTheCommittedTxLog) {
+  const auto log = testing::test_data("target/sweep_rig.log");
+  const auto expected = testing::test_data("target/sweep_host_tx_fixed.log");
+  ASSERT_TRUE(std::filesystem::exists(expected)) << expected;
+  host::NodeSettings settings = image_settings();
+  settings.fixed = true;
+  const auto out = testing::test_dir("target_reference") / "sweep_host_tx_fixed.log";
+  const host::ReplayResult r = host::run_replay(settings, log, 1000, out);
+  EXPECT_EQ(r.report.loop.cycles, 250U);
+  EXPECT_EQ(r.report.counters.rx_rejected(), 0U);
+  EXPECT_EQ(slurp(out), slurp(expected)) << "the host's fixed-point replay changed: regenerate "
+                                         << expected << " (see its README) if intended";
+}
+
+TEST(TargetReference, ImageFixedTyreHeaderIsTheGeneratorsOutput) {
+  const auto tir = testing::tyre_file("MagicFormula61_Parameters.tir");
+  tir::MfHeaderOptions o;
+  o.name = "kTyreFixed";
+  o.name_space = "tread::firmware";
+  o.use_fixed = true;
+  o.source = tir.filename().string();
+  const std::string generated = tir::generate_mf_header(mf::load_mf_parameters(tir).params, o);
+  EXPECT_EQ(generated, slurp(testing::source_dir() / "firmware/generated/tyre_mf61_fixed.hpp"))
+      << "regenerate with: tread_tir_header " << tir
+      << " firmware/generated/tyre_mf61_fixed.hpp --mf --fixed --name kTyreFixed --namespace "
+         "tread::firmware";
+}
+
+TEST(TargetReference, HostFixedReplayUsesTheImagesTyreAndContactTable) {
+  host::NodeSettings settings = image_settings();
+  settings.fixed = true;
+  const host::NodeRuntime runtime(settings);
+  ASSERT_TRUE(runtime.fixed());
+  const mf::MfParameters<fixed::Fixed64> host = mf::to_fixed_parameters(runtime.tyre_parameters());
+  const mf::MfParameters<fixed::Fixed64>& image = firmware::kTyreFixed;
+  EXPECT_EQ(host.fit_type, image.fit_type);
+  EXPECT_EQ(host.tyre_side, image.tyre_side);
+#define TREAD_MF_CHECK(member, section, key, dflt, description) \
+  EXPECT_EQ(host.member.raw(), image.member.raw()) << key;
+  TREAD_MF_PARAMETER_LIST(TREAD_MF_CHECK)
+#undef TREAD_MF_CHECK
+
+  const rail::ContactTableQ& a = runtime.contact_table_q();
+  const rail::ContactTableQ& b = lut::contact_pairs()[0].q;
+  EXPECT_EQ(a.y_first, b.y_first);
+  EXPECT_EQ(a.y_step, b.y_step);
+  ASSERT_EQ(a.count, b.count);
+  for (std::uint32_t i = 0; i < a.count; ++i) {
+    const rail::ContactRowQ& p = a.rows[i];
+    const rail::ContactRowQ& q = b.rows[i];
+    EXPECT_TRUE(p.r_left == q.r_left && p.r_right == q.r_right && p.delta_r == q.delta_r &&
+                p.gamma_left == q.gamma_left && p.gamma_right == q.gamma_right)
+        << "row " << i;
+  }
 }
 
 TEST(TargetReference, ImageTyreHeaderIsTheGeneratorsOutput) {
