@@ -226,9 +226,10 @@ int main() {
     check.finish();
     TextLine m;
     m << "check " << check.frames() << " frames against " << options.expect << ": "
-      << check.identical() << " bit-identical, " << check.failures()
-      << " failed (a signal beyond one quantisation step, another time or message, a bad CRC, a "
-         "frame too many or too few)\n";
+      << check.identical() << " bit-identical, " << check.failures() << " failed ("
+      << (firmware::kFixedPoint ? "a signal not bit-identical"
+                                : "a signal beyond one quantisation step")
+      << ", another time or message, a bad CRC, a frame too many or too few)\n";
     semihost::console(m.c_str());
     if (!check.passed()) {
       TextLine f;

@@ -22,8 +22,9 @@ using S = node::ChannelScalar<TyreChannel>;  // float, or fixed::Fixed64 on the 
 volatile float g_float_sink;
 volatile std::int64_t g_sink;
 
-void sink(S value) noexcept {
-  if constexpr (std::is_same_v<S, float>) {
+template <typename T>
+void sink(T value) noexcept {
+  if constexpr (std::is_same_v<T, float>) {
     g_float_sink = value;
   } else {
     g_sink = value.raw();
@@ -31,11 +32,12 @@ void sink(S value) noexcept {
 }
 
 /// first + step × i in the image's scalar (an integer product in fixed point).
-S grid(S first, S step, std::uint32_t i) noexcept {
-  if constexpr (std::is_same_v<S, float>) {
+template <typename T>
+T grid(T first, T step, std::uint32_t i) noexcept {
+  if constexpr (std::is_same_v<T, float>) {
     return first + step * static_cast<float>(i);
   } else {
-    return first + step * S::from_raw(static_cast<std::int64_t>(i) << S::kFractionBits);
+    return first + step * T::from_raw(static_cast<std::int64_t>(i) << T::kFractionBits);
   }
 }
 

@@ -101,17 +101,18 @@ class Fixed64 {
     const bool negative = (a.raw_ < 0) != (b.raw_ < 0);
     const auto ua = static_cast<std::uint64_t>(a.raw_ < 0 ? -a.raw_ : a.raw_);  // < 2^63
     const auto ub = static_cast<std::uint64_t>(b.raw_ < 0 ? -b.raw_ : b.raw_);
-    const std::uint64_t ah = ua >> 32;  // < 2^31
-    const std::uint64_t bh = ub >> 32;
-    const std::uint64_t al = ua & 0xFFFFFFFFu;
-    const std::uint64_t bl = ub & 0xFFFFFFFFu;
+    // 32-bit halves, so each product is one 32×32→64-bit multiply (UMULL) on a 32-bit core.
+    const auto ah = static_cast<std::uint32_t>(ua >> 32);  // < 2^31
+    const auto bh = static_cast<std::uint32_t>(ub >> 32);
+    const auto al = static_cast<std::uint32_t>(ua);
+    const auto bl = static_cast<std::uint32_t>(ub);
     // For P = ±M: ⌊(P + 2^31)/2^32⌋ = ⌊(M + 2^31)/2^32⌋ for P ≥ 0 and −⌊(M + 2^31 − 1)/2^32⌋
     // for P < 0; M = ah·bh·2^64 + (ah·bl + al·bh)·2^32 + al·bl, every term non-negative.
     const std::uint64_t bias = negative ? (std::uint64_t{1} << 31) - 1 : std::uint64_t{1} << 31;
-    const std::uint64_t top = ah * bh;  // < 2^62
+    const std::uint64_t top = std::uint64_t{ah} * bh;  // < 2^62
     if (top >= (std::uint64_t{1} << 31)) return invalid();
-    const std::uint64_t mid = ah * bl + al * bh;  // each < 2^63
-    const std::uint64_t low = (al * bl + bias) >> 32;
+    const std::uint64_t mid = std::uint64_t{ah} * bl + std::uint64_t{al} * bh;  // each < 2^63
+    const std::uint64_t low = (std::uint64_t{al} * bl + bias) >> 32;
     std::uint64_t m = 0;
     if (__builtin_add_overflow(top << 32, mid, &m) || __builtin_add_overflow(m, low, &m) ||
         m > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())) {

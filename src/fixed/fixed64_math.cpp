@@ -15,13 +15,10 @@ constexpr std::int64_t kLog2eRaw = 6196328019;   // log2(e)·2^32
 /// ln(2^31)·2^32: e^x beyond it does not fit.
 constexpr std::int64_t kExpMaxRaw = 92288378626;
 
+/// The number of significant bits of v (0 for 0): one count-leading-zeros, not a loop (CLZ on
+/// ARMv7-M, two of them for 64 bits).
 int bit_length(std::uint64_t v) {
-  int n = 0;
-  while (v != 0) {
-    v >>= 1;
-    ++n;
-  }
-  return n;
+  return v == 0 ? 0 : 64 - __builtin_clzll(v);
 }
 
 Fixed64 from_unit(Unit u) {
