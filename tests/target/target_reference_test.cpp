@@ -76,18 +76,25 @@ TEST(TargetReference, HostFixedReplayStillWritesTheCommittedTxLog) {
                                          << expected << " (see its README) if intended";
 }
 
-TEST(TargetReference, ImageFixedTyreHeaderIsTheGeneratorsOutput) {
+/// The image's tyre header `path` (under the source tree) is what tread_tir_header makes of the
+/// .tir today, with the header options `o` (name, scalar).
+void expect_generated_tyre_header(tir::MfHeaderOptions o, const std::string& path,
+                                  const std::string& flags) {
   const auto tir = testing::tyre_file("MagicFormula61_Parameters.tir");
-  tir::MfHeaderOptions o;
-  o.name = "kTyreFixed";
   o.name_space = "tread::firmware";
-  o.use_fixed = true;
   o.source = tir.filename().string();
   const std::string generated = tir::generate_mf_header(mf::load_mf_parameters(tir).params, o);
-  EXPECT_EQ(generated, slurp(testing::source_dir() / "firmware/generated/tyre_mf61_fixed.hpp"))
-      << "regenerate with: tread_tir_header " << tir
-      << " firmware/generated/tyre_mf61_fixed.hpp --mf --fixed --name kTyreFixed --namespace "
-         "tread::firmware";
+  EXPECT_EQ(generated, slurp(testing::source_dir() / path))
+      << "regenerate with: tread_tir_header " << tir << " " << path << " --mf"
+      << (flags.empty() ? "" : " " + flags) << " --name " << o.name
+      << " --namespace tread::firmware";
+}
+
+TEST(TargetReference, ImageFixedTyreHeaderIsTheGeneratorsOutput) {
+  tir::MfHeaderOptions o;
+  o.name = "kTyreFixed";
+  o.use_fixed = true;
+  expect_generated_tyre_header(o, "firmware/generated/tyre_mf61_fixed.hpp", "--fixed");
 }
 
 TEST(TargetReference, HostFixedReplayUsesTheImagesTyreAndContactTable) {
@@ -119,16 +126,10 @@ TEST(TargetReference, HostFixedReplayUsesTheImagesTyreAndContactTable) {
 }
 
 TEST(TargetReference, ImageTyreHeaderIsTheGeneratorsOutput) {
-  const auto tir = testing::tyre_file("MagicFormula61_Parameters.tir");
   tir::MfHeaderOptions o;
   o.name = "kTyre";
-  o.name_space = "tread::firmware";
   o.use_float = true;
-  o.source = tir.filename().string();
-  const std::string generated = tir::generate_mf_header(mf::load_mf_parameters(tir).params, o);
-  EXPECT_EQ(generated, slurp(testing::source_dir() / "firmware/generated/tyre_mf61.hpp"))
-      << "regenerate with: tread_tir_header " << tir
-      << " firmware/generated/tyre_mf61.hpp --mf --name kTyre --namespace tread::firmware";
+  expect_generated_tyre_header(o, "firmware/generated/tyre_mf61.hpp", "");
 }
 
 TEST(TargetReference, HostReplayUsesTheImagesTyreAndContactTable) {
