@@ -102,7 +102,7 @@ const char* describe(CandumpError error) noexcept {
     case CandumpError::not_a_frame:
       return "expected '(seconds.micros) iface ID#DATA'";
     case CandumpError::bad_timestamp:
-      return "malformed timestamp";
+      return "malformed timestamp, or later than 9223372035 s";
     case CandumpError::bad_micros:
       return "malformed timestamp (want seconds.6-digit micros)";
     case CandumpError::no_interface:
@@ -138,6 +138,12 @@ CandumpError parse_candump_line(std::string_view line, CandumpLine& out) noexcep
   if (!parse_decimal(slice(line, 1, dot - 1), sec) ||
       !parse_decimal(slice(line, dot + 1, close - dot - 1), usec) || close - dot - 1 != 6) {
     return CandumpError::bad_micros;
+  }
+  // The time in int64 nanoseconds: up to 9 223 372 035 s (the year 2262); beyond, the product
+  // would overflow (found by fuzzing: tests/fuzz/regressions/candump_replay).
+  constexpr std::int64_t kMaxSeconds = 9'223'372'035;
+  if (sec > kMaxSeconds) {
+    return CandumpError::bad_timestamp;
   }
   out.time_ns = (sec * 1'000'000 + usec) * 1000;
   std::string_view rest = slice(line, close + 1);

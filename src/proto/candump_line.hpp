@@ -26,7 +26,7 @@ std::size_t format_candump_line(const CanFrame& frame, std::int64_t time_ns,
 enum class CandumpError : std::uint8_t {
   none,
   not_a_frame,      ///< no '(' at the start
-  bad_timestamp,    ///< no ')' or '.' in the timestamp
+  bad_timestamp,    ///< no ')' or '.' in the timestamp, or seconds beyond int64 nanoseconds
   bad_micros,       ///< the timestamp is not seconds.6-digit micros
   no_interface,     ///< nothing after the interface name
   bad_id_length,    ///< the ID is not 3 or 8 hex digits followed by '#'

@@ -37,12 +37,21 @@ TEST(CandumpLine, TheLongestLineFits) {
   EXPECT_EQ(std::string(line).size(), n);
 }
 
+TEST(CandumpLine, TheLatestTimestampThatFitsInNanoseconds) {
+  CandumpLine parsed;
+  ASSERT_EQ(parse_candump_line("(9223372035.999999) vcan0 123#00", parsed), CandumpError::none);
+  EXPECT_EQ(parsed.time_ns, 9'223'372'035'999'999'000LL);
+}
+
 TEST(CandumpLine, EachMalformedLineSaysWhy) {
   const std::pair<const char*, CandumpError> cases[] = {
       {"1.0 vcan0 123#00", CandumpError::not_a_frame},
       {"(1000000 vcan0 123#00", CandumpError::bad_timestamp},
       {"(1.0) vcan0 123#00", CandumpError::bad_micros},
       {"(1x.000000) vcan0 123#00", CandumpError::bad_micros},
+      // Seconds whose nanoseconds overflow int64 (found by fuzzing), from the first one on.
+      {"(40000000000000.000000) vcan0 123#00", CandumpError::bad_timestamp},
+      {"(9223372036.000000) vcan0 123#00", CandumpError::bad_timestamp},
       {"(1.000000) vcan0", CandumpError::no_interface},
       {"(1.000000) vcan0 12#00", CandumpError::bad_id_length},
       {"(1.000000) vcan0 12G#00", CandumpError::id_not_hex},
