@@ -10,9 +10,14 @@
 #include "contact/profile_function.hpp"
 #include "profile/profile_file.hpp"
 #include "profile/rail_profile.hpp"
+#include "profile/text_line.hpp"
 #include "profile/wheel_profile.hpp"
 
 namespace tread::contact {
+
+namespace {
+constexpr double kMinCantRatio = 5.0;
+}  // namespace
 
 double parse_cant_rad(const std::string& text) {
   if (text == "none" || text == "0") {
@@ -24,14 +29,17 @@ double parse_cant_rad(const std::string& text) {
       std::size_t used = 0;
       const std::string n_text = text.substr(colon + 1);
       const double n = std::stod(n_text, &used);
-      if (used == n_text.size() && n > 0.0 && std::isfinite(n)) {
+      // N from 5 (11.3°) up: rails are canted 1:20 to 1:40; "1:.40" (68°) is a typing error, not a
+      // track (found by fuzzing).
+      if (used == n_text.size() && n >= kMinCantRatio && std::isfinite(n)) {
         return std::atan(1.0 / n);
       }
     } catch (const std::exception&) {
       // fall through to the error below
     }
   }
-  throw std::invalid_argument("--cant '" + text + "': expected 1:N (e.g. 1:40), none or 0");
+  throw std::invalid_argument("--cant '" + text +
+                              "': expected 1:N with N of 5 or more (e.g. 1:40), none or 0");
 }
 
 profile::WheelParameters parse_wheel_spec(const std::string& spec) {
@@ -50,13 +58,13 @@ profile::WheelParameters parse_wheel_spec(const std::string& spec) {
       const std::string value = item.substr(eq + 1);
       try {
         if (key == "h") {
-          p.flange_height_mm = std::stod(value);
+          p.flange_height_mm = profile::finite_number(value);
         } else if (key == "e") {
-          p.flange_thickness_mm = std::stod(value);
+          p.flange_thickness_mm = profile::finite_number(value);
         } else if (key == "slope") {
           p.outer_slope = profile::parse_outer_slope(value);
         } else if (key == "width") {
-          p.width_mm = std::stod(value);
+          p.width_mm = profile::finite_number(value);
         } else if (key == "chamfer") {
           p.chamfer = value != "0" && value != "no" && value != "false";
         } else {

@@ -37,7 +37,8 @@ struct ContactSetup {
 /// chamfer=1". Throws std::invalid_argument naming the bad part.
 profile::WheelParameters parse_wheel_spec(const std::string& spec);
 
-/// "1:40" -> atan(1/40); "none" or "0" -> 0. Throws std::invalid_argument otherwise.
+/// "1:40" -> atan(1/40); "none" or "0" -> 0. Throws std::invalid_argument otherwise, and for 1:N
+/// with N below 5 (steeper than any rail is canted).
 double parse_cant_rad(const std::string& text);
 
 /// Reads the profiles (profile::read_profile_file) and builds the contact. Throws

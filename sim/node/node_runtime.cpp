@@ -6,6 +6,7 @@
 
 #include "mf/mf_fixed.hpp"
 #include "mf/mf_parameters_from_tir.hpp"
+#include "profile/text_line.hpp"
 
 namespace tread::host {
 
@@ -36,13 +37,13 @@ contact::ContactSetup parse_wheelset_profile(const std::string& spec) {
       } else if (key == "cant") {
         setup.cant = value;
       } else if (key == "gauge") {
-        setup.gauge_mm = std::stod(value);
+        setup.gauge_mm = profile::finite_number(value);
       } else if (key == "b2b") {
-        setup.back_to_back_mm = std::stod(value);
+        setup.back_to_back_mm = profile::finite_number(value);
       } else if (key == "r0") {
-        setup.r0_mm = std::stod(value);
+        setup.r0_mm = profile::finite_number(value);
       } else if (key == "r0-right") {
-        setup.r0_right_mm = std::stod(value);
+        setup.r0_right_mm = profile::finite_number(value);
       } else {
         throw std::invalid_argument("unknown key");
       }

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstddef>
 #include <stdexcept>
 #include <string>
@@ -65,6 +66,18 @@ inline bool parse_number_text(std::string_view text, double& value) {
   }
   const auto [ptr, ec] = std::from_chars(first, last, value);
   return ec == std::errc{} && ptr == last && first != last;
+}
+
+/// The whole of `text` as a finite number, for option values and spec strings ("h=28"): throws
+/// std::invalid_argument "'text' is not a finite number" for an empty value, a trailing word
+/// ("28mm"), a value beyond double (1e999) or NaN — where std::stod would take "28mm" as 28 and
+/// throw its own "stod" for 1e999.
+inline double finite_number(const std::string& text) {
+  double value = 0.0;
+  if (!parse_number_text(text, value) || !std::isfinite(value)) {
+    throw std::invalid_argument("'" + text + "' is not a finite number");
+  }
+  return value;
 }
 
 /// Removes a UTF-8 byte-order mark at the start of the first line of a file (spreadsheet exports

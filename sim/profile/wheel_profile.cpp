@@ -11,6 +11,7 @@
 
 #include "profile/eps_table_d1.hpp"
 #include "profile/s1002_uic.hpp"
+#include "profile/text_line.hpp"
 
 namespace tread::profile {
 
@@ -109,8 +110,8 @@ OuterSlope parse_outer_slope(const std::string& text) {
     }
   }
   if ((text.rfind("1:", 0) == 0 || text.rfind("1/", 0) == 0) && plain_decimal(text.substr(2))) {
-    const double n = std::stod(text.substr(2));
-    if (!(n > 0.0)) {
+    double n = 0.0;
+    if (!parse_number_text(text.substr(2), n) || !(n > 0.0) || !std::isfinite(n)) {
       throw std::invalid_argument("outer slope '" + text + "': " + range);
     }
     if (std::fabs(n - 15.0) < 1e-12) {
@@ -119,7 +120,9 @@ OuterSlope parse_outer_slope(const std::string& text) {
     gradient = 1.0 / n;
   } else if (plain_decimal(number)) {
     // The decimal as written, scaled by 10^-2 in the conversion itself: "6.7" -> 0.067 exactly.
-    gradient = std::stod(number + "e-2");
+    if (!parse_number_text(number + "e-2", gradient)) {  // beyond double: out of range below
+      gradient = std::numeric_limits<double>::infinity();
+    }
   } else {
     throw std::invalid_argument("outer slope '" + text + "': " + range);
   }

@@ -1,0 +1,55 @@
+// The spec strings of `tread contact`, `tread node --wheelset-profile` and `--wheel`: values are
+// whole finite numbers or a clear error naming the option and the value (the fuzzer found
+// "e=32.1e3085" answered by std::stod's own "stod", and "h=28mm" taken as 28).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "contact/contact_setup.hpp"
+#include "node/node_runtime.hpp"
+
+namespace tread {
+namespace {
+
+std::string error_of(const std::string& spec) {
+  try {
+    static_cast<void>(contact::parse_wheel_spec(spec));
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ContactSpec, WheelValuesAreWholeFiniteNumbers) {
+  EXPECT_DOUBLE_EQ(contact::parse_wheel_spec("S1002:h=28,e=32.5").flange_height_mm, 28.0);
+  EXPECT_EQ(error_of("EPS:h=30,e=32.1e3085"),
+            "--wheel EPS:h=30,e=32.1e3085: e: '32.1e3085' is not a finite number");
+  EXPECT_EQ(error_of("S1002:h=28mm"), "--wheel S1002:h=28mm: h: '28mm' is not a finite number");
+  EXPECT_EQ(error_of("S1002:width=nan"),
+            "--wheel S1002:width=nan: width: 'nan' is not a finite number");
+  EXPECT_EQ(error_of("S1002:h="), "--wheel S1002:h=: h: '' is not a finite number");
+}
+
+TEST(ContactSpec, CantsAreOneInFiveOrFlatter) {
+  EXPECT_DOUBLE_EQ(contact::parse_cant_rad("1:40"), std::atan(1.0 / 40.0));
+  EXPECT_DOUBLE_EQ(contact::parse_cant_rad("1:5"), std::atan(0.2));
+  EXPECT_DOUBLE_EQ(contact::parse_cant_rad("none"), 0.0);
+  for (const char* bad : {"1:.40", "1:4", "1:0", "1:-40", "1:1e999", "1:40x", "2:40"}) {
+    EXPECT_THROW(static_cast<void>(contact::parse_cant_rad(bad)), std::invalid_argument) << bad;
+  }
+}
+
+TEST(ContactSpec, WheelsetProfileValuesAreWholeFiniteNumbers) {
+  try {
+    static_cast<void>(host::parse_wheelset_profile("wheel=S1002,rail=60E1,gauge=1435x"));
+    FAIL() << "a gauge with a trailing word was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("gauge=1435x"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("not a finite number"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace tread
