@@ -19,6 +19,8 @@ packages=(
   busybox-static cpio xz-utils zstd kmod
   # style
   clang-format clang-tidy
+  # coverage-guided fuzzing: clang with libFuzzer and the sanitizers (preset fuzz, scripts/fuzz.sh)
+  clang libclang-rt-14-dev
 )
 
 export DEBIAN_FRONTEND=noninteractive

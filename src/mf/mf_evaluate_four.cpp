@@ -37,21 +37,26 @@ static_assert(std::is_standard_layout_v<MfOutput<float>> &&
 static_assert(offsetof(MfOutput<F4>, status) == kOutputFields * sizeof(F4));
 static_assert(offsetof(MfOutput<float>, kxk_n) == (kOutputFields - 1) * sizeof(float));
 
+/// Lanes of two vectors by constant indices (0–3 from `a`, 4–7 from `b`): GCC's
+/// __builtin_shuffle, clang's __builtin_shufflevector (the fuzz preset builds with clang).
+#if defined(__clang__)
+#define TREAD_SHUFFLE(a, b, i0, i1, i2, i3) __builtin_shufflevector(a, b, i0, i1, i2, i3)
+#else
+#define TREAD_SHUFFLE(a, b, i0, i1, i2, i3) __builtin_shuffle(a, b, VI{i0, i1, i2, i3})
+#endif
+
 /// Rows a, b, c, d → columns: r[i] = {a[i], b[i], c[i], d[i]}.
 void transpose(const V (&in)[4], V (&out)[4]) {
-  const VI lo{0, 4, 1, 5};
-  const VI hi{2, 6, 3, 7};
-  const V t0 = __builtin_shuffle(in[0], in[1], lo);
-  const V t1 = __builtin_shuffle(in[0], in[1], hi);
-  const V t2 = __builtin_shuffle(in[2], in[3], lo);
-  const V t3 = __builtin_shuffle(in[2], in[3], hi);
-  const VI first{0, 1, 4, 5};
-  const VI second{2, 3, 6, 7};
-  out[0] = __builtin_shuffle(t0, t2, first);
-  out[1] = __builtin_shuffle(t0, t2, second);
-  out[2] = __builtin_shuffle(t1, t3, first);
-  out[3] = __builtin_shuffle(t1, t3, second);
+  const V t0 = TREAD_SHUFFLE(in[0], in[1], 0, 4, 1, 5);
+  const V t1 = TREAD_SHUFFLE(in[0], in[1], 2, 6, 3, 7);
+  const V t2 = TREAD_SHUFFLE(in[2], in[3], 0, 4, 1, 5);
+  const V t3 = TREAD_SHUFFLE(in[2], in[3], 2, 6, 3, 7);
+  out[0] = TREAD_SHUFFLE(t0, t2, 0, 1, 4, 5);
+  out[1] = TREAD_SHUFFLE(t0, t2, 2, 3, 6, 7);
+  out[2] = TREAD_SHUFFLE(t1, t3, 0, 1, 4, 5);
+  out[3] = TREAD_SHUFFLE(t1, t3, 2, 3, 6, 7);
 }
+#undef TREAD_SHUFFLE
 
 /// Four consecutive floats of each wheel's struct, from float `field` on.
 template <typename S>
