@@ -73,8 +73,9 @@ class ContactTableChannelFixed {
                   : static_cast<std::uint64_t>(value))
         << 32U;
     const auto d = static_cast<std::uint64_t>(per_unit);
-    const auto q = static_cast<std::int64_t>((magnitude + d / 2U) / d);
-    return fixed::Fixed64::from_raw(negative ? -q : q);
+    const std::uint64_t q = (magnitude + d / 2U) / d;  // ≤ 2^63
+    // The sign in unsigned arithmetic: −2^63 (INT32_MIN in whole units) has no positive twin.
+    return fixed::Fixed64::from_raw(static_cast<std::int64_t>(negative ? std::uint64_t{0} - q : q));
   }
 
  private:
