@@ -101,6 +101,15 @@ Status SocketCanBus::set_receive_buffer(int bytes) {
   return Status::ok;
 }
 
+int SocketCanBus::receive_buffer_bytes() const noexcept {
+  int bytes = 0;
+  socklen_t size = sizeof(bytes);
+  if (fd_ < 0 || ::getsockopt(fd_, SOL_SOCKET, SO_RCVBUF, &bytes, &size) != 0) {
+    return -1;
+  }
+  return bytes;
+}
+
 Status SocketCanBus::set_filters(std::span<const CanIdFilter> filters) {
   if (fd_ < 0) {
     return Status::io_error;

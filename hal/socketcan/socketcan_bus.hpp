@@ -51,6 +51,9 @@ class SocketCanBus {
 
   /// Sets SO_RCVBUF (bytes); small values make receive-overflow counting observable in tests.
   Status set_receive_buffer(int bytes);
+  /// The receive buffer the kernel granted (SO_RCVBUF read back: twice the request, capped at
+  /// net.core.rmem_max × 2), or -1 if it cannot be read.
+  [[nodiscard]] int receive_buffer_bytes() const noexcept;
 
   [[nodiscard]] bool is_open() const noexcept { return fd_ >= 0; }
   [[nodiscard]] int native_handle() const noexcept { return fd_; }

@@ -11,6 +11,7 @@
 #include "gpiod/gpiod_pin.hpp"
 #include "node/candump_log.hpp"
 #include "node/log_replay.hpp"
+#include "node/protocol_socket.hpp"
 #include "posix/posix_clock.hpp"
 #include "socketcan/socketcan_bus.hpp"
 #include "stub/stub_can_bus.hpp"
@@ -69,28 +70,11 @@ SessionReport run_live(const NodeSettings& settings, const LiveOptions& options,
     return run_with(network.endpoint(0), pin, runtime, settings, options, stop, report);
   }
   hal::SocketCanBus bus;
-  const bool fd = settings.node.layout == proto::Layout::fd;
-  const Status opened = bus.open(options.can, fd);
-  if (opened == Status::unsupported && bus.last_errno() == EAFNOSUPPORT) {
-    throw std::runtime_error(
-        "SocketCAN is not available in this kernel (socket(AF_CAN) refused); "
-        "use --can stub, or run in the VM harness (scripts/vm/run-in-vm.sh)");
-  }
-  if (opened != Status::ok) {
-    throw std::runtime_error("cannot open CAN interface '" + options.can + "' (" +
-                             to_string(opened) + ", errno " + std::to_string(bus.last_errno()) +
-                             (fd ? "; is its mtu 72 for CAN FD?" : "") + ")");
-  }
-  std::vector<hal::CanIdFilter> filters;
-  for (const proto::MessageSpec& m : proto::messages(settings.node.layout)) {
-    if (m.direction == proto::Direction::rig_to_node) {
-      filters.push_back({m.id, 0x7FF, false});
-    }
-  }
-  if (bus.set_filters(filters) != Status::ok) {
-    throw std::runtime_error("cannot install CAN ID filters on " + options.can);
-  }
-  return run_with(bus, pin, runtime, settings, options, stop, report);
+  open_protocol_socket(bus, options.can, settings.node.layout, proto::Direction::rig_to_node);
+  report.receive_buffer_bytes = bus.receive_buffer_bytes();
+  report = run_with(bus, pin, runtime, settings, options, stop, report);
+  report.rx_queue_overflows = bus.rx_overflows();
+  return report;
 }
 
 namespace {
@@ -195,6 +179,11 @@ void print_report(std::ostream& out, const SessionReport& r, bool timing) {
   out << "frames rejected   " << c.rx_rejected() << " (bad CRC " << c.rx_bad_crc << ", bad counter "
       << c.rx_bad_counter << ", bad length " << c.rx_bad_length << ")\n";
   out << "frames lost       " << c.lost_frames << " (counter gaps)\n";
+  if (r.rx_queue_overflows) {
+    out << "rx queue overflow " << *r.rx_queue_overflows
+        << " (frames the kernel dropped for a full receive queue, SO_RXQ_OVFL; buffer "
+        << r.receive_buffer_bytes << " bytes)\n";
+  }
   out << "frames sent       " << c.tx_frames << " (send refused " << r.loop.tx_failed << ")\n";
   out << "stale / clamped   " << c.stale_events << " / " << c.clamp_events << " channel-cycles\n";
   if (!r.notes.empty()) {

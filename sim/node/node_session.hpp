@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <iosfwd>
+#include <optional>
 #include <string>
 
 #include "loop/loop_runner.hpp"
@@ -29,6 +30,10 @@ struct SessionReport {
   hal::LoopStats loop{};
   node::NodeCounters counters{};
   std::string notes;  ///< setup messages (RT refusals, GPIO errors, .tir warnings)
+  /// SocketCAN only: frames the kernel dropped because the node's receive queue was full
+  /// (SO_RXQ_OVFL), and the receive buffer it granted.
+  std::optional<std::uint64_t> rx_queue_overflows;
+  int receive_buffer_bytes{0};
 };
 
 /// Runs until `cycles` computations are done or `stop` becomes true. Throws std::runtime_error for

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "mf/mf_parameters_from_tir.hpp"
+#include "node/protocol_socket.hpp"
 #include "posix/posix_clock.hpp"
 #include "rig/scenario_catalogue.hpp"
 #include "socketcan/socketcan_bus.hpp"
@@ -34,24 +35,12 @@ RigReport run_rig(const RigSettings& s) {
     reference.contact = &contact_table;
   }
 
-  hal::SocketCanBus bus;
-  const Status opened = bus.open(s.can, s.layout == proto::Layout::fd);
-  if (opened != Status::ok) {
-    throw std::runtime_error("cannot open CAN interface '" + s.can + "' (" + to_string(opened) +
-                             ", errno " + std::to_string(bus.last_errno()) + ")");
-  }
   // Only the node's outputs (and error frames) reach the rig: other traffic is dropped by the
   // kernel, as on the node's side.
-  std::vector<hal::CanIdFilter> filters;
-  for (const proto::MessageSpec& m : proto::messages(s.layout)) {
-    if (m.direction == proto::Direction::node_to_rig) {
-      filters.push_back({m.id, 0x7FF, false});
-    }
-  }
-  if (bus.set_filters(filters) != Status::ok) {
-    throw std::runtime_error("cannot install CAN ID filters on " + s.can);
-  }
+  hal::SocketCanBus bus;
+  open_protocol_socket(bus, s.can, s.layout, proto::Direction::node_to_rig);
   RigReport r;
+  r.receive_buffer_bytes = bus.receive_buffer_bytes();
   proto::RigLink link(s.layout, s.wheels, s.wheelsets);
   hal::PosixClock clock;
   const std::int64_t period_ns = (s.pace_us > 0 ? s.pace_us : s.period_us) * 1000;
@@ -133,6 +122,7 @@ RigReport run_rig(const RigSettings& s) {
     r.answers.add(o.check);
     r.scenarios.push_back(std::move(o));
   }
+  r.rx_queue_overflows = bus.rx_overflows();
   r.node_overruns = status_view.status.overruns;
   r.node_rejected = status_view.status.rejected;
   r.node_cycle = status_view.status.cycle;
@@ -147,6 +137,9 @@ void print_rig_report(std::ostream& out, const RigReport& r) {
       << r.node_frames_rejected << " rejected\n";
   out << "other traffic        " << r.foreign_frames << " foreign frames, " << r.error_frames
       << " error frames\n";
+  out << "rx queue overflow    " << r.rx_queue_overflows
+      << " (frames the kernel dropped for the rig's full receive queue, SO_RXQ_OVFL; buffer "
+      << r.receive_buffer_bytes << " bytes)\n";
   out << "answers checked      " << r.answers.answers_checked << " (stale "
       << r.answers.stale_answers << ")\n";
   out << "max |dF|             " << r.answers.max_force_error_n << " N, max |dMz| "

@@ -51,6 +51,10 @@ struct RigReport {
   /// standard frames on them that fail to be a node output, e.g. a flood's).
   std::uint64_t foreign_frames{0};
   std::uint64_t error_frames{0};
+  /// Frames the kernel dropped because the rig's receive queue was full (SO_RXQ_OVFL), and the
+  /// receive buffer it granted.
+  std::uint64_t rx_queue_overflows{0};
+  int receive_buffer_bytes{0};
   std::uint64_t late_cycles{0};    ///< cycles whose answer did not come within the timeout
   std::uint64_t stray_frames{0};   ///< frames that arrived between cycles (not an answer)
   AnswerCheck answers;             ///< over all scenarios

@@ -5,8 +5,9 @@
 # afterwards with the DBC by an independent parser, tests/sim/decode_capture.py). OUT is
 # $TREAD_OUT_DIR, default /work/out (the VM harness copies it back with --workdir), where
 # tests/sim/vcan_scenarios_check.sh compares the traces with an in-process run. Then the same
-# scenarios run in process (tread demo --clock sim). Passes when nothing was rejected, lost or late
-# and every trace of the two-process run equals the in-process one, value for value.
+# scenarios run in process (tread demo --clock sim). Passes when nothing was rejected, lost or late,
+# neither the node's nor the rig's kernel receive queue overflowed (SO_RXQ_OVFL), and every trace of
+# the two-process run equals the in-process one, value for value.
 tread=$1
 tir=$2
 scenarios=${3:-braking,hunting}
@@ -18,7 +19,10 @@ mkdir -p "$out"
 for layout in classic fd; do
   flag=""; [ $layout = fd ] && flag="--fd"
   echo "=== $layout: node (sync) + rig over vcan0, scenarios $scenarios ==="
-  candump -L vcan0 >"$out/capture_$layout.log" &
+  # candump with an 8 MiB receive buffer (as root: SO_RCVBUFFORCE) and -d: should its queue still
+  # overflow, the drops are written into the capture (DROPCOUNT lines) and counted as the capture's,
+  # not the node's (tests/sim/decode_capture.py).
+  candump -d -r 8388608 -L vcan0 >"$out/capture_$layout.log" &
   dump_pid=$!
   "$tread" node --can vcan0 $flag --tir "$tir" --wheelsets 2 --wheelset-profile "$profile" \
     --mode sync --timeout-ms 2000 >"$out/node_$layout.txt" 2>&1 &
@@ -37,6 +41,8 @@ for layout in classic fd; do
   cat "$out/node_$layout.txt" "$out/rig_$layout.txt"
   grep -q "frames rejected   0 " "$out/node_$layout.txt" || fail "node rejected frames ($layout)"
   grep -q "frames lost       0 " "$out/node_$layout.txt" || fail "node lost frames ($layout)"
+  grep -q "^rx queue overflow 0 " "$out/node_$layout.txt" || fail "the node's receive queue overflowed ($layout)"
+  grep -q "^rx queue overflow    0 " "$out/rig_$layout.txt" || fail "the rig's receive queue overflowed ($layout)"
   grep -Eq "^rig cycles +[0-9]+ \(late answers 0," "$out/rig_$layout.txt" || fail "late answers ($layout)"
   grep -Eq "^node frames +[1-9][0-9]* accepted, 0 rejected" "$out/rig_$layout.txt" || fail "rig rejected node frames ($layout)"
 done
