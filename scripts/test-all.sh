@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Every test, from a fresh clone: installs the Debian packages, then builds and tests every preset —
-# host (unit, golden, vcan through the VM harness), asan, aarch64 and armhf (under qemu-user),
+# host (unit, golden, vcan through the VM harness), asan, fuzz (every libFuzzer target for 30 s on
+# its corpus, clang + ASan/UBSan), aarch64 and armhf (under qemu-user),
 # cortex-m4f and cortex-m3 (the firmware images, run under qemu-system-arm) — runs the main job
 # (scripts/demo.sh) and checks formatting. Exits non-zero if anything fails.
 set -uo pipefail
@@ -37,7 +38,7 @@ run_workflow() {
 }
 
 start=$(date +%s)
-for preset in host asan aarch64 armhf cortex-m4f cortex-m3; do
+for preset in host asan fuzz aarch64 armhf cortex-m4f cortex-m3; do
   run_workflow "$preset"
 done
 
