@@ -1,6 +1,7 @@
 // `tread demo`: the README's main job — node + rig scenarios on the in-process CAN bus (or --can
 // vcan0), summary, trace and plots.
 #include <iostream>
+#include <stdexcept>
 
 #include "cli/commands.hpp"
 #include "cli/node_options.hpp"
@@ -53,6 +54,9 @@ void add_demo_command(CLI::App& app) {
     settings.sim_clock = clock == "sim";
     const host::DemoResult result = host::run_demo(settings);
     host::print_demo(std::cout, settings, result);
+    if (!result.report.log_error.empty()) {
+      throw std::runtime_error(result.report.log_error);
+    }
   });
 }
 

@@ -63,6 +63,9 @@ void add_node_command(CLI::App& app) {
       host::print_report(std::cout, r.report, false);
       std::cout << "replay            " << r.input_frames << " input frames, " << r.tx_frames
                 << " frames transmitted; the log holds " << r.logged_tx_frames << "\n";
+      if (!r.report.log_error.empty()) {
+        throw std::runtime_error(r.report.log_error);
+      }
       if (r.logged_tx_frames == 0) {
         std::cout << "replay            the log holds no transmitted frames to compare with\n";
         return;
@@ -84,6 +87,9 @@ void add_node_command(CLI::App& app) {
     std::signal(SIGTERM, on_signal);
     const host::SessionReport report = host::run_live(settings, live, &g_stop);
     host::print_report(std::cout, report, true);
+    if (!report.log_error.empty()) {
+      throw std::runtime_error(report.log_error);
+    }
   });
 }
 

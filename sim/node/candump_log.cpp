@@ -1,5 +1,7 @@
 #include "node/candump_log.hpp"
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <stdexcept>
 
@@ -41,32 +43,80 @@ std::vector<LoggedFrame> read_candump_log(const std::filesystem::path& path) {
 }
 
 CandumpWriter::~CandumpWriter() {
-  close();
+  abandon();
 }
 
 void CandumpWriter::open(const std::filesystem::path& path, std::string interface) {
-  close();
-  file_ = std::fopen(path.c_str(), "w");
+  abandon();
+  path_ = path;
+  std::error_code ec;
+  const bool special =
+      std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec);
+  partial_ = special ? path : std::filesystem::path(path.string() + ".partial");
+  file_ = std::fopen(partial_.c_str(), "w");
   if (file_ == nullptr) {
-    throw std::runtime_error(path.string() + ": cannot open for writing");
+    throw std::runtime_error(partial_.string() + ": cannot open for writing (" +
+                             std::strerror(errno) + ")");
   }
   buffer_.assign(1U << 20U, '\0');
   std::setvbuf(file_, buffer_.data(), _IOFBF, buffer_.size());
   interface_ = std::move(interface);
+  errno_ = 0;
 }
 
 void CandumpWriter::write(const proto::CanFrame& frame, std::int64_t time_ns) noexcept {
   if (file_ == nullptr) return;
+  if (errno_ != 0) {
+    return;
+  }
   char line[kCandumpLineMax + 2];
   const std::size_t n = format_candump_line(frame, time_ns, interface_, line);
   line[n] = '\n';
-  std::fwrite(line, 1, n + 1, file_);
+  errno = 0;
+  if (std::fwrite(line, 1, n + 1, file_) != n + 1) {
+    errno_ = errno != 0 ? errno : EIO;
+  }
 }
 
-void CandumpWriter::close() noexcept {
-  if (file_ != nullptr) {
-    std::fclose(file_);
-    file_ = nullptr;
+std::string CandumpWriter::finish() {
+  if (file_ == nullptr) return "";
+  errno = 0;
+  if (std::fflush(file_) != 0 && errno_ == 0) {
+    errno_ = errno != 0 ? errno : EIO;
+  }
+  if (std::fclose(file_) != 0 && errno_ == 0) {
+    errno_ = errno != 0 ? errno : EIO;
+  }
+  file_ = nullptr;
+  if (partial_ == path_) {  // written directly (not a regular file)
+    return errno_ == 0
+               ? ""
+               : path_.string() + ": writing the log failed (" + std::strerror(errno_) + ")";
+  }
+  std::error_code ec;
+  if (errno_ == 0) {
+    std::filesystem::rename(partial_, path_, ec);
+    if (!ec) return "";
+    return partial_.string() + ": the log is complete but could not be renamed to " +
+           path_.string() + " (" + ec.message() + ")";
+  }
+  const std::filesystem::path incomplete(path_.string() + ".incomplete");
+  std::filesystem::rename(partial_, incomplete, ec);
+  const std::filesystem::path kept = ec ? partial_ : incomplete;
+  const std::uintmax_t bytes = std::filesystem::file_size(kept, ec);
+  return path_.string() + ": writing the log failed (" + std::strerror(errno_) + "); the " +
+         (ec ? std::string("?") : std::to_string(bytes)) +
+         " bytes that reached the disk (the last line may be cut short) are in " + kept.string() +
+         ", not claimed as the log";
+}
+
+void CandumpWriter::abandon() noexcept {
+  if (file_ == nullptr) return;
+  std::fclose(file_);
+  file_ = nullptr;
+  if (partial_ != path_) {
+    std::error_code ec;
+    std::filesystem::rename(partial_, path_.string() + ".incomplete", ec);
   }
 }
 

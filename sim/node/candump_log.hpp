@@ -30,23 +30,37 @@ LoggedFrame parse_candump_line(std::string_view line, const std::string& where);
 std::vector<LoggedFrame> read_candump_log(const std::filesystem::path& path);
 
 /// Writes frames to a FILE through a fixed buffer: no allocation after open.
+///
+/// A log is never claimed complete when it is not: the frames go to `<path>.partial`, which gets
+/// its name `<path>` only when finish() has written and flushed every one of them. If a write
+/// fails (a full disk, a file-size limit) the writer stops writing, and finish() keeps what reached
+/// the disk as `<path>.incomplete` and says so. A target that exists and
+/// is not a regular file (/dev/stdout, a pipe) is written directly.
 class CandumpWriter {
  public:
   CandumpWriter() = default;
   CandumpWriter(const CandumpWriter&) = delete;
   CandumpWriter& operator=(const CandumpWriter&) = delete;
+  /// Without finish(): an abandoned log (an exception mid-run), kept as `<path>.incomplete`.
   ~CandumpWriter();
 
-  /// Opens (truncates) `path`; throws std::runtime_error if it cannot.
+  /// Opens (truncates) `<path>.partial`; throws std::runtime_error if it cannot.
   void open(const std::filesystem::path& path, std::string interface);
   [[nodiscard]] bool is_open() const noexcept { return file_ != nullptr; }
   void write(const proto::CanFrame& frame, std::int64_t time_ns) noexcept;
-  void close() noexcept;
+  /// Flushes and closes. Returns "" when every frame was written (the log now has its name), else
+  /// what went wrong, naming the file and where what reached the disk is.
+  [[nodiscard]] std::string finish();
 
  private:
+  void abandon() noexcept;
+
   std::FILE* file_{nullptr};
+  std::filesystem::path path_;
+  std::filesystem::path partial_;
   std::string interface_;
   std::vector<char> buffer_;
+  int errno_{0};  ///< of the first failed write (0: none)
 };
 
 /// A loop observer (hal/loop) that writes every frame received and sent to one candump log, so the

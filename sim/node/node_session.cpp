@@ -4,6 +4,7 @@
 #include <array>
 #include <fstream>
 #include <iomanip>
+#include <iostream>
 #include <ostream>
 #include <stdexcept>
 #include <vector>
@@ -43,6 +44,7 @@ SessionReport run_with(Bus& bus, Pin& pin, NodeRuntime& runtime, const NodeSetti
     return loop.stats();
   });
   report.counters = runtime.counters();
+  report.log_error = writer.finish();
   return report;
 }
 
@@ -63,6 +65,8 @@ SessionReport run_live(const NodeSettings& settings, const LiveOptions& options,
   }
   const hal::RealtimeReport rt = hal::apply_realtime(options.realtime);
   report.notes += rt.messages;
+  // Said at once too, not only in the report at the end: the run that follows is not real-time.
+  std::cerr << rt.messages << std::flush;
 
   if (options.can == "stub") {
     hal::PosixClock clock;
@@ -139,6 +143,7 @@ ReplayResult run_replay(const NodeSettings& settings, const std::filesystem::pat
   });
 
   ReplayResult result;
+  result.report.log_error = writer.finish();
   result.report.loop.cycles = counts.cycles;
   result.report.loop.overruns = counts.overruns;
   result.report.counters = runtime.counters();

@@ -33,6 +33,8 @@ struct SessionReport {
   /// SocketCAN only: frames the kernel dropped because the node's receive queue was full
   /// (SO_RXQ_OVFL), and the receive buffer it granted.
   std::optional<std::uint64_t> rx_queue_overflows;
+  /// "" when the log (--log, --tx-log) was written whole, else what went wrong (CandumpWriter).
+  std::string log_error;
   int receive_buffer_bytes{0};
 };
 

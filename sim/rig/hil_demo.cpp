@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <iostream>
 #include <ostream>
 #include <stdexcept>
 
@@ -97,6 +98,7 @@ DemoResult co_simulate(const DemoSettings& s, NodeRuntime& runtime, ClockT& cloc
     result.report.counters = runtime.counters();
     result.rig_frames_accepted = link.accepted();
     result.rig_frames_rejected = link.rejected();
+    result.report.log_error = writer.finish();
     return result;
   });
 }
@@ -106,6 +108,7 @@ DemoResult co_simulate(const DemoSettings& s, NodeRuntime& runtime, ClockT& cloc
 DemoResult run_demo(const DemoSettings& s) {
   NodeRuntime runtime(s.node);
   const hal::RealtimeReport rt = hal::apply_realtime(s.realtime);
+  std::cerr << rt.messages << std::flush;  // at once, and again in the summary
   DemoResult result;
   if (s.can == "stub") {
     if (s.sim_clock) {
