@@ -54,13 +54,18 @@ rc=$?
 
 # Real-time requests without the permission (as nobody, no capabilities, no rtprio/memlock limit).
 if [[ $(id -u) == 0 ]] && command -v setpriv >/dev/null; then
-  copy=$out/tread_nobody
-  cp "$tread" "$copy" && chmod 755 "$copy" "$out"
-  cp "$tir" "$out/tyre.tir" && chmod 644 "$out/tyre.tir"
-  (ulimit -l 64; ulimit -r 0; setpriv --reuid=nobody --regid=nogroup --clear-groups --inh-caps=-all \
-    "$copy" node --tir "$out/tyre.tir" --can stub --rt-priority 80 --mlock --duration-s 0.2 \
-    >"$out/rt.txt" 2>"$out/rt.err")
+  # nobody may not reach into OUT (CI clones into a mode-700 directory): the binary and the tyre go
+  # into a directory of their own that nobody can read.
+  nobody_dir=$(mktemp -d)
+  chmod 755 "$nobody_dir"
+  copy=$nobody_dir/tread
+  cp "$tread" "$copy" && chmod 755 "$copy"
+  cp "$tir" "$nobody_dir/tyre.tir" && chmod 644 "$nobody_dir/tyre.tir"
+  (ulimit -l 64; ulimit -r 0; cd "$nobody_dir" && setpriv --reuid=nobody --regid=nogroup --clear-groups \
+    --inh-caps=-all "$copy" node --tir "$nobody_dir/tyre.tir" --can stub --rt-priority 80 --mlock \
+    --duration-s 0.2 >"$out/rt.txt" 2>"$out/rt.err")
   rc=$?
+  rm -rf "$nobody_dir"
   [[ $rc == 0 ]] || fail "the node without RT permission exited $rc"
   grep -q "SCHED_FIFO priority 80: refused (Operation not permitted)" "$out/rt.err" ||
     fail "SCHED_FIFO refusal not said at once: $(cat "$out/rt.err")"
