@@ -4,10 +4,9 @@
 //   float contact table; its answers match the host's float replay within one quantisation step of
 //   the protocol (floating-point contraction and library functions differ between the compilers);
 // - fixed point (FPU-less Cortex-M0+/M3): MfTyreChannelFixed on the Q31.32 tyre header
-// (tread_tir_header
-//   --mf --fixed), the flashed integer contact table, the codec's integer signal route; no float
-//   anywhere in the image (scripts/check-no-softfloat.sh), so its answers are the host's
-//   `tread node --fixed` replay bit for bit.
+//   (tread_tir_header --mf --fixed), the flashed integer contact table, the codec's integer signal
+//   route; no float anywhere in the image (scripts/check-no-softfloat.sh), so its answers are the
+//   host's `tread node --fixed` replay bit for bit.
 
 #include <cstdint>
 

@@ -55,8 +55,13 @@ void CandumpWriter::open(const std::filesystem::path& path, std::string interfac
   partial_ = special ? path : std::filesystem::path(path.string() + ".partial");
   file_ = std::fopen(partial_.c_str(), "w");
   if (file_ == nullptr) {
-    throw std::runtime_error(partial_.string() + ": cannot open for writing (" +
-                             std::strerror(errno) + ")");
+    throw std::runtime_error(path.string() + ": cannot open for writing (" + std::strerror(errno) +
+                             (special ? "" : ", as " + partial_.string()) + ")");
+  }
+  if (!special) {
+    // An older log under this name is not this run's: gone now, as opening it for writing would
+    // have truncated it, so a failed run cannot leave it standing as if complete.
+    std::filesystem::remove(path, ec);
   }
   buffer_.assign(1U << 20U, '\0');
   std::setvbuf(file_, buffer_.data(), _IOFBF, buffer_.size());

@@ -123,10 +123,17 @@ NodeRuntime::NodeRuntime(const NodeSettings& settings) {
     }
     table_q_ = rail::ContactTableQ{q(t.y_first_mm, rail::kQYPerMm), q(t.y_step_mm, rail::kQYPerMm),
                                    static_cast<std::uint32_t>(n), rows_q_.data()};
-    if (settings.fixed && table_q_.y_step <= 0) {
+    // The integer table's y is in whole µm: a first y or step between them would put every row at
+    // the wrong y.
+    const auto whole_um = [](double mm) {
+      return std::abs(mm * rail::kQYPerMm - std::round(mm * rail::kQYPerMm)) < 1e-6;
+    };
+    if (settings.fixed &&
+        (table_q_.y_step <= 0 || !whole_um(t.y_first_mm) || !whole_um(t.y_step_mm))) {
       throw std::runtime_error(
-          "--wheelset-step-mm: the fixed-point contact table needs a step of "
-          "at least 1 µm");
+          "wheelset contact table (NodeSettings wheelset_ymax_mm, wheelset_step_mm): the "
+          "fixed-point table needs its first y and its step in whole micrometres, the step at "
+          "least 1 µm");
     }
     for (auto& c : contacts_) {
       c = node::ContactTableChannel(table_);

@@ -65,7 +65,8 @@ SessionReport run_live(const NodeSettings& settings, const LiveOptions& options,
   }
   const hal::RealtimeReport rt = hal::apply_realtime(options.realtime);
   report.notes += rt.messages;
-  // Said at once too, not only in the report at the end: the run that follows is not real-time.
+  // What was granted or refused, said at once too, not only in the report at the end (a refusal
+  // means the run that follows is not real-time).
   std::cerr << rt.messages << std::flush;
 
   if (options.can == "stub") {

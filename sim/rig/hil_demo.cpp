@@ -9,6 +9,7 @@
 
 #include "loop/loop_runner.hpp"
 #include "node/candump_log.hpp"
+#include "node/protocol_socket.hpp"
 #include "posix/posix_clock.hpp"
 #include "rig/scenario_catalogue.hpp"
 #include "socketcan/socketcan_bus.hpp"
@@ -121,19 +122,14 @@ DemoResult run_demo(const DemoSettings& s) {
       result = co_simulate(s, runtime, clock, net.endpoint(0), net.endpoint(1));
     }
   } else {
-    const bool fd = s.node.node.layout == proto::Layout::fd;
-    hal::SocketCanBus node_bus;
-    hal::SocketCanBus rig_bus;
-    for (hal::SocketCanBus* b : {&node_bus, &rig_bus}) {
-      const Status st = b->open(s.can, fd);
-      if (st != Status::ok) {
-        throw std::runtime_error("cannot open CAN interface '" + s.can + "' (" + to_string(st) +
-                                 ", errno " + std::to_string(b->last_errno()) + ")");
-      }
-    }
     if (s.sim_clock) {
       throw std::runtime_error("--clock sim needs the in-process bus (--can stub)");
     }
+    // Each end set up as `tread node` and `tread rig` set theirs up: only its incoming messages.
+    hal::SocketCanBus node_bus;
+    hal::SocketCanBus rig_bus;
+    open_protocol_socket(node_bus, s.can, s.node.node.layout, proto::Direction::rig_to_node);
+    open_protocol_socket(rig_bus, s.can, s.node.node.layout, proto::Direction::node_to_rig);
     hal::PosixClock clock;
     result = co_simulate(s, runtime, clock, node_bus, rig_bus);
   }

@@ -1,8 +1,8 @@
 // Measurement files and `tread mf eval` input tables (fit/measurement.hpp, mf/input_table.hpp) from
-// bytes no one wrote. The first byte picks the reader (measurement CSV, TYDEX, input table) and
-// the sign convention; the rest is the file. Either the reader returns or its error names the file;
-// what it returns holds finite inputs (in SI units) and outputs that are finite or NaN ("not
-// measured"), never infinite, each with the line it came from.
+// bytes no one wrote. The first byte picks the reader (low 2 bits: 0 measurement CSV, 1 TYDEX,
+// 2 or 3 input table) and the sign convention (bits 2-3); the rest is the file. Either the reader
+// returns or its error names the file; what it returns holds finite inputs (in SI units) and
+// outputs that are finite or NaN ("not measured"), never infinite, each with the line it came from.
 #include <array>
 #include <cmath>
 #include <optional>
@@ -41,7 +41,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::uint8_t pick = input.byte();
   const mf::SignConvention convention = kConventions[(pick >> 2U) % kConventions.size()];
   std::istringstream in{std::string(input.rest())};
-  switch (pick % 3U) {
+  switch (pick & 3U) {
     case 0: {
       constexpr const char* kSource = "fuzz.csv";
       fit::MeasurementSet set;

@@ -28,6 +28,10 @@ const std::filesystem::path& work_dir() {
     auto d = std::filesystem::temp_directory_path() /
              ("tread_fuzz_profile_" + std::to_string(::getpid()));
     std::filesystem::create_directories(d);
+    std::atexit([] {
+      std::error_code ec;
+      std::filesystem::remove_all(work_dir(), ec);
+    });
     return d;
   }();
   return dir;
@@ -39,7 +43,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   fuzz::Input input(data, size);
   const std::uint8_t a = input.byte();
   const std::uint8_t b = input.byte();
-  const std::string name = std::string("fuzz") + kExtensions[a % kExtensions.size()];
+  const std::string name = std::string("fuzz") + kExtensions[(a & 0x7FU) % kExtensions.size()];
   const std::filesystem::path path = work_dir() / name;
   {
     const std::string_view text = input.rest();

@@ -13,15 +13,15 @@ mkdir -p "$dir/corpus" "$dir/findings"
 cp -r "$seeds"/. "$dir/corpus/" 2>/dev/null || true
 rm -f "$dir/corpus/.gitkeep"
 args=(-max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1
-  -artifact_prefix="$dir/findings/" -max_len=16384)
+  -artifact_prefix="$dir/findings/" -max_len=65536)
 if [[ -n $dict ]]; then args+=(-dict="$dict"); fi
 log=$dir/fuzz.log
 "$bin" "${args[@]}" "$dir/corpus" >"$log" 2>&1
 rc=$?
-stat() { grep -E "^stat::$1:" "$log" | tail -1 | awk '{print $2}'; }
-execs=$(stat number_of_executed_units)
-rate=$(stat average_exec_per_sec)
-added=$(stat new_units_added)
+final_stat() { grep -E "^stat::$1:" "$log" | tail -1 | awk '{print $2}'; }
+execs=$(final_stat number_of_executed_units)
+rate=$(final_stat average_exec_per_sec)
+added=$(final_stat new_units_added)
 last=$(grep -E '^#[0-9]+' "$log" | tail -1)
 cov=$(sed -nE 's/.* cov: ([0-9]+).*/\1/p' <<<"$last")
 ft=$(sed -nE 's/.* ft: ([0-9]+).*/\1/p' <<<"$last")

@@ -11,8 +11,8 @@ Checks: every frame is a message of the DBC with its length and FD flag; its E2E
 over the data ID and the payload, computed here) is right; each message's counter advances by one
 (mod 15) from frame to frame, so nothing was lost on the wire. candump runs with -d: a frame its own
 socket dropped (a full receive queue: the capture's loss, not the node's) is reported on a
-"DROPCOUNT" line; then the capture is incomplete, which is said, and only the frames it holds are
-checked (DBC, CRC), not the counters or the cycles. Then, cycle by cycle (grouped by the
+"DROPCOUNT" line; then the capture is incomplete: the frames it holds are checked (DBC, CRC), not
+the counters or the cycles, and the check fails as the capture's, not as the node's. Then, cycle by cycle (grouped by the
 rig's cycle frame), the values canmatrix decodes equal the rig's traces: the slips, loads and
 lateral displacements the rig sent (within half a quantisation step of the trace's unquantised
 value, plus float rounding) and the forces, moments and delta r the node answered (equal to what tread decoded).
@@ -119,6 +119,11 @@ def main():
             current["node"].update(decoded)  # answers before the rig's first cycle are skipped
     compared = 0
     if dropped:
+        # Not the node's loss (its own counters say that), but the check against the traces could
+        # not be made: a failure of the capture, said as such.
+        failures.append(f"the capture dropped {dropped} frames (candump's receive queue, -d): "
+                        "the values could not be compared with the traces; a loss of the capture, "
+                        "not of the node")
         cycles = []
         traces = []
     # The traces in order, row by row, are the rig's cycles.

@@ -21,7 +21,7 @@ profile=(--wheelsets 2 --wheelset-profile wheel=S1002,rail=60E1,cant=1:40)
   --tx-log "$out/tx.log" >"$out/replay.txt" 2>"$out/replay.err")
 rc=$?
 [[ $rc == 1 ]] || fail "replay with a full disk exited $rc, not 1"
-grep -q "$out/tx.log: writing the log failed (File too large)" "$out/replay.err" ||
+grep -qF "$out/tx.log: writing the log failed (File too large)" "$out/replay.err" ||
   fail "replay: no error naming the log: $(cat "$out/replay.err")"
 [[ ! -e $out/tx.log ]] || fail "replay: a cut log under the log's name"
 [[ -s $out/tx.log.incomplete ]] || fail "replay: what was written is not kept as tx.log.incomplete"
@@ -43,7 +43,7 @@ grep -Eq "$out/demo.log: writing the log failed|cannot write $out/demo/" "$out/d
 "$tread" node --tir "$tir" "${profile[@]}" --replay "$rig_log" --clock sim \
   --tx-log "$out/no/such/dir/tx.log" >/dev/null 2>"$out/nodir.err"
 rc=$?
-[[ $rc == 1 ]] && grep -q "no/such/dir/tx.log.partial: cannot open for writing (No such file or directory)" \
+[[ $rc == 1 ]] && grep -qF "no/such/dir/tx.log: cannot open for writing (No such file or directory" \
   "$out/nodir.err" || fail "a log in a missing directory: rc $rc, $(cat "$out/nodir.err")"
 
 # A CAN interface that does not exist.
@@ -56,11 +56,11 @@ rc=$?
 if [[ $(id -u) == 0 ]] && command -v setpriv >/dev/null; then
   # nobody may not reach into OUT (CI clones into a mode-700 directory): the binary and the tyre go
   # into a directory of their own that nobody can read.
-  nobody_dir=$(mktemp -d)
+  nobody_dir=$(mktemp -d /tmp/tread-rt.XXXXXX)
   chmod 755 "$nobody_dir"
   copy=$nobody_dir/tread
-  cp "$tread" "$copy" && chmod 755 "$copy"
-  cp "$tir" "$nobody_dir/tyre.tir" && chmod 644 "$nobody_dir/tyre.tir"
+  { cp "$tread" "$copy" && chmod 755 "$copy" && cp "$tir" "$nobody_dir/tyre.tir" &&
+    chmod 644 "$nobody_dir/tyre.tir"; } || fail "cannot prepare the unprivileged run in $nobody_dir"
   (ulimit -l 64; ulimit -r 0; cd "$nobody_dir" && setpriv --reuid=nobody --regid=nogroup --clear-groups \
     --inh-caps=-all "$copy" node --tir "$nobody_dir/tyre.tir" --can stub --rt-priority 80 --mlock \
     --duration-s 0.2 >"$out/rt.txt" 2>"$out/rt.err")
