@@ -11,6 +11,7 @@ packages=(
   gnuplot-nox nlohmann-json3-dev  # plots: gnuplot directly (Debian's libsciplot-dev is the Motif widget, not C++ sciplot)
   # CAN, real-time tools and the independent DBC parser
   can-utils rt-tests gpiod python3-canmatrix canmatrix-utils python3-numpy
+  stress-ng  # the CPU hog beside the vcan tests (issue 16's runs under load: scripts/vcan-repeat.sh)
   # cross compilers and emulators
   g++-aarch64-linux-gnu g++-arm-linux-gnueabihf gcc-arm-none-eabi libstdc++-arm-none-eabi-newlib
   libnewlib-arm-none-eabi binutils-arm-none-eabi qemu-user-static qemu-system-x86
