@@ -196,7 +196,13 @@ MeasurementSet read_measurement_csv(std::istream& in, const std::string& name,
       if (!v)
         fail(name, line,
              "cell " + std::to_string(index + 1) + " '" + trim(cell) + "' is not a finite number");
-      set_field(p, field, *v * factors[field]);
+      const double si = *v * factors[field];
+      if (!std::isfinite(si)) {
+        fail(name, line,
+             "cell " + std::to_string(index + 1) + " '" + trim(cell) +
+                 "' is out of range once converted to SI units");
+      }
+      set_field(p, field, si);
     }
     set.points.push_back(p);
   }
@@ -300,7 +306,13 @@ MeasurementSet read_tydex(std::istream& in, const std::string& name) {
         if (!v)
           fail(name, line,
                "value " + std::to_string(i + 1) + " '" + tokens[i] + "' is not a finite number");
-        set_field(p, *c.field, ((*v - c.meas_offset) * c.factor + c.phys_offset) * c.scale);
+        const double si = ((*v - c.meas_offset) * c.factor + c.phys_offset) * c.scale;
+        if (!std::isfinite(si)) {
+          fail(name, line,
+               "value " + std::to_string(i + 1) + " '" + tokens[i] +
+                   "' is out of range once the channel's factor, offsets and unit are applied");
+        }
+        set_field(p, *c.field, si);
       }
       set.points.push_back(p);
     }

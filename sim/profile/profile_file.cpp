@@ -72,6 +72,29 @@ std::string num(double v, int decimals = 3) {
   return buf;
 }
 
+/// A wheel or rail profile is some 100 to 200 mm wide and a few tens of mm deep. A file whose
+/// points span more than a metre is in other units (µm?) or broken; refused before anything is
+/// sampled at a fine step over it.
+void check_extent(const ProfilePoints& points, const std::string& file) {
+  constexpr double kMaxSpan_mm = 1000.0;
+  const auto check = [&](const std::vector<double>& v, const char* axis) {
+    if (v.empty()) return;
+    const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+    if (*hi - *lo > kMaxSpan_mm) {
+      const auto line_of = [&](auto it) {
+        const auto k = static_cast<std::size_t>(it - v.begin());
+        return k < points.line.size() ? std::to_string(points.line[k]) : std::string("?");
+      };
+      throw std::runtime_error(file + ":" + line_of(hi) + ": the points span " + num(*hi - *lo, 1) +
+                               " mm in " + axis + " (lines " + line_of(lo) + " and " + line_of(hi) +
+                               "): a wheel or rail profile spans less than 1000 mm (is the file "
+                               "in millimetres?)");
+    }
+  };
+  check(points.y_mm, "y");
+  check(points.z_mm, "z");
+}
+
 /// "1:N" for an inclination (rad).
 std::string ratio(double rad) {
   if (std::abs(rad) < 1e-9) {
@@ -563,6 +586,7 @@ ProfileFile read_profile_file(const std::filesystem::path& path, ProfileRole rol
       break;
   }
   out.points_read = points.y_mm.size();
+  check_extent(points, file);
   apply_axes(points, options);
   if (points.y_mm.back() < points.y_mm.front()) {  // given in decreasing y
     std::reverse(points.y_mm.begin(), points.y_mm.end());

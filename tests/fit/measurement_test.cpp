@@ -88,6 +88,9 @@ TEST(MeasurementCsv, BadRowsNameFileAndLine) {
   EXPECT_EQ(error_of("Fz_N,kappa,kappa,alpha_rad,Fx_N\n", false),
             "m.csv:1: repeated column 'kappa'");
   EXPECT_EQ(error_of("", false), "m.csv:0: no header row");
+  // Finite as written, infinite once in SI units (found by fuzzing): refused, not carried as inf.
+  EXPECT_EQ(error_of("Fz_kN,kappa,alpha_rad,Fx_N\n1e308,0,0,1\n", false),
+            "m.csv:2: cell 1 '1e308' is out of range once converted to SI units");
 }
 
 const char* const kTydex =
@@ -145,6 +148,12 @@ TEST(MeasurementTydex, BadRowsNameFileAndLine) {
   no_fz.replace(no_fz.find("FZW         Vertical force"), 3, "FZX");
   EXPECT_EQ(error_of(no_fz, true), "m.tdx:7: missing channel FZW");
   EXPECT_EQ(error_of("**HEADER\n", true), "m.tdx:1: no **MEASURDATA section");
+  // A value that the channel's factor takes past the double range (found by fuzzing).
+  std::string overflow = kTydex;
+  overflow.replace(overflow.find("300  -20"), 3, "1e308");
+  EXPECT_EQ(error_of(overflow, true),
+            "m.tdx:19: value 7 '1e308' is out of range once the channel's factor, offsets and unit "
+            "are applied");
 }
 
 }  // namespace
