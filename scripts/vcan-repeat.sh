@@ -22,8 +22,8 @@ if ((load)); then
   trap 'kill $hog 2>/dev/null; wait $hog 2>/dev/null' EXIT
 fi
 echo "vcan tests, $runs runs$([[ $load == 1 ]] && echo ", under stress-ng --cpu 1") on $(nproc) cores, $(git rev-parse --short HEAD)"
-echo "| run | result | s | flood calibration classic / FD | pace classic / FD (us) | node lost / overflowed classic / FD |"
-echo "|---|---|---|---|---|---|"
+echo "| run | result | s | flood calibration classic / FD | pace classic / FD (us) | flood reached classic / FD | node lost / overflowed classic / FD | capture drops classic / FD |"
+echo "|---|---|---|---|---|---|---|---|"
 failed=0
 for ((k = 1; k <= runs; k++)); do
   log=$logs/run$k.log
@@ -34,7 +34,10 @@ for ((k = 1; k <= runs; k++)); do
   pace=$(grep -oE "lockstep paced at [0-9]+" "$log" | awk '{ printf "%s%s", sep, $4; sep = " / " }')
   lost=$(grep -oE "node: frames lost [0-9]+, receive-queue overflows [0-9]+" "$log" |
     awk '{ printf "%s%s / %s", sep, $4, $7; sep = "; " }' | tr -d ,)
-  echo "| $k | $result | $secs | $cal | $pace | $lost |"
+  flood=$(grep -oE "flood: [0-9]+ frames on vcan0 besides the protocol's [0-9]+: [0-9.]+x" "$log" |
+    awk '{ printf "%s%s", sep, $NF; sep = " / " }')
+  drops=$(grep -oE "capture drops [0-9]+" "$log" | awk '{ printf "%s%s", sep, $3; sep = " / " }')
+  echo "| $k | $result | $secs | $cal | $pace | $flood | $lost | $drops |"
   if [[ $result == FAIL ]]; then grep -E "FAIL|Failed|\*\*\*" "$log" | head -5 | sed 's/^/    /'; fi
 done
 echo "$((runs - failed)) of $runs passed"

@@ -18,7 +18,8 @@
 #    the node's received frames + its receive-queue overflows + the injected frames that its filter
 #    drops (flood, markers), short by no more than the kernel's backlog drops; the node's counters add up
 #    (received = accepted + rejected + ignored + error frames) and count each injected fault
-#    (error frames, wrong lengths, bad CRCs, a bad counter on each rig restart at most);
+#    (error frames, wrong lengths, bad CRCs; bad counters at most one per message per rig restart
+#    and link down, where the rig's counters jump);
 #  - stale → safe: after the rig's inputs stop (rig stalled, link down, rig killed), the node's status
 #    says wheel 0 stale within the input timeout + 2 periods + 20 ms of the last input; never stale
 #    while inputs arrive (none within the timeout − 10 ms of an input); recovery: stale cleared within
@@ -27,7 +28,10 @@
 #    to the end (mlockall: RSS is what is resident);
 #  - overruns: the node stall injects some (seen in its status within the stall's window); outside
 #    those windows the overrun rate is not above the fault-free baseline's (2x + 3: the guest's timer
-#    jitter, measured in the same run, is the environment's, not the node's);
+#    jitter, measured in the same run, is the environment's, not the node's) or under 5 % of the
+#    cycles (the host's load may change during the run); in all, no more than the injected ones and
+#    5 % of the cycles (a node that a fault left degraded misses most of its deadlines). Where a status
+#    frame is late itself (the emulator held the guest back), stale and recovery are not timed by it;
 #  - node and rig exit cleanly (the node on SIGTERM, with its report).
 # The summary is written to OUT/soak_summary.txt (OUT: TREAD_OUT_DIR or /work/out).
 tread=$1
@@ -137,11 +141,13 @@ cat "$n" | tee -a "$out/soak_summary.txt" >/dev/null
 # Accounting of every frame on the bus.
 awk -v tx=$((tx1 - tx0)) -v dropped=$injected_dropped -v backlog=$((drop1 - drop0)) \
   -v err=$injected_error -v badlen=$injected_bad_length -v badcrc=$injected_bad_crc \
-  -v restarts=$restarts '
+  -v restarts=$restarts -v rounds=$rounds -v period=$period_us '
   /^frames received/ { gsub(/[(),]/, " "); rx = $3; acc = $5; ign = $7; errf = $10 }
   /^frames rejected/ { gsub(/[(),]/, " "); rej = $3; crc = $6; cnt = $9; len = $12 }
   /^rx queue overflow/ { ovfl = $4 }
   /^frames sent/ { gsub(/[(),]/, " "); sent = $3; refused = $6 }
+  /^cycles/ { cycles = $2 }
+  /^overruns/ { overruns = $2 }
   END {
     bad = 0
     node_tx = sent - refused
@@ -150,14 +156,20 @@ awk -v tx=$((tx1 - tx0)) -v dropped=$injected_dropped -v backlog=$((drop1 - drop
     sum = node_tx + rx + ovfl + dropped
     printf "accounting: frames on the bus %d; node sent %d + node received %d + overflowed %d + injected, filtered out %d = %d (kernel backlog drops %d)\n", tx, node_tx, rx, ovfl, dropped, sum, backlog
     if (sum > tx || sum < tx - backlog) { print "FAIL: the frames on the bus are not accounted for"; bad = 1 }
+    # Overruns in all: those the node stalls inject (50 ms at the period, each) and under 5 % of
+    # the cycles besides.
+    printf "overruns: %d in %d cycles (%.2f %%)\n", overruns, cycles, 100 * overruns / (cycles > 0 ? cycles : 1)
+    if (overruns > rounds * (50000 / period + 2) + 0.05 * cycles) { print "FAIL: overruns beyond the injected ones and 5 % of the cycles"; bad = 1 }
     if (acc < 1000) { printf "FAIL: the node accepted %d frames: the rig did not run\n", acc; bad = 1 }
     if (rx != acc + rej + ign + errf) { print "FAIL: the node'\''s received frames do not add up"; bad = 1 }
     if (errf != err) { printf "FAIL: error frames %d, injected %d\n", errf, err; bad = 1 }
     if (len != badlen) { printf "FAIL: bad length %d, injected %d\n", len, badlen; bad = 1 }
     if (crc != badcrc) { printf "FAIL: bad CRC %d, injected %d\n", crc, badcrc; bad = 1 }
-    # A restarted rig: its first frame of each of its 9 messages may be out of sequence (rejected
-    # until a second one confirms the new counter).
-    if (cnt > 9 * restarts) { printf "FAIL: bad counters %d, more than 9 per rig restart (%d)\n", cnt, restarts; bad = 1 }
+    # A restarted rig, or one whose sends the link refused while it was down (its counters ran on):
+    # the first frame of each of its 9 messages after it may be out of sequence (rejected until a
+    # second one confirms the new counter); a smaller jump is accepted and counted as lost frames
+    # (counter gaps: frames that never reached the bus, not frames the bus lost).
+    if (cnt > 9 * (restarts + rounds)) { printf "FAIL: bad counters %d, more than 9 per rig restart and link down (%d)\n", cnt, restarts + rounds; bad = 1 }
     exit bad }' "$n" | tee -a "$out/soak_summary.txt" | grep -q FAIL && fail "frame accounting (above)"
 
 # Stale -> safe, recovery, overruns: from the capture (candump -L: "(sec.usec) vcan0 ID#DATA").
@@ -184,15 +196,15 @@ awk -v timeout=$((timeout_ms * 1000)) -v period=$period_us -v rounds=$rounds '
     if (have_in && us - last_in > onset_bound) long_gaps++
     # A gap that the node status frames covered without a break of their own (the bus up, the guest
     # not frozen: no two of them more than 2 periods + 10 ms apart) must have shown stale.
-    if (have_in && us - last_in > onset_bound && last_status > last_in + onset_bound && max_spacing <= 2 * period + 10000 && !in_gap) missed_onsets++
+    if (have_in && us - last_in > onset_bound && last_status > last_in + onset_bound && max_spacing <= 2 * period + 10000 && !stale_since_in) missed_onsets++
     if (in_gap) { gap_back = us; waiting_recovery = 1; in_gap = 0 }
-    last_in = us; have_in = 1; max_spacing = 0; next
+    last_in = us; have_in = 1; max_spacing = 0; stale_since_in = 0; next
   }
   id == "0F0" && length(d) == 16 {
     if (!have_status) { first_status = us; have_status = 1; ovr = hex(substr(d, 9, 2)) }
     o = hex(substr(d, 9, 2)); stale = hex(substr(d, 13, 2)) % 2
-    if (o == 255) saturated = 1
-    if (o > ovr) {
+    if (o == 255 && !saturated) { saturated = 1; saturated_at = us }
+    if (o > ovr && !saturated) {
       inc = o - ovr
       if (in_stall || (stall_to && us <= stall_to + 3 * period + 20000)) injected += inc
       else if (!base_end) base += inc
@@ -202,9 +214,10 @@ awk -v timeout=$((timeout_ms * 1000)) -v period=$period_us -v rounds=$rounds '
     if (stale && !was_stale && !waiting_recovery) {
       onsets++
       delay = us - last_in
-      # Timed only when the status frames of the node were continuous up to it: across a link down or
-      # a node stall there is no frame to see the moment in.
-      if (us - last_status > onset_bound) untimed++
+      # Timed only when the status frames of the node were continuous up to it (no two more than 2
+      # periods + 10 ms apart): across a link down, a node stall or the emulator holding the guest
+      # back there is no frame to see the moment in.
+      if (us - last_status > 2 * period + 10000) untimed++
       else {
         if (delay > max_onset) max_onset = delay
         if (delay > onset_bound) late_onsets++
@@ -215,25 +228,31 @@ awk -v timeout=$((timeout_ms * 1000)) -v period=$period_us -v rounds=$rounds '
     }
     if (!stale && waiting_recovery) {
       rec = us - gap_back; recoveries++
-      if (rec > max_recovery) max_recovery = rec
-      if (rec > recovery_bound) late_recoveries++
+      if (us - last_status > 2 * period + 10000) untimed_recoveries++
+      else {
+        if (rec > max_recovery) max_recovery = rec
+        if (rec > recovery_bound) late_recoveries++
+      }
       waiting_recovery = 0
     }
     if (have_status_before && us - last_status > max_spacing) max_spacing = us - last_status
+    if (stale) stale_since_in = 1
     was_stale = stale; last_status = us; have_status_before = 1
   }
   END {
     bad = 0
-    printf "stale: %d onsets (input gaps over the timeout: %d, over the bound: %d), max %.1f ms after the last input (bound %.1f ms; %d not timed: no status frames across a link down); %d late, %d missed, %d while inputs arrived\n", onsets, gaps, long_gaps, max_onset / 1000, onset_bound / 1000, untimed, late_onsets, missed_onsets, false_stale
-    printf "recovery: %d, max %.1f ms after the inputs returned (bound %.1f ms); %d late\n", recoveries, max_recovery / 1000, recovery_bound / 1000, late_recoveries
+    printf "stale: %d onsets (input gaps over the timeout: %d, over the bound: %d), max %.1f ms after the last input (bound %.1f ms; %d not timed: no status frames to time them by); %d late, %d missed, %d while inputs arrived\n", onsets, gaps, long_gaps, max_onset / 1000, onset_bound / 1000, untimed, late_onsets, missed_onsets, false_stale
+    printf "recovery: %d, max %.1f ms after the inputs returned (bound %.1f ms; %d not timed); %d late\n", recoveries, max_recovery / 1000, recovery_bound / 1000, untimed_recoveries, late_recoveries
     base_s = (base_end - first_status) / 1e6; run_s = (tail_end - base_end) / 1e6
-    printf "overruns: baseline %d in %.0f s; node stalls %d (injected, %d stalls); elsewhere %d in %.0f s\n", base, base_s, injected, stall_windows, spont, run_s
+    if (saturated) run_s = (saturated_at - base_end) / 1e6
+    printf "overruns: baseline %d in %.0f s; node stalls %d (injected, %d stalls); elsewhere %d in %.0f s%s\n", base, base_s, injected, stall_windows, spont, run_s, saturated ? " (then the status counter saturated at 255: the node report has the total)" : ""
     # Each round stops the inputs three times (link down, rig stalled, rig killed).
     if (onsets < 3 * rounds || late_onsets || missed_onsets || false_stale) { print "FAIL: stale detection"; bad = 1 }
     if (recoveries < 3 * rounds || recoveries < onsets - 1 || late_recoveries) { print "FAIL: recovery"; bad = 1 }
-    if (saturated) { print "FAIL: the status overrun counter saturated (255): cannot attribute the overruns"; bad = 1 }
-    if (stall_windows > 0 && injected < stall_windows) { print "FAIL: a node stall injected no overrun"; bad = 1 }
-    if (base_s <= 0 || spont > 2 * base * run_s / base_s + 3) { print "FAIL: more overruns after the faults than the baseline rate allows"; bad = 1 }
+    if (stall_windows > 0 && injected < stall_windows && !saturated) { print "FAIL: a node stall injected no overrun"; bad = 1 }
+    # After the faults, overruns at no more than twice the baseline rate + 3, or, the emulator jitter
+    # being the host load, in under 5 % of the cycles (a node left degraded by a fault misses most).
+    if (base_s <= 0 || (spont > 2 * base * run_s / base_s + 3 && spont > 0.05 * run_s * 1e6 / period)) { print "FAIL: more overruns after the faults than the baseline rate allows"; bad = 1 }
     exit bad }' "$tmp/capture.log" | tee -a "$out/soak_summary.txt" | grep -q FAIL && fail "stale/recovery/overruns (above)"
 
 # Memory and file descriptors flat from the end of the first round to the end.
