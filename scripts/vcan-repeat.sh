@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs the SocketCAN tests (ctest -L vcan: natively or in the VM) N times in a row and prints one row
-# per run: result, seconds, and what the fault test measured (the flood per protocol frame from its
-# calibration, the lockstep pace, the node's lost frames and receive-queue overflows).
+# per run: result, seconds, and what the tests measured (the flood per protocol frame from the fault
+# test's calibration, the lockstep pace set from it, the flood reached, the node's lost frames and
+# receive-queue overflows, candump's drops in the scenario capture).
 # --load: with a CPU hog beside it (stress-ng, one worker at 100 %: the other core of a 2-core machine
 # busy the whole time). Issue 16's reliability runs; logs in build/host/vcan-repeat/.
 # Usage: scripts/vcan-repeat.sh [--load] [N]
