@@ -6,7 +6,8 @@
 // the ellipse eccentricity e solves  B/A = (E(e)/(1 - e^2) - K(e)) / (K(e) - E(e))  (for B >= A;
 // axes swapped otherwise), and  a^3 = 3 P (K - E) / (2 pi E* e^2 A),  b = a sqrt(1 - e^2), where
 // K, E are the complete elliptic integrals of modulus e and 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2.
-// Mean pressure P / (pi a b), maximum 3/2 of it.
+// Mean pressure P / (pi a b), maximum 3/2 of it. The solution itself is the core's
+// (rail/hertz_ellipse.hpp); this is the host's interface with radii and materials.
 //
 // The seed's eq. 1-2 (square root of 3Q(1-nu^2)/(E (1/rd + 1/rk))) are not Hertz's result: the
 // semi-axes go with the cube root of the load and depend on all four curvatures; eq. 3 is the
@@ -31,6 +32,7 @@ struct HertzResult {
   double b_mm = 0.0;  ///< semi-axis lateral (y)
   double mean_pressure_mpa = 0.0;
   double max_pressure_mpa = 0.0;
+  double approach_mm = 0.0;    ///< mutual approach of the two bodies
   double a_curv_per_mm = 0.0;  ///< A
   double b_curv_per_mm = 0.0;  ///< B
   double e_star_mpa = 0.0;     ///< contact modulus E*
