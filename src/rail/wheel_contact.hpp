@@ -1,0 +1,120 @@
+#pragma once
+// One wheel on its rail: the creepages of each contact point from the wheelset's motion, the
+// split of the wheel load between a tread and a flange point (two-point contact), the creep forces
+// at each point by Polach's method, and the wheel's Y, Q and Nadal margin. Pure, no heap, float
+// on the node and double on the host.
+//
+// Each wheel works in its own frame: x forward, y toward its field side (away from the track
+// centre: the track's +y for the left wheel, -y for the right), z up. The right wheel's motion is
+// mirrored into that frame (mirrored()), its lateral forces and moments mirrored back by the
+// caller. A contact point has rolling radius r and contact angle gamma (> 0 where the radius grows
+// toward the flange); its contact frame is x, the tangent t = (cos gamma, sin gamma) in (y, z) and
+// the normal.
+//
+// Creepages at a point of a wheel rolling at axle spin Omega, wheelset speed V, lateral velocity
+// v_y, yaw angle psi, yaw rate psi_dot, wheel at e from the wheelset centre:
+//     xi  = (V - Omega r - psi_dot e) / V
+//     eta = (v_y - V psi) / (V cos gamma)
+//     phi = (psi_dot cos gamma - Omega sin gamma) / V
+// (the linearised kinematics of the classical wheelset models, e.g. Wickens; the spin term
+// -sin(gamma)/r0 is what makes the flange's lateral force point toward the field side).
+//
+// Two-point contact: a rigid wheel sinking by the vertical approach d closes a point with vertical
+// gap g by (d - g) cos(gamma) along its normal; each point carries the Hertz load of that approach
+// and the vertical components add up to the wheel load Q. Tangential forces are left out of that
+// balance (they are small against N at the tread, and Y/Q carries them).
+
+#include "rail/derailment.hpp"
+#include "rail/hertz_ellipse.hpp"
+#include "rail/polach_creep.hpp"
+
+namespace tread::rail {
+
+template <typename T>
+struct WheelKinematics {
+  T speed_m_s{};             ///< V (> 0)
+  T lateral_velocity_m_s{};  ///< toward the field side
+  T yaw_rad{};               ///< heading toward the field side positive
+  T yaw_rate_rad_s{};
+  T axle_spin_rad_s{};          ///< Omega
+  T half_contact_base_mm{750};  ///< e: wheel contact point from the wheelset centre
+};
+
+/// The right wheel's view of the wheelset motion given in track axes (y left, yaw counter-
+/// clockwise seen from above): lateral velocity, yaw angle and yaw rate change sign.
+template <typename T>
+WheelKinematics<T> mirrored(WheelKinematics<T> k) noexcept {
+  k.lateral_velocity_m_s = -k.lateral_velocity_m_s;
+  k.yaw_rad = -k.yaw_rad;
+  k.yaw_rate_rad_s = -k.yaw_rate_rad_s;
+  return k;
+}
+
+/// Creepages at a point with rolling radius r (mm) and contact angle gamma. Speed <= 0 (or not
+/// finite): zero creepage (a standing wheelset has no creep).
+template <typename T>
+Creepage<T> point_creepage(const WheelKinematics<T>& k, T r_mm, T gamma_rad) noexcept;
+
+/// What the contact table holds for one contact point (all load-independent).
+template <typename T>
+struct ContactPointData {
+  bool present = false;
+  T r_mm{};
+  T gamma_rad{};
+  T vertical_gap_mm{};  ///< 0 for the main point
+  HertzShape<T> shape{};
+  KalkerCoefficients<T> c{};
+};
+
+/// Normal forces of the (up to) two points for wheel load q_n (> 0; <= 0 gives zero forces).
+template <typename T>
+struct NormalSplit {
+  T normal_n[2]{};
+  T vertical_approach_mm{};
+};
+
+template <typename T>
+NormalSplit<T> split_wheel_load(const ContactPointData<T> (&points)[2], T q_n) noexcept;
+
+template <typename T>
+struct PointForces {
+  T normal_n{};
+  Creepage<T> creepage{};
+  CreepForce<T> creep{};  ///< on the wheel, in the point's contact frame
+  HertzPatch<T> patch{};
+};
+
+template <typename T>
+struct WheelForces {
+  PointForces<T> point[2]{};
+  WheelYQ<T> yq{};
+  DerailmentCheck<T> derailment{};
+  Status derailment_status = Status::ok;  ///< of derailment_check (out_of_range: wheel lifted)
+};
+
+/// The whole wheel: split, creepages, Polach at each loaded point, Y/Q against Nadal's limit at
+/// the larger of flange_angle_rad (the profile's flange angle: a wheel on its tread would have to
+/// climb that) and the contact angles that carry load, with the static friction mu0.
+/// g_mpa: combined shear modulus.
+template <typename T>
+WheelForces<T> wheel_forces(const ContactPointData<T> (&points)[2], T q_n,
+                            const WheelKinematics<T>& kinematics, T g_mpa, T flange_angle_rad,
+                            const PolachParameters<T>& polach) noexcept;
+
+extern template Creepage<float> point_creepage<float>(const WheelKinematics<float>&, float,
+                                                      float) noexcept;
+extern template Creepage<double> point_creepage<double>(const WheelKinematics<double>&, double,
+                                                        double) noexcept;
+extern template NormalSplit<float> split_wheel_load<float>(const ContactPointData<float> (&)[2],
+                                                           float) noexcept;
+extern template NormalSplit<double> split_wheel_load<double>(const ContactPointData<double> (&)[2],
+                                                             double) noexcept;
+extern template WheelForces<float> wheel_forces<float>(const ContactPointData<float> (&)[2], float,
+                                                       const WheelKinematics<float>&, float, float,
+                                                       const PolachParameters<float>&) noexcept;
+extern template WheelForces<double> wheel_forces<double>(const ContactPointData<double> (&)[2],
+                                                         double, const WheelKinematics<double>&,
+                                                         double, double,
+                                                         const PolachParameters<double>&) noexcept;
+
+}  // namespace tread::rail
