@@ -1,6 +1,9 @@
 // `tread contact`: the rigid wheel–rail contact table over wheelset displacement y (no roll, no
 // penetration; global vertical-gap minimum per wheel), as CSV
-// y_mm,r_left_mm,r_right_mm,delta_r_mm,gamma_left_rad,gamma_right_rad,yc_left_mm,yc_right_mm.
+// y_mm,r_left_mm,r_right_mm,delta_r_mm,gamma_left_rad,gamma_right_rad,yc_left_mm,yc_right_mm;
+// with --load, the contact mechanics at each y as further columns (contact/mechanics_columns.hpp):
+// Hertz ellipses and pressures, the two-point load split, creepages and creep forces (Polach or
+// FASTSIM) from the wheelset motion given, Y/Q and Nadal's margin.
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -10,17 +13,21 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "contact/contact_mechanics.hpp"
 #include "contact/contact_plot.hpp"
 #include "contact/contact_setup_cli.hpp"
+#include "contact/mechanics_columns.hpp"
+#include "contact/rail_placement.hpp"
 #include "contact/rigid_contact.hpp"
 
 namespace tread::cli {
 namespace {
 
-void write_table(std::ostream& out, const contact::ContactTable& t, bool rail_positions) {
+void write_table(std::ostream& out, const contact::ContactTable& t, bool rail_positions,
+                 const std::string& extra_header, const std::vector<std::string>& extra) {
   out << "y_mm,r_left_mm,r_right_mm,delta_r_mm,gamma_left_rad,gamma_right_rad,yc_left_mm,"
          "yc_right_mm"
-      << (rail_positions ? ",yr_left_mm,yr_right_mm\n" : "\n");
+      << (rail_positions ? ",yr_left_mm,yr_right_mm" : "") << extra_header << '\n';
   out << std::fixed;
   // Values that round to zero print as 0.000000, never -0.000000.
   auto v = [](double x) { return std::abs(x) < 5e-7 ? 0.0 : x; };
@@ -32,8 +39,107 @@ void write_table(std::ostream& out, const contact::ContactTable& t, bool rail_po
     if (rail_positions) {
       out << ',' << v(t.yr_left_mm[k]) << ',' << v(t.yr_right_mm[k]);
     }
+    if (k < extra.size()) {
+      out << extra[k];
+    }
     out << '\n';
   }
+}
+
+/// What --load and the options beside it set.
+struct MechanicsOptions {
+  double load_n = 0.0;
+  double load_right_n = 0.0;
+  contact::WheelsetState state;
+  std::string friction = "kalker";
+  double mu = 0.0;
+  std::string creep_law = "polach";
+  contact::ContactMaterials materials;
+};
+
+rail::PolachParameters<double> friction_parameters(const MechanicsOptions& o) {
+  rail::PolachParameters<double> p;  // "kalker": kA = kS = 1, no fall with slip velocity
+  if (o.friction == "dry") {
+    p = {0.55, 0.40, 0.60, 1.00, 0.40};  // Polach 2005, dry rail
+  } else if (o.friction == "wet") {
+    p = {0.30, 0.40, 0.20, 0.30, 0.10};  // Polach 2005, wet rail
+  }
+  if (o.mu > 0.0) {
+    p.mu0 = o.mu;
+  }
+  return p;
+}
+
+/// The mechanics columns of every row of the geometry table.
+std::vector<std::string> mechanics_rows(const contact::RigidContact& c,
+                                        const contact::ContactTable& t, const MechanicsOptions& o,
+                                        double r0_left_mm, double r0_right_mm) {
+  const std::vector<contact::MechanicsRow> rows =
+      contact::mechanics_table(c, t.y_first_mm, t.y_mm.back(), t.y_step_mm, o.materials);
+  const contact::FlangeAngles flange = contact::flange_angles(rows);
+  contact::WheelsetState state = o.state;
+  state.load_left_n = o.load_n;
+  state.load_right_n = o.load_right_n > 0.0 ? o.load_right_n : o.load_n;
+  const rail::PolachParameters<double> polach = friction_parameters(o);
+  const contact::CreepLaw law =
+      o.creep_law == "fastsim" ? contact::CreepLaw::fastsim : contact::CreepLaw::polach;
+  std::vector<std::string> out;
+  out.reserve(rows.size());
+  for (const contact::MechanicsRow& r : rows) {
+    const rail::WheelForces<double> left =
+        contact::evaluate_wheel(r.left, false, state, r0_left_mm, contact::kTrackFrameOrigin_mm,
+                                o.materials, flange.left_rad, polach, law);
+    const rail::WheelForces<double> right =
+        contact::evaluate_wheel(r.right, true, state, r0_right_mm, contact::kTrackFrameOrigin_mm,
+                                o.materials, flange.right_rad, polach, law);
+    out.push_back(contact::mechanics_fields(left, right));
+  }
+  return out;
+}
+
+void add_mechanics_options(CLI::App& cmd, MechanicsOptions& o) {
+  cmd.add_option("--load", o.load_n,
+                 "wheel load Q (N): adds the contact mechanics columns (Hertz, creep forces, Y/Q)")
+      ->check(CLI::PositiveNumber);
+  cmd.add_option("--load-right", o.load_right_n, "right wheel load (N); default --load")
+      ->check(CLI::PositiveNumber);
+  cmd.add_option("--speed", o.state.speed_m_s, "wheelset speed V (m/s)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cmd.add_option("--yaw", o.state.yaw_rad,
+                 "wheelset yaw angle (rad, counter-clockwise from above: toward the left rail)")
+      ->capture_default_str();
+  cmd.add_option("--lateral-velocity", o.state.lateral_velocity_m_s,
+                 "wheelset lateral velocity (m/s, toward the left rail)")
+      ->capture_default_str();
+  cmd.add_option("--yaw-rate", o.state.yaw_rate_rad_s, "wheelset yaw rate (rad/s)")
+      ->capture_default_str();
+  cmd.add_option("--axle-spin", o.state.axle_spin_rad_s,
+                 "axle angular speed (rad/s); default free rolling on the nominal radius, V / r0");
+  cmd.add_option("--friction", o.friction,
+                 "creep law parameters: kalker (Polach with kA = kS = 1, constant mu: Kalker's "
+                 "initial slope), dry or wet (Polach 2005: mu0 0.55 / 0.30, A 0.40, B 0.60 / "
+                 "0.20 s/m, kA 1.00 / 0.30, kS 0.40 / 0.10)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"kalker", "dry", "wet"}));
+  cmd.add_option("--mu", o.mu, "static friction coefficient mu0 (default 0.36 for kalker)")
+      ->check(CLI::PositiveNumber);
+  cmd.add_option("--creep-law", o.creep_law,
+                 "polach (closed form, the node's) or fastsim (Kalker's strip method, 40 x 40)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"polach", "fastsim"}));
+  cmd.add_option("--e-wheel", o.materials.wheel_material.e_mpa, "wheel Young's modulus (MPa)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cmd.add_option("--nu-wheel", o.materials.wheel_material.nu, "wheel Poisson's ratio")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 0.5));
+  cmd.add_option("--e-rail", o.materials.rail_material.e_mpa, "rail Young's modulus (MPa)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cmd.add_option("--nu-rail", o.materials.rail_material.nu, "rail Poisson's ratio")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 0.5));
 }
 
 void add_contact_command(CLI::App& app) {
@@ -45,7 +151,9 @@ void add_contact_command(CLI::App& app) {
   static std::string output;
   static std::string plot;
   static bool rail_positions = false;
+  static MechanicsOptions mechanics;
   contact::add_contact_setup_options(*cmd, setup);
+  add_mechanics_options(*cmd, mechanics);
   cmd->add_flag("--rail-positions", rail_positions,
                 "add columns yr_left_mm,yr_right_mm: contact positions on the rails (track frame)");
   cmd->add_option("--ymax", y_max_mm, "table from -ymax to +ymax (mm)")
@@ -67,11 +175,17 @@ void add_contact_command(CLI::App& app) {
       std::cerr << "tread contact: warning: from |y| = " << *end_y
                 << " mm the contact lies at the end of a profile (the profiles do not cover it)\n";
     }
+    std::string extra_header;
+    std::vector<std::string> extra;
+    if (mechanics.load_n > 0.0) {
+      extra_header = contact::mechanics_header();
+      extra = mechanics_rows(c, t, mechanics, setup.r0_mm, setup.r0_right_mm.value_or(setup.r0_mm));
+    }
     if (output.empty()) {
-      write_table(std::cout, t, rail_positions);
+      write_table(std::cout, t, rail_positions, extra_header, extra);
     } else {
       std::ofstream file(output);
-      write_table(file, t, rail_positions);
+      write_table(file, t, rail_positions, extra_header, extra);
       if (!file) {
         throw std::runtime_error("cannot write " + output);
       }

@@ -167,15 +167,29 @@ WheelContact RigidContact::solve(const ProfileFunction& wheel, double shift_mm,
   }
   out.y_rail_mm = s_c;
   out.at_profile_end = s_c <= lo + 1e-9 || s_c >= hi - 1e-9;
-  out.y_wheel_mm = s_c - shift_mm;
-  out.r_mm = r0_mm + wheel.z_at(out.y_wheel_mm);
-  out.gamma_rad = std::atan(-wheel.slope_at(out.y_wheel_mm, settings_.slope_half_window_mm));
-  const double c = std::cos(out.gamma_rad);
-  out.lateral_relative_curvature_per_mm =
-      -(wheel.curvature_at(out.y_wheel_mm, settings_.curvature_half_window_mm) +
-        rail_.curvature_at(s_c, settings_.curvature_half_window_mm)) *
-      c * c * c;
+  const ContactPoint main = describe(wheel, s_c, shift_mm, r0_mm);
+  out.y_wheel_mm = main.y_wheel_mm;
+  out.r_mm = main.r_mm;
+  out.gamma_rad = main.gamma_rad;
+  out.lateral_relative_curvature_per_mm = main.lateral_relative_curvature_per_mm;
+  if (std::isfinite(out.second_gap_mm)) {
+    out.second = describe(wheel, out.y_rail_second_mm, shift_mm, r0_mm);
+  }
   return out;
+}
+
+ContactPoint RigidContact::describe(const ProfileFunction& wheel, double y_rail_mm,
+                                    double shift_mm, double r0_mm) const {
+  ContactPoint p;
+  p.y_wheel_mm = y_rail_mm - shift_mm;
+  p.r_mm = r0_mm + wheel.z_at(p.y_wheel_mm);
+  p.gamma_rad = std::atan(-wheel.slope_at(p.y_wheel_mm, settings_.slope_half_window_mm));
+  const double c = std::cos(p.gamma_rad);
+  p.lateral_relative_curvature_per_mm =
+      -(wheel.curvature_at(p.y_wheel_mm, settings_.curvature_half_window_mm) +
+        rail_.curvature_at(y_rail_mm, settings_.curvature_half_window_mm)) *
+      c * c * c;
+  return p;
 }
 
 ContactState RigidContact::at(double y_mm) const {

@@ -36,6 +36,14 @@ struct SearchSettings {
   double curvature_half_window_mm = 0.5;        ///< least-squares window for profile curvatures
 };
 
+/// Where a contact point lies on the wheel and what the wheel and rail look like there.
+struct ContactPoint {
+  double y_wheel_mm = 0.0;  ///< position on the wheel profile (wheel frame)
+  double r_mm = 0.0;        ///< rolling radius r0 + z_wheel
+  double gamma_rad = 0.0;   ///< contact angle
+  double lateral_relative_curvature_per_mm = 0.0;  ///< as WheelContact's
+};
+
 struct WheelContact {
   double y_wheel_mm = 0.0;  ///< contact position on the wheel profile (wheel frame)
   double y_rail_mm = 0.0;   ///< contact position on the rail profile (track frame of its side)
@@ -50,6 +58,7 @@ struct WheelContact {
   /// away; near 0 means two-point contact; +inf when there is none.
   double second_gap_mm = 0.0;
   double y_rail_second_mm = 0.0;  ///< where that second candidate is (track frame)
+  ContactPoint second;            ///< that candidate's geometry (when second_gap_mm is finite)
   /// The contact lies at the end of the wheel's or the rail's sampled range: the profiles do not
   /// cover this displacement (e.g. flange contact below the end of a rail head table).
   bool at_profile_end = false;
@@ -101,6 +110,8 @@ class RigidContact {
 
  private:
   WheelContact solve(const ProfileFunction& wheel, double shift_mm, double r0_mm) const;
+  ContactPoint describe(const ProfileFunction& wheel, double y_rail_mm, double shift_mm,
+                        double r0_mm) const;
 
   ProfileFunction wheel_left_;
   ProfileFunction wheel_right_;
