@@ -178,8 +178,8 @@ WheelContact RigidContact::solve(const ProfileFunction& wheel, double shift_mm,
   return out;
 }
 
-ContactPoint RigidContact::describe(const ProfileFunction& wheel, double y_rail_mm,
-                                    double shift_mm, double r0_mm) const {
+ContactPoint RigidContact::describe(const ProfileFunction& wheel, double y_rail_mm, double shift_mm,
+                                    double r0_mm) const {
   ContactPoint p;
   p.y_wheel_mm = y_rail_mm - shift_mm;
   p.r_mm = r0_mm + wheel.z_at(p.y_wheel_mm);

@@ -38,9 +38,9 @@ struct SearchSettings {
 
 /// Where a contact point lies on the wheel and what the wheel and rail look like there.
 struct ContactPoint {
-  double y_wheel_mm = 0.0;  ///< position on the wheel profile (wheel frame)
-  double r_mm = 0.0;        ///< rolling radius r0 + z_wheel
-  double gamma_rad = 0.0;   ///< contact angle
+  double y_wheel_mm = 0.0;                         ///< position on the wheel profile (wheel frame)
+  double r_mm = 0.0;                               ///< rolling radius r0 + z_wheel
+  double gamma_rad = 0.0;                          ///< contact angle
   double lateral_relative_curvature_per_mm = 0.0;  ///< as WheelContact's
 };
 
