@@ -85,9 +85,37 @@ const char* role_comment(proto::Role role) {
     case Role::node_rejected:
       return "rejected frames since start (saturating)";
     case Role::node_stale_mask:
-      return "bit i: wheel i stale, bit 4+j: wheelset j stale";
+      return "bit i: wheel i stale, bit 4+j: wheelset j stale, bit 6+j: its forces stale";
     case Role::node_clamp_mask:
-      return "bit i: wheel i clamped, bit 4+j: wheelset j clamped";
+      return "bit i: wheel i clamped, bit 4+j: wheelset j clamped, bit 6+j: its forces clamped";
+    case Role::ws_speed:
+      return "wheelset forward speed";
+    case Role::ws_lateral_velocity:
+      return "wheelset lateral velocity, + toward the left rail";
+    case Role::ws_yaw_rate:
+      return "wheelset yaw rate, counter-clockwise seen from above";
+    case Role::ws_load_left:
+      return "vertical wheel load, left wheel";
+    case Role::ws_load_right:
+      return "vertical wheel load, right wheel";
+    case Role::rw_fx:
+      return "longitudinal creep force on the wheel (sum of its contact points)";
+    case Role::rw_y:
+      return "lateral force of the rail on the wheel, + toward the track centre";
+    case Role::rw_q:
+      return "vertical force of the rail on the wheel";
+    case Role::rw_mz:
+      return "spin moment about the contact normal (wheel frame, y toward its field side)";
+    case Role::rw_n1:
+      return "normal force at the main contact point";
+    case Role::rw_n2:
+      return "normal force at the second contact point (two-point contact), else 0";
+    case Role::rw_y_over_q:
+      return "derailment quotient Y/Q (0 when the wheel has lifted)";
+    case Role::rw_nadal_margin:
+      return "Nadal's limit minus Y/Q (> 0: below the limit)";
+    case Role::rw_status:
+      return "bit0 stale, bit1 input clamped (outside table), bit2 disabled, bit3 saturated";
   }
   return "";
 }

@@ -41,6 +41,27 @@ struct BasicContactResult {
 using ContactResult = BasicContactResult<float>;
 using ContactResultFixed = BasicContactResult<fixed::Fixed64>;
 
+/// One rail wheel's contact forces (the fields of proto::BasicRailWheelOutput but the status).
+template <typename S>
+struct BasicRailWheelForces {
+  S fx_n{};
+  S y_n{};
+  S q_n{};
+  S mz_nm{};
+  S n1_n{};
+  S n2_n{};
+  S y_over_q{};
+  S nadal_margin{};
+  bool lifted{false};  ///< no load on the wheel: no Y/Q (reported 0, margin = the limit)
+};
+
+template <typename S>
+struct BasicRailForceResult {
+  BasicRailWheelForces<S> wheel[2];  ///< left, right
+  bool clamped{false};  ///< the displacement lay outside the table and was clamped to its range
+};
+using RailForceResult = BasicRailForceResult<float>;
+
 /// The scalar a channel computes in: its `Scalar` member type, float when it has none.
 template <typename T>
 struct channel_scalar {
@@ -86,6 +107,24 @@ concept ContactChannel = requires(C contact,
   { contact.evaluate(input) } -> std::same_as<BasicContactResult<ChannelScalar<C>>>;
 };
 
+/// A wheel-rail force channel: the wheelset's contact forces from its displacement, motion and
+/// wheel loads.
+template <typename C>
+concept RailForceChannel = requires(C forces,
+                                    const proto::BasicWheelsetInput<ChannelScalar<C>>& input) {
+  { forces.evaluate(input) } -> std::same_as<BasicRailForceResult<ChannelScalar<C>>>;
+};
+
+/// No wheel-rail forces (in the scalar S of the node's other channels).
+template <typename S>
+struct NoRailForce {
+  using Scalar = S;
+  BasicRailForceResult<S> evaluate(const proto::BasicWheelsetInput<S>& /*input*/) const noexcept {
+    BasicRailForceResult<S> none;
+    return none;
+  }
+};
+
 /// A channel type for builds without wheelsets (or without road wheels).
 struct NoContact {
   ContactResult evaluate(const proto::WheelsetInput& /*input*/) const noexcept { return {}; }
@@ -96,6 +135,7 @@ struct NoTyre {
   }
   void reset() noexcept {}
 };
-static_assert(TyreChannel<NoTyre> && ContactChannel<NoContact>);
+static_assert(TyreChannel<NoTyre> && ContactChannel<NoContact> &&
+              RailForceChannel<NoRailForce<float>>);
 
 }  // namespace tread::node

@@ -24,11 +24,18 @@
 
 namespace tread::node {
 
-/// Upper bound of output frames per cycle (classic: 4×2 wheel + 2×2 wheelset + status).
-inline constexpr std::size_t kMaxTxFrames = 16;
+/// Upper bound of output frames per cycle (classic: 4×2 wheel + 2×2 wheelset + 4×3 rail wheel +
+/// status).
+inline constexpr std::size_t kMaxTxFrames = 32;
 
-template <TyreChannel Tyre, ContactChannel Contact>
-requires std::same_as<ChannelScalar<Tyre>, ChannelScalar<Contact>>
+/// Channel bits (wheel i: bit i, wheelset geometry j: bit 4+j, wheelset forces j: bit 6+j).
+inline constexpr unsigned kWheelsetBit = 4U;
+inline constexpr unsigned kForcesBit = 6U;
+
+template <TyreChannel Tyre, ContactChannel Contact,
+          RailForceChannel Forces = NoRailForce<ChannelScalar<Tyre>>>
+requires std::same_as<ChannelScalar<Tyre>, ChannelScalar<Contact>> &&
+    std::same_as<ChannelScalar<Tyre>, ChannelScalar<Forces>>
 class Node {
  public:
   /// The physical values' scalar: float, or fixed::Fixed64 (channels on the integer-only path).
@@ -36,14 +43,17 @@ class Node {
   using RigData = proto::BasicRigData<Scalar>;
   using NodeData = proto::BasicNodeData<Scalar>;
 
-  /// `tyres` must hold config.wheels channels and `contacts` config.wheelsets; both outlive the
-  /// node.
-  Node(const NodeConfig& config, std::span<Tyre> tyres, std::span<Contact> contacts) noexcept
-      : config_(config), tyres_(tyres), contacts_(contacts) {
+  /// `tyres` must hold config.wheels channels, `contacts` config.wheelsets and `forces`
+  /// config.wheelset_forces; all outlive the node.
+  Node(const NodeConfig& config, std::span<Tyre> tyres, std::span<Contact> contacts,
+       std::span<Forces> forces = {}) noexcept
+      : config_(config), tyres_(tyres), contacts_(contacts), forces_(forces) {
     config_.wheels = std::min<std::uint8_t>(
         {config_.wheels, proto::kMaxWheels, static_cast<std::uint8_t>(tyres.size())});
     config_.wheelsets = std::min<std::uint8_t>(
         {config_.wheelsets, proto::kMaxWheelsets, static_cast<std::uint8_t>(contacts.size())});
+    config_.wheelset_forces = std::min<std::uint8_t>(
+        {config_.wheelset_forces, config_.wheelsets, static_cast<std::uint8_t>(forces.size())});
     enabled_ = config_.start_enabled;
     const auto all = proto::messages(config_.layout);
     for (std::size_t m = 0; m < all.size(); ++m) {
@@ -171,7 +181,7 @@ class Node {
     }
     for (std::size_t j = 0; j < config_.wheelsets; ++j) {
       WheelsetOutput& out = outputs_.wheelsets[j];
-      const auto bit = static_cast<std::uint8_t>(1U << (4U + j));
+      const auto bit = static_cast<std::uint8_t>(1U << (kWheelsetBit + j));
       if (!enabled_) {
         out = WheelsetOutput{};
         out.status = proto::kStatusDisabled;
@@ -195,6 +205,39 @@ class Node {
         const std::uint8_t status = out.status;
         out = WheelsetOutput{};
         out.status = static_cast<std::uint8_t>(status | proto::kStatusOutOfRange);
+      }
+    }
+    for (std::size_t j = 0; j < config_.wheelset_forces; ++j) {
+      const auto bit = static_cast<std::uint8_t>(1U << (kForcesBit + j));
+      RailWheelOutput* out = &outputs_.rail_wheels[2U * j];
+      if (!enabled_ || !fresh(bit, now_ns)) {
+        const std::uint8_t status = enabled_ ? proto::kStatusStale : proto::kStatusDisabled;
+        out[0] = RailWheelOutput{};
+        out[1] = RailWheelOutput{};
+        out[0].status = status;
+        out[1].status = status;
+        if (enabled_) {
+          stale_mask = static_cast<std::uint8_t>(stale_mask | bit);
+        }
+        continue;
+      }
+      const BasicRailForceResult<Scalar> r = forces_[j].evaluate(latest_.wheelsets[j]);
+      for (std::size_t side = 0; side < 2U; ++side) {
+        const BasicRailWheelForces<Scalar>& w = r.wheel[side];
+        out[side] = RailWheelOutput{w.fx_n, w.y_n,      w.q_n,          w.mz_nm, w.n1_n,
+                                    w.n2_n, w.y_over_q, w.nadal_margin, 0};
+        if (r.clamped) {
+          out[side].status = proto::kStatusClamped;
+        }
+        if (!all_finite(out[side])) {  // zeros, flagged as an output that did not fit
+          ++counters_.non_finite_outputs;
+          const std::uint8_t status = out[side].status;
+          out[side] = RailWheelOutput{};
+          out[side].status = static_cast<std::uint8_t>(status | proto::kStatusOutOfRange);
+        }
+      }
+      if (r.clamped) {
+        clamp_mask = static_cast<std::uint8_t>(clamp_mask | bit);
       }
     }
     counters_.stale_events += static_cast<std::uint64_t>(std::popcount(stale_mask));
@@ -241,6 +284,7 @@ class Node {
   static constexpr std::int64_t kNever = std::numeric_limits<std::int64_t>::min();
   using WheelOutput = proto::BasicWheelOutput<Scalar>;
   using WheelsetOutput = proto::BasicWheelsetOutput<Scalar>;
+  using RailWheelOutput = proto::BasicRailWheelOutput<Scalar>;
 
   /// Integer nanoseconds to seconds: in float without double arithmetic (soft-float on
   /// Cortex-M4F); in Q31.32 as ns·2^−32 × (2^32·10^−9), integer only.
@@ -261,31 +305,54 @@ class Node {
            r == Role::fy || r == Role::mz || r == Role::mx || r == Role::my || r == Role::rl ||
            r == Role::wheel_status;
   }
-  static bool is_wheelset_role(proto::Role r) noexcept {
+  /// The wheelset's geometry inputs feed both its channels; its outputs the geometry channel.
+  static bool is_wheelset_input_role(proto::Role r) noexcept {
     using proto::Role;
-    return r == Role::ws_lateral || r == Role::ws_yaw || r == Role::ws_yaw_valid ||
-           r == Role::r_left || r == Role::r_right || r == Role::delta_r || r == Role::gamma_left ||
+    return r == Role::ws_lateral || r == Role::ws_yaw || r == Role::ws_yaw_valid;
+  }
+  static bool is_wheelset_output_role(proto::Role r) noexcept {
+    using proto::Role;
+    return r == Role::r_left || r == Role::r_right || r == Role::delta_r || r == Role::gamma_left ||
            r == Role::gamma_right || r == Role::ws_status;
   }
-  /// Bit i: the message carries wheel i's data; bit 4+j: wheelset j's.
+  static bool is_forces_input_role(proto::Role r) noexcept {
+    using proto::Role;
+    return r == Role::ws_speed || r == Role::ws_lateral_velocity || r == Role::ws_yaw_rate ||
+           r == Role::ws_load_left || r == Role::ws_load_right;
+  }
+  static bool is_rail_wheel_role(proto::Role r) noexcept {
+    using proto::Role;
+    return r == Role::rw_fx || r == Role::rw_y || r == Role::rw_q || r == Role::rw_mz ||
+           r == Role::rw_n1 || r == Role::rw_n2 || r == Role::rw_y_over_q ||
+           r == Role::rw_nadal_margin || r == Role::rw_status;
+  }
+  /// The channel bits a message carries data of (see kWheelsetBit, kForcesBit).
   static std::uint8_t channel_mask(const proto::MessageSpec& m) noexcept {
-    std::uint8_t mask = 0;
+    unsigned mask = 0;
     for (const proto::SignalSpec& s : m.signals) {
       const std::int8_t i = m.instance_of(s);
       if (i < 0) {
         continue;
       }
+      const auto n = static_cast<unsigned>(i);
       if (is_wheel_role(s.role)) {
-        mask = static_cast<std::uint8_t>(mask | (1U << static_cast<unsigned>(i)));
-      } else if (is_wheelset_role(s.role)) {
-        mask = static_cast<std::uint8_t>(mask | (1U << (4U + static_cast<unsigned>(i))));
+        mask |= 1U << n;
+      } else if (is_wheelset_input_role(s.role)) {
+        mask |= (1U << (kWheelsetBit + n)) | (1U << (kForcesBit + n));
+      } else if (is_wheelset_output_role(s.role)) {
+        mask |= 1U << (kWheelsetBit + n);
+      } else if (is_forces_input_role(s.role)) {
+        mask |= 1U << (kForcesBit + n);
+      } else if (is_rail_wheel_role(s.role)) {
+        mask |= 1U << (kForcesBit + n / 2U);
       }
     }
-    return mask;
+    return static_cast<std::uint8_t>(mask & 0xFFU);
   }
   [[nodiscard]] std::uint8_t configured_mask() const noexcept {
     return static_cast<std::uint8_t>(((1U << config_.wheels) - 1U) |
-                                     (((1U << config_.wheelsets) - 1U) << 4U));
+                                     (((1U << config_.wheelsets) - 1U) << kWheelsetBit) |
+                                     (((1U << config_.wheelset_forces) - 1U) << kForcesBit));
   }
   /// Every input message feeding the channel `bit` arrived valid within the timeout.
   [[nodiscard]] bool fresh(std::uint8_t bit, std::int64_t now_ns) const noexcept {
@@ -317,6 +384,10 @@ class Node {
     return finite(o.r_left_mm) && finite(o.r_right_mm) && finite(o.delta_r_mm) &&
            finite(o.gamma_left_rad) && finite(o.gamma_right_rad);
   }
+  static bool all_finite(const RailWheelOutput& o) noexcept {
+    return finite(o.fx_n) && finite(o.y_n) && finite(o.q_n) && finite(o.mz_nm) && finite(o.n1_n) &&
+           finite(o.n2_n) && finite(o.y_over_q) && finite(o.nadal_margin);
+  }
   static std::uint8_t saturate8(std::uint64_t v) noexcept {
     return static_cast<std::uint8_t>(v > 255U ? 255U : v);
   }
@@ -324,7 +395,8 @@ class Node {
   void mark_saturated(const proto::MessageSpec& m, proto::CanFrame& frame) const noexcept {
     bool changed = false;
     for (const proto::SignalSpec& s : m.signals) {
-      if (s.role == proto::Role::wheel_status || s.role == proto::Role::ws_status) {
+      if (s.role == proto::Role::wheel_status || s.role == proto::Role::ws_status ||
+          s.role == proto::Role::rw_status) {
         const std::span<std::uint8_t> bytes(frame.data.data(), frame.len);
         const auto raw = proto::decode_raw_signal(s, bytes);
         static_cast<void>(proto::encode_raw_signal(s, raw | proto::kStatusOutOfRange, bytes));
@@ -339,6 +411,7 @@ class Node {
   NodeConfig config_;
   std::span<Tyre> tyres_;
   std::span<Contact> contacts_;
+  std::span<Forces> forces_;
   bool enabled_{true};
   RigData latest_{};
   NodeData outputs_{};
@@ -348,7 +421,7 @@ class Node {
   std::array<std::uint8_t, proto::kMaxMessages> feeds_{};
   std::array<std::uint8_t, proto::kMaxMessages> tx_counters_{};
   std::array<std::uint8_t, kMaxTxFrames> tx_list_{};
-  /// Per channel bit (wheel i: bit i, wheelset j: bit 4+j): the input messages that feed it.
+  /// Per channel bit (kWheelsetBit, kForcesBit): the input messages that feed it.
   struct ChannelInputs {
     std::array<std::uint8_t, 4> message{};
     std::size_t count{0};

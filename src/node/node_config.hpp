@@ -19,6 +19,9 @@ struct NodeConfig {
   Schedule schedule{Schedule::periodic};
   bool start_enabled{true};       ///< compute from the start (else wait for Command.Enable = 1)
   std::uint8_t e2e_max_delta{3};  ///< largest accepted counter step
+  /// Of those, how many also serve the wheel-rail forces (the first ones; 0..wheelsets). They
+  /// need WheelsetMotion and WheelsetLoad beside WheelsetIn, and send the RailWheel messages.
+  std::uint8_t wheelset_forces{0};
 };
 
 }  // namespace tread::node

@@ -17,21 +17,27 @@ std::size_t index_of(const MessageSpec& m, const SignalSpec& s, std::size_t coun
   return idx < count ? idx : count - 1U;
 }
 
-// Where each role's physical (float) value lives in the data model: a member of a wheel or of a
-// wheelset (or neither: an integer-valued role). Tables indexed by role, built at compile time, so
-// the per-signal lookup is a load instead of a switch.
-constexpr std::size_t kRoleCount = static_cast<std::size_t>(Role::node_clamp_mask) + 1U;
-
-template <typename S, typename Wheel, typename Wheelset>
+// Where each role's physical (float) value lives in the data model: a member of a wheel, of a
+// wheelset or of a rail wheel (or none: an integer-valued role). Tables indexed by role, built at
+// compile time, so the per-signal lookup is a load instead of a switch.
+template <typename S, typename Wheel, typename Wheelset, typename RailWheel>
 struct FloatMember {
   S Wheel::*wheel = nullptr;
   S Wheelset::*wheelset = nullptr;
+  S RailWheel::*rail_wheel = nullptr;
+};
+
+/// The rig's data has no rail-wheel outputs: a placeholder type for the unused member.
+template <typename S>
+struct NoRailWheel {
+  S unused{};
 };
 
 template <typename S>
-using RigMember = FloatMember<S, BasicWheelInput<S>, BasicWheelsetInput<S>>;
+using RigMember = FloatMember<S, BasicWheelInput<S>, BasicWheelsetInput<S>, NoRailWheel<S>>;
 template <typename S>
-using NodeMember = FloatMember<S, BasicWheelOutput<S>, BasicWheelsetOutput<S>>;
+using NodeMember =
+    FloatMember<S, BasicWheelOutput<S>, BasicWheelsetOutput<S>, BasicRailWheelOutput<S>>;
 
 template <typename S>
 constexpr RigMember<S> rig_member(Role role) noexcept {
@@ -54,6 +60,16 @@ constexpr RigMember<S> rig_member(Role role) noexcept {
       return {nullptr, &WheelsetInput::lateral_mm};
     case Role::ws_yaw:
       return {nullptr, &WheelsetInput::yaw_rad};
+    case Role::ws_speed:
+      return {nullptr, &WheelsetInput::speed_mps};
+    case Role::ws_lateral_velocity:
+      return {nullptr, &WheelsetInput::lateral_velocity_mps};
+    case Role::ws_yaw_rate:
+      return {nullptr, &WheelsetInput::yaw_rate_radps};
+    case Role::ws_load_left:
+      return {nullptr, &WheelsetInput::load_left_n};
+    case Role::ws_load_right:
+      return {nullptr, &WheelsetInput::load_right_n};
     default:
       return {};
   }
@@ -63,6 +79,7 @@ template <typename S>
 constexpr NodeMember<S> node_member(Role role) noexcept {
   using WheelOutput = BasicWheelOutput<S>;
   using WheelsetOutput = BasicWheelsetOutput<S>;
+  using RailWheelOutput = BasicRailWheelOutput<S>;
   switch (role) {
     case Role::fx:
       return {&WheelOutput::fx_n, nullptr};
@@ -86,6 +103,22 @@ constexpr NodeMember<S> node_member(Role role) noexcept {
       return {nullptr, &WheelsetOutput::gamma_left_rad};
     case Role::gamma_right:
       return {nullptr, &WheelsetOutput::gamma_right_rad};
+    case Role::rw_fx:
+      return {nullptr, nullptr, &RailWheelOutput::fx_n};
+    case Role::rw_y:
+      return {nullptr, nullptr, &RailWheelOutput::y_n};
+    case Role::rw_q:
+      return {nullptr, nullptr, &RailWheelOutput::q_n};
+    case Role::rw_mz:
+      return {nullptr, nullptr, &RailWheelOutput::mz_nm};
+    case Role::rw_n1:
+      return {nullptr, nullptr, &RailWheelOutput::n1_n};
+    case Role::rw_n2:
+      return {nullptr, nullptr, &RailWheelOutput::n2_n};
+    case Role::rw_y_over_q:
+      return {nullptr, nullptr, &RailWheelOutput::y_over_q};
+    case Role::rw_nadal_margin:
+      return {nullptr, nullptr, &RailWheelOutput::nadal_margin};
     default:
       return {};
   }
@@ -135,6 +168,11 @@ auto float_field(D& d, const MessageSpec& m, const SignalSpec& s) noexcept
   if (member.wheelset != nullptr) {
     return &(d.wheelsets[index_of(m, s, kMaxWheelsets)].*member.wheelset);
   }
+  if constexpr (kIsNodeData<D>) {
+    if (member.rail_wheel != nullptr) {
+      return &(d.rail_wheels[index_of(m, s, kMaxRailWheels)].*member.rail_wheel);
+    }
+  }
   return nullptr;
 }
 
@@ -182,6 +220,9 @@ void int_field(D& d, const MessageSpec& m, const SignalSpec& s, Visit&& visit) n
       break;
     case Role::ws_status:
       visit(ws.status);
+      break;
+    case Role::rw_status:
+      visit(d.rail_wheels[index_of(m, s, kMaxRailWheels)].status);
       break;
     case Role::node_state:
       visit(d.status.state);

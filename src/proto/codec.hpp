@@ -34,6 +34,13 @@ struct BasicWheelsetInput {
   S lateral_mm{};
   S yaw_rad{};
   bool yaw_valid{false};
+  // For the wheel-rail forces (WheelsetMotion, WheelsetLoad): track axes, y toward the left rail,
+  // yaw counter-clockwise seen from above.
+  S speed_mps{};
+  S lateral_velocity_mps{};
+  S yaw_rate_radps{};
+  S load_left_n{};
+  S load_right_n{};
 };
 using WheelsetInput = BasicWheelsetInput<float>;
 using WheelsetInputFixed = BasicWheelsetInput<fixed::Fixed64>;
@@ -91,6 +98,28 @@ struct BasicWheelsetOutput {
 using WheelsetOutput = BasicWheelsetOutput<float>;
 using WheelsetOutputFixed = BasicWheelsetOutput<fixed::Fixed64>;
 
+/// A rail wheel's contact forces (RailWheelForce, RailWheelContact, RailWheelDerail): wheel
+/// 2 j + side of wheelset j. Y is the rail's lateral force on the wheel toward the track centre,
+/// Q the vertical; Fx along the track; Mz the spin moment about the contact normal (the wheel's own
+/// frame, lateral axis toward its field side); N1, N2 the normal forces of the main and the second
+/// contact point; Y/Q and the margin to Nadal's limit.
+template <typename S>
+struct BasicRailWheelOutput {
+  S fx_n{};
+  S y_n{};
+  S q_n{};
+  S mz_nm{};
+  S n1_n{};
+  S n2_n{};
+  S y_over_q{};
+  S nadal_margin{};
+  std::uint8_t status{0};
+};
+using RailWheelOutput = BasicRailWheelOutput<float>;
+using RailWheelOutputFixed = BasicRailWheelOutput<fixed::Fixed64>;
+
+inline constexpr std::uint8_t kMaxRailWheels = 2 * kMaxWheelsets;
+
 /// NodeStatus.State bits.
 inline constexpr std::uint8_t kNodeEnabled = 1U << 0U;
 inline constexpr std::uint8_t kNodeSyncMode = 1U << 1U;
@@ -102,7 +131,7 @@ struct NodeStatusData {
   std::uint16_t cycle{0};
   std::uint8_t overruns{0};    ///< saturating at 255
   std::uint8_t rejected{0};    ///< saturating at 255
-  std::uint8_t stale_mask{0};  ///< bit i: wheel i (0..3), bit 4+j: wheelset j
+  std::uint8_t stale_mask{0};  ///< bit i: wheel i (0..3), 4+j: wheelset j, 6+j: its forces
   std::uint8_t clamp_mask{0};
 };
 
@@ -110,6 +139,7 @@ template <typename S>
 struct BasicNodeData {
   std::array<BasicWheelOutput<S>, kMaxWheels> wheels{};
   std::array<BasicWheelsetOutput<S>, kMaxWheelsets> wheelsets{};
+  std::array<BasicRailWheelOutput<S>, kMaxRailWheels> rail_wheels{};
   NodeStatusData status{};
 };
 using NodeData = BasicNodeData<float>;

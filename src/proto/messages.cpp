@@ -93,6 +93,52 @@ constexpr SignalSpec ws_status(std::int8_t i, std::uint16_t b) {
   return {R::ws_status, "Status", i, b, 4, kUnsigned, 1.0, 0.0, ""};
 }
 
+// Wheel-rail forces. In: speed 0.01 m/s (0..655), lateral velocity 1e-4 m/s (±3.28), yaw rate
+// 1e-4 rad/s (±3.28), wheel loads 4 N (0..262 kN). Out, per rail wheel: Fx, Y, Q 4 N (±131 kN),
+// spin moment 0.05 N m (±1638), normal forces 4 N (0..262 kN), Y/Q and Nadal margin 1e-4 (±3.28).
+constexpr SignalSpec ws_speed(std::int8_t i, std::uint16_t b) {
+  return {R::ws_speed, "Speed", i, b, 16, kUnsigned, 0.01, 0.0, "m/s"};
+}
+constexpr SignalSpec ws_lateral_velocity(std::int8_t i, std::uint16_t b) {
+  return {R::ws_lateral_velocity, "LateralVelocity", i, b, 16, kSigned, 1e-4, 0.0, "m/s"};
+}
+constexpr SignalSpec ws_yaw_rate(std::int8_t i, std::uint16_t b) {
+  return {R::ws_yaw_rate, "YawRate", i, b, 16, kSigned, 1e-4, 0.0, "rad/s"};
+}
+constexpr SignalSpec ws_load_left(std::int8_t i, std::uint16_t b) {
+  return {R::ws_load_left, "LoadLeft", i, b, 16, kUnsigned, 4.0, 0.0, "N"};
+}
+constexpr SignalSpec ws_load_right(std::int8_t i, std::uint16_t b) {
+  return {R::ws_load_right, "LoadRight", i, b, 16, kUnsigned, 4.0, 0.0, "N"};
+}
+constexpr SignalSpec rw_fx(std::int8_t i, std::uint16_t b) {
+  return {R::rw_fx, "Fx", i, b, 16, kSigned, 4.0, 0.0, "N"};
+}
+constexpr SignalSpec rw_y(std::int8_t i, std::uint16_t b) {
+  return {R::rw_y, "Y", i, b, 16, kSigned, 4.0, 0.0, "N"};
+}
+constexpr SignalSpec rw_q(std::int8_t i, std::uint16_t b) {
+  return {R::rw_q, "Q", i, b, 16, kSigned, 4.0, 0.0, "N"};
+}
+constexpr SignalSpec rw_mz(std::int8_t i, std::uint16_t b) {
+  return {R::rw_mz, "SpinMoment", i, b, 16, kSigned, 0.05, 0.0, "N.m"};
+}
+constexpr SignalSpec rw_n1(std::int8_t i, std::uint16_t b) {
+  return {R::rw_n1, "N1", i, b, 16, kUnsigned, 4.0, 0.0, "N"};
+}
+constexpr SignalSpec rw_n2(std::int8_t i, std::uint16_t b) {
+  return {R::rw_n2, "N2", i, b, 16, kUnsigned, 4.0, 0.0, "N"};
+}
+constexpr SignalSpec rw_y_over_q(std::int8_t i, std::uint16_t b) {
+  return {R::rw_y_over_q, "YOverQ", i, b, 16, kSigned, 1e-4, 0.0, "1"};
+}
+constexpr SignalSpec rw_nadal_margin(std::int8_t i, std::uint16_t b) {
+  return {R::rw_nadal_margin, "NadalMargin", i, b, 16, kSigned, 1e-4, 0.0, "1"};
+}
+constexpr SignalSpec rw_status(std::int8_t i, std::uint16_t b) {
+  return {R::rw_status, "Status", i, b, 4, kUnsigned, 1.0, 0.0, ""};
+}
+
 // ---- messages shared by both layouts
 // --------------------------------------------------------------
 constexpr std::array kCommand{
@@ -128,6 +174,16 @@ constexpr std::array kWheelsetRadius{crc(), counter(), ws_status(-1, 12), r_left
 constexpr std::array kWheelsetAngle{crc(), counter(), delta_r(-1, 16), gamma_left(-1, 32),
                                     gamma_right(-1, 48)};
 
+constexpr std::array kWheelsetMotion{crc(), counter(), ws_speed(-1, 16),
+                                     ws_lateral_velocity(-1, 32), ws_yaw_rate(-1, 48)};
+constexpr std::array kWheelsetLoad{crc(), counter(), ws_load_left(-1, 16), ws_load_right(-1, 32)};
+constexpr std::array kRailWheelForce{crc(),         counter(),    rw_status(-1, 12),
+                                     rw_fx(-1, 16), rw_y(-1, 32), rw_q(-1, 48)};
+constexpr std::array kRailWheelContact{crc(), counter(), rw_n1(-1, 16), rw_n2(-1, 32),
+                                       rw_mz(-1, 48)};
+constexpr std::array kRailWheelDerail{crc(), counter(), rw_y_over_q(-1, 16),
+                                      rw_nadal_margin(-1, 32)};
+
 constexpr MessageSpec msg(const char* name, std::int8_t instance, std::uint32_t id, Direction dir,
                           std::span<const SignalSpec> signals, std::uint8_t len = 8,
                           bool fd = false) {
@@ -162,6 +218,22 @@ constexpr std::array kClassic{
     msg("WheelsetRadius", 1, 0x1A1, kOut, kWheelsetRadius),
     msg("WheelsetAngle", 0, 0x1B0, kOut, kWheelsetAngle),
     msg("WheelsetAngle", 1, 0x1B1, kOut, kWheelsetAngle),
+    msg("WheelsetMotion", 0, 0x130, kIn, kWheelsetMotion),
+    msg("WheelsetMotion", 1, 0x131, kIn, kWheelsetMotion),
+    msg("WheelsetLoad", 0, 0x140, kIn, kWheelsetLoad),
+    msg("WheelsetLoad", 1, 0x141, kIn, kWheelsetLoad),
+    msg("RailWheelForce", 0, 0x1E0, kOut, kRailWheelForce),
+    msg("RailWheelForce", 1, 0x1E1, kOut, kRailWheelForce),
+    msg("RailWheelForce", 2, 0x1E2, kOut, kRailWheelForce),
+    msg("RailWheelForce", 3, 0x1E3, kOut, kRailWheelForce),
+    msg("RailWheelContact", 0, 0x1F0, kOut, kRailWheelContact),
+    msg("RailWheelContact", 1, 0x1F1, kOut, kRailWheelContact),
+    msg("RailWheelContact", 2, 0x1F2, kOut, kRailWheelContact),
+    msg("RailWheelContact", 3, 0x1F3, kOut, kRailWheelContact),
+    msg("RailWheelDerail", 0, 0x150, kOut, kRailWheelDerail),
+    msg("RailWheelDerail", 1, 0x151, kOut, kRailWheelDerail),
+    msg("RailWheelDerail", 2, 0x152, kOut, kRailWheelDerail),
+    msg("RailWheelDerail", 3, 0x153, kOut, kRailWheelDerail),
 };
 
 // ---- CAN FD layout: one input frame, two output frames
@@ -238,9 +310,53 @@ constexpr std::array<SignalSpec, kWheelsetOutCount> make_wheelset_out() {
   return s;
 }
 
+// Wheel-rail forces on FD: one input frame for both wheelsets' motion and loads, one output frame
+// per wheelset for its two rail wheels (signals numbered by rail wheel, 2 j + side).
+constexpr std::size_t kWheelsetMotionFdCount = 2 + 5 * kMaxWheelsets;
+constexpr std::array<SignalSpec, kWheelsetMotionFdCount> make_wheelset_motion_fd() {
+  std::array<SignalSpec, kWheelsetMotionFdCount> s{};
+  std::size_t n = 0;
+  s[n++] = crc();
+  s[n++] = counter();
+  for (std::int8_t j = 0; j < static_cast<std::int8_t>(kMaxWheelsets); ++j) {
+    const auto b = static_cast<std::uint16_t>(16 + 80 * j);
+    s[n++] = ws_speed(j, b);
+    s[n++] = ws_lateral_velocity(j, static_cast<std::uint16_t>(b + 16));
+    s[n++] = ws_yaw_rate(j, static_cast<std::uint16_t>(b + 32));
+    s[n++] = ws_load_left(j, static_cast<std::uint16_t>(b + 48));
+    s[n++] = ws_load_right(j, static_cast<std::uint16_t>(b + 64));
+  }
+  return s;
+}
+
+constexpr std::size_t kRailWheelsFdCount = 2 + 2 * 9;
+constexpr std::array<SignalSpec, kRailWheelsFdCount> make_rail_wheels_fd(std::int8_t wheelset) {
+  std::array<SignalSpec, kRailWheelsFdCount> s{};
+  std::size_t n = 0;
+  s[n++] = crc();
+  s[n++] = counter();
+  for (std::int8_t side = 0; side < 2; ++side) {
+    const auto w = static_cast<std::int8_t>(2 * wheelset + side);
+    s[n++] = rw_status(w, static_cast<std::uint16_t>(16 + 4 * side));
+    const auto b = static_cast<std::uint16_t>(32 + 128 * side);
+    s[n++] = rw_fx(w, b);
+    s[n++] = rw_y(w, static_cast<std::uint16_t>(b + 16));
+    s[n++] = rw_q(w, static_cast<std::uint16_t>(b + 32));
+    s[n++] = rw_mz(w, static_cast<std::uint16_t>(b + 48));
+    s[n++] = rw_n1(w, static_cast<std::uint16_t>(b + 64));
+    s[n++] = rw_n2(w, static_cast<std::uint16_t>(b + 80));
+    s[n++] = rw_y_over_q(w, static_cast<std::uint16_t>(b + 96));
+    s[n++] = rw_nadal_margin(w, static_cast<std::uint16_t>(b + 112));
+  }
+  return s;
+}
+
 constexpr auto kRigInputsFd = make_rig_inputs();
 constexpr auto kWheelOutFd = make_wheel_out();
 constexpr auto kWheelsetOutFd = make_wheelset_out();
+constexpr auto kWheelsetMotionFd = make_wheelset_motion_fd();
+constexpr auto kRailWheelsFd0 = make_rail_wheels_fd(0);
+constexpr auto kRailWheelsFd1 = make_rail_wheels_fd(1);
 
 constexpr std::array kFd{
     msg("Command", -1, kCommandId, kIn, kCommand),
@@ -248,6 +364,9 @@ constexpr std::array kFd{
     msg("RigInputsFD", -1, kRigInputsFdId, kIn, kRigInputsFd, 64, true),
     msg("WheelOutFD", -1, 0x1C0, kOut, kWheelOutFd, 64, true),
     msg("WheelsetOutFD", -1, 0x1D0, kOut, kWheelsetOutFd, 32, true),
+    msg("WheelsetMotionFD", -1, 0x0B0, kIn, kWheelsetMotionFd, 24, true),
+    msg("RailWheelsOutFD", 0, 0x1E0, kOut, kRailWheelsFd0, 48, true),
+    msg("RailWheelsOutFD", 1, 0x1E1, kOut, kRailWheelsFd1, 48, true),
 };
 
 static_assert(kClassic.size() <= kMaxMessages && kFd.size() <= kMaxMessages);

@@ -53,6 +53,6 @@ struct MessageSpec {
 [[nodiscard]] std::size_t message_index(Layout layout, const MessageSpec& message) noexcept;
 
 /// Upper bound of messages(layout).size() over both layouts.
-inline constexpr std::size_t kMaxMessages = 32;
+inline constexpr std::size_t kMaxMessages = 48;
 
 }  // namespace tread::proto

@@ -9,10 +9,12 @@ bool is_cycle_frame(const MessageSpec& m) noexcept {
 
 }  // namespace
 
-RigLink::RigLink(Layout layout, std::uint8_t wheels, std::uint8_t wheelsets) noexcept
+RigLink::RigLink(Layout layout, std::uint8_t wheels, std::uint8_t wheelsets,
+                 std::uint8_t wheelset_forces) noexcept
     : layout_(layout),
       wheels_(wheels > kMaxWheels ? kMaxWheels : wheels),
-      wheelsets_(wheelsets > kMaxWheelsets ? kMaxWheelsets : wheelsets) {}
+      wheelsets_(wheelsets > kMaxWheelsets ? kMaxWheelsets : wheelsets),
+      wheelset_forces_(wheelset_forces > wheelsets_ ? wheelsets_ : wheelset_forces) {}
 
 std::uint8_t RigLink::next_counter(std::size_t message) noexcept {
   const std::uint8_t c = counters_[message];
@@ -24,12 +26,17 @@ bool RigLink::wanted(const MessageSpec& m) const noexcept {
   if (m.direction != Direction::rig_to_node || m.id == kCommandId) {
     return false;
   }
-  if (m.instance < 0) {
-    return true;  // frames for all channels (RigCycle, RigInputsFD)
-  }
   bool wheelset_message = false;
+  bool forces_message = false;
   for (const SignalSpec& s : m.signals) {
     wheelset_message = wheelset_message || s.role == Role::ws_lateral;
+    forces_message = forces_message || s.role == Role::ws_speed || s.role == Role::ws_load_left;
+  }
+  if (forces_message) {  // WheelsetMotion/Load per wheelset, WheelsetMotionFD for all
+    return m.instance < 0 ? wheelset_forces_ > 0U : m.instance < wheelset_forces_;
+  }
+  if (m.instance < 0) {
+    return true;  // frames for all channels (RigCycle, RigInputsFD)
   }
   return wheelset_message ? m.instance < wheelsets_ : m.instance < wheels_;
 }

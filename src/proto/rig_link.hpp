@@ -14,7 +14,10 @@ namespace tread::proto {
 
 class RigLink {
  public:
-  RigLink(Layout layout, std::uint8_t wheels, std::uint8_t wheelsets) noexcept;
+  /// `wheelset_forces`: how many of the wheelsets get the wheel-rail force inputs
+  /// (WheelsetMotion, WheelsetLoad; on FD the one WheelsetMotionFD when any).
+  RigLink(Layout layout, std::uint8_t wheels, std::uint8_t wheelsets,
+          std::uint8_t wheelset_forces = 0) noexcept;
 
   /// The input frames of one cycle for the configured channels; the rig's cycle frame (RigCycle or
   /// RigInputsFD) comes last so a node in sync mode computes after it.
@@ -33,7 +36,7 @@ class RigLink {
   [[nodiscard]] std::uint64_t rejected() const noexcept { return rejected_; }
   [[nodiscard]] std::uint64_t accepted() const noexcept { return accepted_; }
 
-  static constexpr std::size_t kMaxRigFrames = 2 * kMaxWheels + kMaxWheelsets + 1;
+  static constexpr std::size_t kMaxRigFrames = 2 * kMaxWheels + 3 * kMaxWheelsets + 1;
 
  private:
   std::uint8_t next_counter(std::size_t message) noexcept;
@@ -42,6 +45,7 @@ class RigLink {
   Layout layout_;
   std::uint8_t wheels_;
   std::uint8_t wheelsets_;
+  std::uint8_t wheelset_forces_;
   std::array<std::uint8_t, kMaxMessages> counters_{};
   std::array<E2eReceiver, kMaxMessages> receivers_{};
   std::uint64_t rejected_{0};

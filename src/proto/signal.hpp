@@ -52,7 +52,26 @@ enum class Role : std::uint8_t {
   node_rejected,
   node_stale_mask,
   node_clamp_mask,
+  // rig -> node: a wheelset's motion and wheel loads (for the wheel-rail forces)
+  ws_speed,
+  ws_lateral_velocity,
+  ws_yaw_rate,
+  ws_load_left,
+  ws_load_right,
+  // node -> rig: per rail wheel (instance 2 j + side: wheelset j, side 0 left, 1 right)
+  rw_fx,
+  rw_y,
+  rw_q,
+  rw_mz,
+  rw_n1,
+  rw_n2,
+  rw_y_over_q,
+  rw_nadal_margin,
+  rw_status,
 };
+
+/// One past the last role (for tables indexed by role).
+inline constexpr std::size_t kRoleCount = static_cast<std::size_t>(Role::rw_status) + 1U;
 
 /// Roles whose values are integers (flags, counters, masks) rather than scaled physical values.
 [[nodiscard]] constexpr bool is_integer_role(Role role) noexcept {
@@ -74,6 +93,7 @@ enum class Role : std::uint8_t {
     case Role::node_rejected:
     case Role::node_stale_mask:
     case Role::node_clamp_mask:
+    case Role::rw_status:
       return true;
     default:
       return false;
