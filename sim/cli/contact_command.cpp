@@ -57,19 +57,6 @@ struct MechanicsOptions {
   contact::ContactMaterials materials;
 };
 
-rail::PolachParameters<double> friction_parameters(const MechanicsOptions& o) {
-  rail::PolachParameters<double> p;  // "kalker": kA = kS = 1, no fall with slip velocity
-  if (o.friction == "dry") {
-    p = {0.55, 0.40, 0.60, 1.00, 0.40};  // Polach 2005, dry rail
-  } else if (o.friction == "wet") {
-    p = {0.30, 0.40, 0.20, 0.30, 0.10};  // Polach 2005, wet rail
-  }
-  if (o.mu > 0.0) {
-    p.mu0 = o.mu;
-  }
-  return p;
-}
-
 /// The mechanics columns of every row of the geometry table.
 std::vector<std::string> mechanics_rows(const contact::RigidContact& c,
                                         const contact::ContactTable& t, const MechanicsOptions& o,
@@ -80,7 +67,7 @@ std::vector<std::string> mechanics_rows(const contact::RigidContact& c,
   contact::WheelsetState state = o.state;
   state.load_left_n = o.load_n;
   state.load_right_n = o.load_right_n > 0.0 ? o.load_right_n : o.load_n;
-  const rail::PolachParameters<double> polach = friction_parameters(o);
+  const rail::PolachParameters<double> polach = contact::friction_parameters(o.friction, o.mu);
   const contact::CreepLaw law =
       o.creep_law == "fastsim" ? contact::CreepLaw::fastsim : contact::CreepLaw::polach;
   std::vector<std::string> out;

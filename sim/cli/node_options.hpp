@@ -20,6 +20,7 @@ struct NodeCliState {
   std::string mode{"periodic"};
   int wheels{4};
   int wheelsets{0};
+  int wheelset_forces{0};
   double timeout_ms{10.0};
 };
 
@@ -43,6 +44,17 @@ inline void add_node_options(CLI::App& cmd, NodeCliState& s, bool tir_required) 
                  "wheel/rail pair for the contact table: key=value list with wheel|wheel-file, "
                  "rail|rail-file, rail-frame, cant, gauge, b2b, r0, r0-right "
                  "(e.g. wheel=S1002,rail=60E1,cant=1:40)");
+  cmd.add_option("--wheelset-forces", s.wheelset_forces,
+                 "of the wheelsets, how many also serve the wheel-rail forces (Hertz, Polach creep "
+                 "forces, Y/Q, Nadal margin; needs WheelsetMotion and WheelsetLoad from the rig)")
+      ->check(CLI::Range(0, 2))
+      ->capture_default_str();
+  cmd.add_option("--friction", s.settings.friction,
+                 "Polach parameters for the wheel-rail forces: kalker, dry or wet")
+      ->check(CLI::IsMember({"kalker", "dry", "wet"}))
+      ->capture_default_str();
+  cmd.add_option("--mu", s.settings.mu, "wheel-rail friction coefficient mu0 (default: the set's)")
+      ->check(CLI::PositiveNumber);
   cmd.add_option("--mode", s.mode,
                  "periodic (own schedule) or sync (compute on the rig's cycle frame)")
       ->check(CLI::IsMember({"periodic", "sync"}))
@@ -63,6 +75,7 @@ inline host::NodeSettings node_settings(NodeCliState& s) {
   out.node.layout = s.fd ? proto::Layout::fd : proto::Layout::classic;
   out.node.wheels = static_cast<std::uint8_t>(s.wheels);
   out.node.wheelsets = static_cast<std::uint8_t>(s.wheelsets);
+  out.node.wheelset_forces = static_cast<std::uint8_t>(s.wheelset_forces);
   out.node.schedule = s.mode == "sync" ? node::Schedule::sync : node::Schedule::periodic;
   out.node.input_timeout_ns = static_cast<std::int64_t>(s.timeout_ms * 1e6);
   return out;

@@ -85,6 +85,32 @@ std::vector<MechanicsRow> mechanics_table(const RigidContact& contact, double y_
   return rows;
 }
 
+rail::PolachParameters<double> friction_parameters(const std::string& name, double mu) {
+  rail::PolachParameters<double> p;  // "kalker"
+  if (name == "dry") {
+    p = {0.55, 0.40, 0.60, 1.00, 0.40};  // Polach 2005, dry rail
+  } else if (name == "wet") {
+    p = {0.30, 0.40, 0.20, 0.30, 0.10};  // Polach 2005, wet rail
+  } else if (name != "kalker") {
+    throw std::invalid_argument("friction: want kalker, dry or wet, not '" + name + "'");
+  }
+  if (mu > 0.0) {
+    p.mu0 = mu;
+  }
+  return p;
+}
+
+std::vector<rail::MechanicsRowF32> mechanics_rows_f32(const std::vector<MechanicsRow>& table) {
+  std::vector<rail::MechanicsRowF32> rows(table.size());
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    for (int k = 0; k < 2; ++k) {
+      rows[i].point[0][k] = rail::to_row_point(table[i].left.point[k]);
+      rows[i].point[1][k] = rail::to_row_point(table[i].right.point[k]);
+    }
+  }
+  return rows;
+}
+
 FlangeAngles flange_angles(const std::vector<MechanicsRow>& table) {
   FlangeAngles out;
   for (const MechanicsRow& r : table) {

@@ -5,10 +5,12 @@
 // node's tables hold and the core (rail/wheel_contact.hpp) scales by the load at run time. And the
 // evaluation of a whole table at a wheel load and wheelset motion for `tread contact`.
 
+#include <string>
 #include <vector>
 
 #include "contact/rigid_contact.hpp"
 #include "rail/fastsim.hpp"
+#include "rail/mechanics_table.hpp"
 #include "rail/wheel_contact.hpp"
 
 namespace tread::contact {
@@ -71,6 +73,14 @@ struct FlangeAngles {
   double right_rad = 0.0;
 };
 FlangeAngles flange_angles(const std::vector<MechanicsRow>& table);
+
+/// Polach's parameters by name: "kalker" (kA = kS = 1, constant mu: Kalker's initial slope),
+/// "dry" or "wet" (Polach 2005's recommended sets); mu > 0 replaces mu0. Throws
+/// std::invalid_argument for another name.
+rail::PolachParameters<double> friction_parameters(const std::string& name, double mu = 0.0);
+
+/// The table in the node's float rows (rail/mechanics_table.hpp).
+std::vector<rail::MechanicsRowF32> mechanics_rows_f32(const std::vector<MechanicsRow>& table);
 
 enum class CreepLaw { polach, fastsim };
 

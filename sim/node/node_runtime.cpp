@@ -54,6 +54,32 @@ contact::ContactSetup parse_wheelset_profile(const std::string& spec) {
   return setup;
 }
 
+void NodeRuntime::build_forces(const contact::RigidContact& contact, const NodeSettings& settings,
+                               double y_first_mm, double y_last_mm, double step_mm,
+                               const contact::ContactSetup& setup) {
+  const std::vector<contact::MechanicsRow> table =
+      contact::mechanics_table(contact, y_first_mm, y_last_mm, step_mm, settings.materials);
+  mechanics_rows_ = contact::mechanics_rows_f32(table);
+  mechanics_ = rail::MechanicsTableF32{static_cast<float>(y_first_mm), static_cast<float>(step_mm),
+                                       static_cast<std::uint32_t>(mechanics_rows_.size()),
+                                       mechanics_rows_.data()};
+  const contact::FlangeAngles flange = contact::flange_angles(table);
+  const rail::PolachParameters<double> p =
+      contact::friction_parameters(settings.friction, settings.mu);
+  force_settings_.g_mpa = static_cast<float>(settings.materials.g_mpa());
+  force_settings_.polach = {static_cast<float>(p.mu0), static_cast<float>(p.a_ratio),
+                            static_cast<float>(p.b_s_per_m), static_cast<float>(p.k_adhesion),
+                            static_cast<float>(p.k_slip)};
+  force_settings_.flange_angle_left_rad = static_cast<float>(flange.left_rad);
+  force_settings_.flange_angle_right_rad = static_cast<float>(flange.right_rad);
+  force_settings_.r0_mm =
+      static_cast<float>(0.5 * (setup.r0_mm + setup.r0_right_mm.value_or(setup.r0_mm)));
+  force_settings_.half_contact_base_mm = static_cast<float>(contact::kTrackFrameOrigin_mm);
+  for (auto& f : forces_) {
+    f = node::RailForceTableChannel(mechanics_, force_settings_);
+  }
+}
+
 NodeRuntime::NodeRuntime(const NodeSettings& settings) {
   node::NodeConfig config = settings.node;
   if (config.wheels > 0) {
@@ -138,6 +164,14 @@ NodeRuntime::NodeRuntime(const NodeSettings& settings) {
     for (auto& c : contacts_) {
       c = node::ContactTableChannel(table_);
     }
+    if (config.wheelset_forces > 0) {
+      if (settings.fixed) {
+        throw std::runtime_error(
+            "wheel-rail forces (--wheelset-forces) run in float only, not with --fixed");
+      }
+      build_forces(contact, settings, t.y_first_mm, t.y_mm.back(), t.y_step_mm,
+                   parse_wheelset_profile(settings.wheelset_profile));
+    }
     for (auto& c : contacts_fixed_) {
       c = node::ContactTableChannelFixed(table_q_);
     }
@@ -145,7 +179,7 @@ NodeRuntime::NodeRuntime(const NodeSettings& settings) {
   if (settings.fixed) {
     node_fixed_ = std::make_unique<RuntimeNodeFixed>(config, tyres_fixed_, contacts_fixed_);
   } else {
-    node_ = std::make_unique<RuntimeNode>(config, tyres_, contacts_);
+    node_ = std::make_unique<RuntimeNode>(config, tyres_, contacts_, forces_);
   }
 }
 

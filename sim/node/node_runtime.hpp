@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "contact/contact_mechanics.hpp"
 #include "contact/contact_setup.hpp"
 #include "mf/mf_options.hpp"
 #include "mf/mf_parameters.hpp"
@@ -20,6 +21,7 @@
 #include "node/mf_tyre_channel.hpp"
 #include "node/mf_tyre_channel_fixed.hpp"
 #include "node/node.hpp"
+#include "node/rail_force_channel.hpp"
 
 namespace tread::host {
 
@@ -37,13 +39,19 @@ struct NodeSettings {
   std::string wheelset_profile;
   double wheelset_ymax_mm{12.0};
   double wheelset_step_mm{0.1};
+  /// Wheel-rail forces (node.wheelset_forces > 0): Polach's parameters by name (kalker, dry,
+  /// wet), mu0 (0: the set's own) and the materials of wheel and rail.
+  std::string friction{"kalker"};
+  double mu{0.0};
+  contact::ContactMaterials materials{};
 };
 
 /// Parses a --wheelset-profile spec into a ContactSetup; throws std::invalid_argument naming the
 /// key.
 contact::ContactSetup parse_wheelset_profile(const std::string& spec);
 
-using RuntimeNode = node::Node<node::MfTyreChannel, node::ContactTableChannel>;
+using RuntimeNode =
+    node::Node<node::MfTyreChannel, node::ContactTableChannel, node::RailForceTableChannel>;
 using RuntimeNodeFixed = node::Node<node::MfTyreChannelFixed, node::ContactTableChannelFixed>;
 
 class NodeRuntime {
@@ -75,8 +83,15 @@ class NodeRuntime {
   [[nodiscard]] const rail::ContactTableF32& contact_table() const { return table_; }
   /// The same table in integers (rows rounded to 0.1 µm and µrad, y to µm), as the flashed `.q`.
   [[nodiscard]] const rail::ContactTableQ& contact_table_q() const { return table_q_; }
+  /// The wheel-rail force table and settings (empty without wheelset forces).
+  [[nodiscard]] const rail::MechanicsTableF32& mechanics_table() const { return mechanics_; }
+  [[nodiscard]] const node::RailForceSettings& force_settings() const { return force_settings_; }
 
  private:
+  void build_forces(const contact::RigidContact& contact, const NodeSettings& settings,
+                    double y_first_mm, double y_last_mm, double step_mm,
+                    const contact::ContactSetup& setup);
+
   mf::MfParameters<double> params_double_{};
   mf::MfParameters<float> params_{};
   mf::MfOptions options_{};
@@ -90,6 +105,10 @@ class NodeRuntime {
   std::array<node::ContactTableChannelFixed, proto::kMaxWheelsets> contacts_fixed_{};
   std::vector<rail::ContactRowQ> rows_q_;
   rail::ContactTableQ table_q_{};
+  std::vector<rail::MechanicsRowF32> mechanics_rows_;
+  rail::MechanicsTableF32 mechanics_{};
+  node::RailForceSettings force_settings_{};
+  std::array<node::RailForceTableChannel, proto::kMaxWheelsets> forces_{};
   std::unique_ptr<RuntimeNode> node_;             ///< the float node, or
   std::unique_ptr<RuntimeNodeFixed> node_fixed_;  ///< the fixed-point one
 };

@@ -55,6 +55,8 @@ struct BasicRailWheelForces {
   bool lifted{false};  ///< no load on the wheel: no Y/Q (reported 0, margin = the limit)
 };
 
+using RailWheelForces = BasicRailWheelForces<float>;
+
 template <typename S>
 struct BasicRailForceResult {
   BasicRailWheelForces<S> wheel[2];  ///< left, right

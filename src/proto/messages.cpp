@@ -94,8 +94,9 @@ constexpr SignalSpec ws_status(std::int8_t i, std::uint16_t b) {
 }
 
 // Wheel-rail forces. In: speed 0.01 m/s (0..655), lateral velocity 1e-4 m/s (±3.28), yaw rate
-// 1e-4 rad/s (±3.28), wheel loads 4 N (0..262 kN). Out, per rail wheel: Fx, Y, Q 4 N (±131 kN),
-// spin moment 0.05 N m (±1638), normal forces 4 N (0..262 kN), Y/Q and Nadal margin 1e-4 (±3.28).
+// 1e-4 rad/s (±3.28), wheel loads 4 N (0..262 kN). Out, per rail wheel: Fx, Y, Q 8 N (±262 kN:
+// a flange carrying the whole load at 70 deg gives Y ~ 2.7 Q), spin moment 0.05 N m (±1638),
+// normal forces 8 N (0..524 kN), Y/Q and Nadal margin 1e-4 (±3.28).
 constexpr SignalSpec ws_speed(std::int8_t i, std::uint16_t b) {
   return {R::ws_speed, "Speed", i, b, 16, kUnsigned, 0.01, 0.0, "m/s"};
 }
@@ -112,22 +113,22 @@ constexpr SignalSpec ws_load_right(std::int8_t i, std::uint16_t b) {
   return {R::ws_load_right, "LoadRight", i, b, 16, kUnsigned, 4.0, 0.0, "N"};
 }
 constexpr SignalSpec rw_fx(std::int8_t i, std::uint16_t b) {
-  return {R::rw_fx, "Fx", i, b, 16, kSigned, 4.0, 0.0, "N"};
+  return {R::rw_fx, "Fx", i, b, 16, kSigned, 8.0, 0.0, "N"};
 }
 constexpr SignalSpec rw_y(std::int8_t i, std::uint16_t b) {
-  return {R::rw_y, "Y", i, b, 16, kSigned, 4.0, 0.0, "N"};
+  return {R::rw_y, "Y", i, b, 16, kSigned, 8.0, 0.0, "N"};
 }
 constexpr SignalSpec rw_q(std::int8_t i, std::uint16_t b) {
-  return {R::rw_q, "Q", i, b, 16, kSigned, 4.0, 0.0, "N"};
+  return {R::rw_q, "Q", i, b, 16, kSigned, 8.0, 0.0, "N"};
 }
 constexpr SignalSpec rw_mz(std::int8_t i, std::uint16_t b) {
   return {R::rw_mz, "SpinMoment", i, b, 16, kSigned, 0.05, 0.0, "N.m"};
 }
 constexpr SignalSpec rw_n1(std::int8_t i, std::uint16_t b) {
-  return {R::rw_n1, "N1", i, b, 16, kUnsigned, 4.0, 0.0, "N"};
+  return {R::rw_n1, "N1", i, b, 16, kUnsigned, 8.0, 0.0, "N"};
 }
 constexpr SignalSpec rw_n2(std::int8_t i, std::uint16_t b) {
-  return {R::rw_n2, "N2", i, b, 16, kUnsigned, 4.0, 0.0, "N"};
+  return {R::rw_n2, "N2", i, b, 16, kUnsigned, 8.0, 0.0, "N"};
 }
 constexpr SignalSpec rw_y_over_q(std::int8_t i, std::uint16_t b) {
   return {R::rw_y_over_q, "YOverQ", i, b, 16, kSigned, 1e-4, 0.0, "1"};

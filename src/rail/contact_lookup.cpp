@@ -2,31 +2,10 @@
 
 #include <cmath>
 
+#include "rail/table_position.hpp"
+
 namespace tread::rail {
 namespace {
-
-struct Position {
-  std::uint32_t index;  ///< row below y
-  float fraction;       ///< 0..1 toward the next row
-  Status status;
-};
-
-Position locate(float y_first, float y_step, std::uint32_t count, float y) noexcept {
-  if (!std::isfinite(y)) {
-    return {0, 0.0F, Status::out_of_range};
-  }
-  const float u = (y - y_first) / y_step;
-  const auto last = static_cast<float>(count - 1U);
-  if (u <= 0.0F) {
-    return {0, 0.0F, u < 0.0F ? Status::out_of_range : Status::ok};
-  }
-  if (u >= last) {
-    return {count - 2U, 1.0F, u > last ? Status::out_of_range : Status::ok};
-  }
-  const auto i = static_cast<std::uint32_t>(u);
-  const std::uint32_t index = i < count - 1U ? i : count - 2U;
-  return {index, u - static_cast<float>(index), Status::ok};
-}
 
 inline float lerp(const float* column, const Position& p) noexcept {
   const float a = column[p.index];
