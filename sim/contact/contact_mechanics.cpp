@@ -138,8 +138,8 @@ rail::WheelForces<double> evaluate_wheel(const WheelMechanics& wheel, bool right
     k = rail::mirrored(k);
   }
   const double load = right_wheel ? state.load_right_n : state.load_left_n;
-  rail::WheelForces<double> out =
-      rail::wheel_forces(wheel.point, load, k, m.g_mpa(), flange_angle_rad, polach);
+  rail::WheelForces<double> out = rail::wheel_forces(
+      wheel.point, load, k, m.g_mpa(), rail::nadal_reference(flange_angle_rad, polach.mu0), polach);
   if (law == CreepLaw::polach) {
     return out;
   }

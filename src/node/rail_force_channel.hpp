@@ -29,7 +29,10 @@ class RailForceTableChannel {
   /// The table's rows must outlive the channel.
   RailForceTableChannel(const rail::MechanicsTableF32& table,
                         const RailForceSettings& settings) noexcept
-      : table_(table), settings_(settings) {}
+      : table_(table),
+        settings_(settings),
+        nadal_left_(rail::nadal_reference(settings.flange_angle_left_rad, settings.polach.mu0)),
+        nadal_right_(rail::nadal_reference(settings.flange_angle_right_rad, settings.polach.mu0)) {}
 
   RailForceResult evaluate(const proto::WheelsetInput& in) const noexcept {
     RailForceResult out;
@@ -47,10 +50,9 @@ class RailForceTableChannel {
     k.axle_spin_rad_s = in.speed_mps / (settings_.r0_mm * 1e-3F);
     k.half_contact_base_mm = settings_.half_contact_base_mm;
     fill(out.wheel[0], rail::wheel_forces(points.value.wheel[0], in.load_left_n, k, settings_.g_mpa,
-                                          settings_.flange_angle_left_rad, settings_.polach));
-    fill(out.wheel[1],
-         rail::wheel_forces(points.value.wheel[1], in.load_right_n, rail::mirrored(k),
-                            settings_.g_mpa, settings_.flange_angle_right_rad, settings_.polach));
+                                          nadal_left_, settings_.polach));
+    fill(out.wheel[1], rail::wheel_forces(points.value.wheel[1], in.load_right_n, rail::mirrored(k),
+                                          settings_.g_mpa, nadal_right_, settings_.polach));
     return out;
   }
 
@@ -69,6 +71,8 @@ class RailForceTableChannel {
 
   rail::MechanicsTableF32 table_{};
   RailForceSettings settings_{};
+  rail::NadalReference<float> nadal_left_{};
+  rail::NadalReference<float> nadal_right_{};
 };
 
 static_assert(RailForceChannel<RailForceTableChannel>);

@@ -135,7 +135,7 @@ HertzPatch<T> hertz_patch(const HertzShape<T>& shape, T load_n) noexcept {
   if (!(load_n > T{0})) {
     return p;
   }
-  const T c = std::cbrt(load_n);
+  const T c = cube_root(load_n);
   p.a_mm = shape.a_unit_mm * c;
   p.b_mm = shape.b_unit_mm * c;
   p.approach_mm = shape.approach_unit_mm * c * c;

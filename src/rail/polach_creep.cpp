@@ -21,6 +21,9 @@ T saturation(T eps, T k_adhesion, T k_slip) noexcept {
 
 template <typename T>
 T polach_friction(const PolachParameters<T>& p, T slip_velocity_m_s) noexcept {
+  if (!(p.b_s_per_m > T{0}) || !(p.a_ratio < T{1} || p.a_ratio > T{1})) {
+    return p.mu0;  // no fall with slip velocity
+  }
   const T w = std::abs(slip_velocity_m_s);
   return p.mu0 * ((T{1} - p.a_ratio) * std::exp(-p.b_s_per_m * w) + p.a_ratio);
 }
@@ -52,8 +55,9 @@ CreepForce<T> polach_creep(const CreepContact<T>& k, const Creepage<T>& s, T spe
   const T g_ab = k.g_mpa * k.a_mm * k.b_mm;
   const T eps = kPi / T{4} * g_ab * c_jj * s_c / mu_q;
   const T f = T{2} * mu_q / kPi * saturation(eps, p.k_adhesion, p.k_slip);
-  out.fx_n = -f * s.xi / s_c;
-  out.fy_n = -f * s.eta / s_c;
+  const T inv_s_c = T{1} / s_c;
+  out.fx_n = -f * s.xi * inv_s_c;
+  out.fy_n = -f * s.eta * inv_s_c;
 
   // Lateral force from spin (Polach 1999).
   const T c_len = std::sqrt(k.a_mm * k.b_mm);
@@ -61,23 +65,29 @@ CreepForce<T> polach_creep(const CreepContact<T>& k, const Creepage<T>& s, T spe
   const T eps_spin =
       T{8} / T{3} * k.g_mpa * k.b_mm * c_len * k.c.c23 * std::abs(eta_c) / (mu_q * k_m);
   const T e2 = eps_spin * eps_spin;
-  const T delta = (e2 - T{1}) / (e2 + T{1});
-  const T one_minus_d2 = T{1} - delta * delta;
+  const T inv_e2p1 = T{1} / (e2 + T{1});
+  const T delta = (e2 - T{1}) * inv_e2p1;
+  // 1 - delta^2 = (2 eps / (eps^2 + 1))^2, so (1 - delta^2)^(3/2) needs no root.
+  const T root = T{2} * eps_spin * inv_e2p1;
   const T bracket =
       -eps_spin * (delta * delta * delta / T{3} - delta * delta / T{2} + T{1} / T{6}) +
-      std::sqrt(one_minus_d2 * one_minus_d2 * one_minus_d2) / T{3};
-  out.fy_n -= T{9} / T{16} * k.a_mm * mu_q * k_m * bracket * s.phi_per_mm / s_c;
+      root * root * root / T{3};
+  out.fy_n -= T{9} / T{16} * k.a_mm * mu_q * k_m * bracket * s.phi_per_mm * inv_s_c;
   // The spin term adds to the saturated force: keep the total within Coulomb's mu Q.
-  const T total = magnitude(out.fx_n, out.fy_n);
-  if (total > mu_q) {
-    out.fx_n *= mu_q / total;
-    out.fy_n *= mu_q / total;
+  T f_sat = magnitude(out.fx_n, out.fy_n);
+  if (f_sat > mu_q) {
+    out.fx_n *= mu_q / f_sat;
+    out.fy_n *= mu_q / f_sat;
+    f_sat = mu_q;
   }
 
-  // Spin moment: Kalker's linear moment scaled like the force.
-  const CreepForce<T> lin = kalker_linear(k, s);
+  // Spin moment: Kalker's linear moment scaled like the force (kalker_linear, sharing c).
+  const T g_c2 = k.g_mpa * k.a_mm * k.b_mm;
+  const T g_c3 = g_c2 * c_len;
+  const CreepForce<T> lin{-g_c2 * k.c.c11 * s.xi,
+                          -g_c2 * k.c.c22 * s.eta - g_c3 * k.c.c23 * s.phi_per_mm,
+                          g_c3 * k.c.c23 * s.eta - g_c3 * c_len * k.c.c33 * s.phi_per_mm};
   const T f_lin = magnitude(lin.fx_n, lin.fy_n);
-  const T f_sat = magnitude(out.fx_n, out.fy_n);
   const T scale = f_lin > f_sat ? f_sat / f_lin : T{1};
   out.mz_nmm = lin.mz_nmm * scale;
   return out;

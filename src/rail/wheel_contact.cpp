@@ -14,92 +14,76 @@ T clamped_cos(T gamma_rad) noexcept {
   return c > kMinCos<T> ? c : kMinCos<T>;
 }
 
-/// Vertical load carried by the points at vertical approach d, and their normal forces.
-template <typename T>
-T vertical_load(const ContactPointData<T> (&points)[2], T d, T (&normal)[2]) noexcept {
-  T sum{};
-  for (int i = 0; i < 2; ++i) {
-    normal[i] = T{0};
-    if (!points[i].present) {
-      continue;
-    }
-    const T c = clamped_cos(points[i].gamma_rad);
-    normal[i] = hertz_load_for_approach(points[i].shape, (d - points[i].vertical_gap_mm) * c);
-    sum += normal[i] * c;
-  }
-  return sum;
-}
-
 }  // namespace
 
+namespace {
+
+/// sin and the (clamped) cos of a point's contact angle, computed once per cycle.
 template <typename T>
-Creepage<T> point_creepage(const WheelKinematics<T>& k, T r_mm, T gamma_rad) noexcept {
-  Creepage<T> s;
-  const T v = k.speed_m_s;
-  if (!(v > T{0}) || !std::isfinite(v)) {
-    return s;
-  }
-  constexpr T kMmToM = static_cast<T>(1e-3);
-  const T c = clamped_cos(gamma_rad);
-  const T sn = std::sin(gamma_rad);
-  s.xi =
-      (v - k.axle_spin_rad_s * r_mm * kMmToM - k.yaw_rate_rad_s * k.half_contact_base_mm * kMmToM) /
-      v;
-  s.eta = (k.lateral_velocity_m_s - v * k.yaw_rad) / (v * c);
-  // rad/s over m/s is rad/m; the creep laws take rad/mm.
-  s.phi_per_mm = (k.yaw_rate_rad_s * c - k.axle_spin_rad_s * sn) / v * kMmToM;
-  return s;
-}
+struct Trig {
+  T s{};
+  T c{1};
+};
 
 template <typename T>
-NormalSplit<T> split_wheel_load(const ContactPointData<T> (&points)[2], T q_n) noexcept {
+Creepage<T> creepage_at(const WheelKinematics<T>& k, T r_mm, const Trig<T>& t) noexcept {
+  Creepage<T> out;
+  const T v = k.speed_m_s;
+  if (!(v > T{0}) || !std::isfinite(v)) {
+    return out;
+  }
+  constexpr T kMmToM = static_cast<T>(1e-3);
+  out.xi =
+      (v - k.axle_spin_rad_s * r_mm * kMmToM - k.yaw_rate_rad_s * k.half_contact_base_mm * kMmToM) /
+      v;
+  out.eta = (k.lateral_velocity_m_s - v * k.yaw_rad) / (v * t.c);
+  // rad/s over m/s is rad/m; the creep laws take rad/mm.
+  out.phi_per_mm = (k.yaw_rate_rad_s * t.c - k.axle_spin_rad_s * t.s) / v * kMmToM;
+  return out;
+}
+
+/// The load split (see split_wheel_load), with the cube root of the main point's load when it
+/// carries the wheel alone (so its patch needs no second one).
+template <typename T>
+NormalSplit<T> split(const ContactPointData<T> (&points)[2], const Trig<T> (&trig)[2], T q_n,
+                     T& cbrt_alone) noexcept {
   NormalSplit<T> out;
+  cbrt_alone = T{0};
   if (!(q_n > T{0}) || !points[0].present) {
     return out;
   }
-  // The main point alone first.
-  const T c0 = clamped_cos(points[0].gamma_rad);
-  const HertzPatch<T> alone = hertz_patch(points[0].shape, q_n / c0);
-  T d_hi = alone.approach_mm / c0 + points[0].vertical_gap_mm;
-  T normal[2];
-  if (!points[1].present || d_hi <= points[1].vertical_gap_mm) {
-    out.normal_n[0] = q_n / c0;
-    out.vertical_approach_mm = d_hi;
+  const T n_alone = q_n / trig[0].c;
+  const T cb = cube_root(n_alone);
+  const T d_alone =
+      points[0].shape.approach_unit_mm * cb * cb / trig[0].c + points[0].vertical_gap_mm;
+  if (!points[1].present || d_alone <= points[1].vertical_gap_mm) {
+    out.normal_n[0] = n_alone;
+    out.vertical_approach_mm = d_alone;
+    cbrt_alone = cb;
     return out;
   }
-  // Both carry: the vertical load grows monotonically with d; Illinois on [0, d_hi].
-  T d_lo{0};
-  T f_lo = -q_n;
-  T f_hi = vertical_load(points, d_hi, normal) - q_n;
-  const T tolerance = q_n * static_cast<T>(sizeof(T) == 4 ? 1e-6 : 1e-12);
-  T d = d_hi;
-  int side = 0;
-  for (int i = 0; i < 60; ++i) {
-    d = (d_lo * f_hi - d_hi * f_lo) / (f_hi - f_lo);
-    if (!(d > d_lo && d < d_hi)) {
-      d = (d_lo + d_hi) / T{2};
+  // Both carry. The vertical load f(d) = sum N_i(d) cos(gamma_i), N_i = ((d - g_i) cos / u)^1.5,
+  // is convex and increasing in the vertical approach d: Newton from d_alone (where f > q)
+  // descends monotonically onto the root.
+  const T tolerance = q_n * static_cast<T>(sizeof(T) == 4 ? 2e-6 : 1e-12);
+  T d = d_alone;
+  T normal[2]{};
+  for (int iteration = 0; iteration < 30; ++iteration) {
+    T f = -q_n;
+    T slope{};
+    for (int i = 0; i < 2; ++i) {
+      const T x = (d - points[i].vertical_gap_mm) * trig[i].c;
+      normal[i] = hertz_load_for_approach(points[i].shape, x);
+      if (normal[i] > T{0}) {
+        f += normal[i] * trig[i].c;
+        slope += T{1.5} * normal[i] / (d - points[i].vertical_gap_mm) * trig[i].c;
+      }
     }
-    const T f = vertical_load(points, d, normal) - q_n;
-    if (std::abs(f) <= tolerance) {
+    if (std::abs(f) <= tolerance || !(slope > T{0})) {
       break;
     }
-    if (f > T{0}) {
-      d_hi = d;
-      f_hi = f;
-      if (side == 1) {
-        f_lo /= T{2};
-      }
-      side = 1;
-    } else {
-      d_lo = d;
-      f_lo = f;
-      if (side == -1) {
-        f_hi /= T{2};
-      }
-      side = -1;
-    }
+    d -= f / slope;
   }
-  (void)vertical_load(points, d, normal);
   out.normal_n[0] = normal[0];
   out.normal_n[1] = normal[1];
   out.vertical_approach_mm = d;
@@ -107,31 +91,97 @@ NormalSplit<T> split_wheel_load(const ContactPointData<T> (&points)[2], T q_n) n
 }
 
 template <typename T>
+Trig<T> trig_of(const ContactPointData<T>& p) noexcept {
+  if (!p.present) {
+    return {};
+  }
+  const T c = std::cos(p.gamma_rad);
+  return {std::sin(p.gamma_rad), c > kMinCos<T> ? c : kMinCos<T>};
+}
+
+}  // namespace
+
+template <typename T>
+Creepage<T> point_creepage(const WheelKinematics<T>& k, T r_mm, T gamma_rad) noexcept {
+  const T c = std::cos(gamma_rad);
+  return creepage_at(k, r_mm, Trig<T>{std::sin(gamma_rad), c > kMinCos<T> ? c : kMinCos<T>});
+}
+
+template <typename T>
+NormalSplit<T> split_wheel_load(const ContactPointData<T> (&points)[2], T q_n) noexcept {
+  const Trig<T> trig[2] = {trig_of(points[0]), trig_of(points[1])};
+  T unused{};
+  return split(points, trig, q_n, unused);
+}
+
+template <typename T>
+NadalReference<T> nadal_reference(T flange_angle_rad, T mu) noexcept {
+  const Result<T> limit = nadal_limit(flange_angle_rad, mu);
+  return {flange_angle_rad, mu, limit.value, limit.status};
+}
+
+template <typename T>
 WheelForces<T> wheel_forces(const ContactPointData<T> (&points)[2], T q_n,
-                            const WheelKinematics<T>& kinematics, T g_mpa, T flange_angle_rad,
+                            const WheelKinematics<T>& kinematics, T g_mpa,
+                            const NadalReference<T>& nadal,
                             const PolachParameters<T>& polach) noexcept {
   WheelForces<T> out;
-  const NormalSplit<T> split = split_wheel_load(points, q_n);
-  T flange_angle = flange_angle_rad;
+  const Trig<T> trig[2] = {trig_of(points[0]), trig_of(points[1])};
+  T cbrt_alone{};
+  const NormalSplit<T> normals = split(points, trig, q_n, cbrt_alone);
+  int steepest = -1;  // a loaded point steeper than the flange angle
+  T steepest_angle = nadal.angle_rad;
   for (int i = 0; i < 2; ++i) {
     PointForces<T>& p = out.point[i];
-    p.normal_n = split.normal_n[i];
+    p.normal_n = normals.normal_n[i];
     if (!points[i].present || !(p.normal_n > T{0})) {
       continue;
     }
-    p.patch = hertz_patch(points[i].shape, p.normal_n);
-    p.creepage = point_creepage(kinematics, points[i].r_mm, points[i].gamma_rad);
+    if (i == 0 && cbrt_alone > T{0}) {
+      const HertzShape<T>& sh = points[0].shape;
+      p.patch.a_mm = sh.a_unit_mm * cbrt_alone;
+      p.patch.b_mm = sh.b_unit_mm * cbrt_alone;
+      p.patch.approach_mm = sh.approach_unit_mm * cbrt_alone * cbrt_alone;
+      constexpr T kPi = static_cast<T>(3.14159265358979323846);
+      p.patch.p_mean_mpa = p.normal_n / (kPi * p.patch.a_mm * p.patch.b_mm);
+      p.patch.p_max_mpa = T{1.5} * p.patch.p_mean_mpa;
+    } else {
+      p.patch = hertz_patch(points[i].shape, p.normal_n);
+    }
+    p.creepage = creepage_at(kinematics, points[i].r_mm, trig[i]);
     const CreepContact<T> contact{p.patch.a_mm, p.patch.b_mm, p.normal_n, g_mpa, points[i].c};
     p.creep = polach_creep(contact, p.creepage, kinematics.speed_m_s, polach);
-    add_contact_point(out.yq, p.normal_n, points[i].gamma_rad, p.creep.fy_n);
-    if (points[i].gamma_rad > flange_angle) {
-      flange_angle = points[i].gamma_rad;
+    out.yq.y_n += p.normal_n * trig[i].s - p.creep.fy_n * trig[i].c;
+    out.yq.q_n += p.normal_n * trig[i].c + p.creep.fy_n * trig[i].s;
+    if (points[i].gamma_rad > steepest_angle) {
+      steepest_angle = points[i].gamma_rad;
+      steepest = i;
     }
   }
-  const Result<DerailmentCheck<T>> check =
-      derailment_check(out.yq, flange_angle, polach_friction(polach, T{0}));
-  out.derailment = check.value;
-  out.derailment_status = check.status;
+  // Nadal's limit at the steepest angle: the reference's, or (rarely) a steeper loaded point's,
+  // from its sin and cos: (sin - mu cos) / (cos + mu sin).
+  T limit = nadal.limit;
+  Status limit_status = nadal.status;
+  if (limit_status == Status::ok && steepest >= 0 &&
+      steepest_angle < static_cast<T>(1.57079632679489661923)) {
+    const T mu = nadal.mu;
+    const T c = std::cos(steepest_angle);
+    const T sn = trig[steepest].s;
+    limit = (sn - mu * c) / (c + mu * sn);
+  }
+  out.derailment.limit = limit;
+  if (limit_status != Status::ok) {
+    out.derailment_status = limit_status;
+    out.derailment.limit = T{0};
+    return out;
+  }
+  if (!(out.yq.q_n > T{0}) || !std::isfinite(out.yq.y_n)) {
+    out.derailment.margin = limit;
+    out.derailment_status = Status::out_of_range;
+    return out;
+  }
+  out.derailment.y_over_q = out.yq.y_n / out.yq.q_n;
+  out.derailment.margin = limit - out.derailment.y_over_q;
   return out;
 }
 
@@ -144,10 +194,14 @@ template NormalSplit<float> split_wheel_load<float>(const ContactPointData<float
 template NormalSplit<double> split_wheel_load<double>(const ContactPointData<double> (&)[2],
                                                       double) noexcept;
 template WheelForces<float> wheel_forces<float>(const ContactPointData<float> (&)[2], float,
-                                                const WheelKinematics<float>&, float, float,
+                                                const WheelKinematics<float>&, float,
+                                                const NadalReference<float>&,
                                                 const PolachParameters<float>&) noexcept;
 template WheelForces<double> wheel_forces<double>(const ContactPointData<double> (&)[2], double,
-                                                  const WheelKinematics<double>&, double, double,
+                                                  const WheelKinematics<double>&, double,
+                                                  const NadalReference<double>&,
                                                   const PolachParameters<double>&) noexcept;
+template NadalReference<float> nadal_reference<float>(float, float) noexcept;
+template NadalReference<double> nadal_reference<double>(double, double) noexcept;
 
 }  // namespace tread::rail

@@ -92,13 +92,25 @@ struct WheelForces {
   Status derailment_status = Status::ok;  ///< of derailment_check (out_of_range: wheel lifted)
 };
 
+/// Nadal's limit at the profile's flange angle, computed once (at init): a wheel on its tread
+/// would have to climb its flange.
+template <typename T>
+struct NadalReference {
+  T angle_rad{};
+  T mu{};
+  T limit{};
+  Status status{Status::invalid_argument};
+};
+template <typename T>
+NadalReference<T> nadal_reference(T flange_angle_rad, T mu) noexcept;
+
 /// The whole wheel: split, creepages, Polach at each loaded point, Y/Q against Nadal's limit at
-/// the larger of flange_angle_rad (the profile's flange angle: a wheel on its tread would have to
-/// climb that) and the contact angles that carry load, with the static friction mu0.
+/// the larger of the reference's flange angle and the contact angles that carry load.
 /// g_mpa: combined shear modulus.
 template <typename T>
 WheelForces<T> wheel_forces(const ContactPointData<T> (&points)[2], T q_n,
-                            const WheelKinematics<T>& kinematics, T g_mpa, T flange_angle_rad,
+                            const WheelKinematics<T>& kinematics, T g_mpa,
+                            const NadalReference<T>& nadal,
                             const PolachParameters<T>& polach) noexcept;
 
 extern template Creepage<float> point_creepage<float>(const WheelKinematics<float>&, float,
@@ -110,11 +122,14 @@ extern template NormalSplit<float> split_wheel_load<float>(const ContactPointDat
 extern template NormalSplit<double> split_wheel_load<double>(const ContactPointData<double> (&)[2],
                                                              double) noexcept;
 extern template WheelForces<float> wheel_forces<float>(const ContactPointData<float> (&)[2], float,
-                                                       const WheelKinematics<float>&, float, float,
+                                                       const WheelKinematics<float>&, float,
+                                                       const NadalReference<float>&,
                                                        const PolachParameters<float>&) noexcept;
 extern template WheelForces<double> wheel_forces<double>(const ContactPointData<double> (&)[2],
                                                          double, const WheelKinematics<double>&,
-                                                         double, double,
+                                                         double, const NadalReference<double>&,
                                                          const PolachParameters<double>&) noexcept;
+extern template NadalReference<float> nadal_reference<float>(float, float) noexcept;
+extern template NadalReference<double> nadal_reference<double>(double, double) noexcept;
 
 }  // namespace tread::rail

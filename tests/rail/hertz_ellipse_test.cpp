@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace tread::rail {
@@ -112,6 +114,22 @@ TEST(HertzEllipse, ScalesWithTheLoadAndInvertsTheApproach) {
   const HertzPatch<float> pf = hertz_patch(shape_as<float>(s), 80000.0F);
   EXPECT_NEAR(pf.a_mm, p8.a_mm, 1e-6 * p8.a_mm);
   EXPECT_NEAR(pf.p_max_mpa, p8.p_max_mpa, 1e-5 * p8.p_max_mpa);
+}
+
+TEST(HertzEllipse, FloatCubeRootIsExactToRounding) {
+  // Over the loads a wheel sees and far beyond: within 2 ulp of the correctly rounded root.
+  float worst = 0.0F;
+  for (float x = 1e-6F; x < 3e8F; x *= 1.0137F) {
+    const float want = static_cast<float>(std::cbrt(static_cast<double>(x)));
+    const float got = cube_root(x);
+    worst = std::max(worst, std::abs(got - want) / want);
+  }
+  EXPECT_LT(worst, 2.5e-7F);
+  EXPECT_EQ(cube_root(0.0F), 0.0F);
+  EXPECT_EQ(cube_root(-8.0F), 0.0F);
+  EXPECT_EQ(cube_root(std::numeric_limits<float>::infinity()), 0.0F);
+  EXPECT_EQ(cube_root(std::nanf("")), 0.0F);
+  EXPECT_DOUBLE_EQ(cube_root(27.0), 3.0);
 }
 
 TEST(HertzEllipse, SlenderAndBadContacts) {

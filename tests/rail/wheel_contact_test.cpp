@@ -112,7 +112,8 @@ TEST(WheelContact, FlangeContactGivesYOverQAgainstNadal) {
   k.yaw_rad = 0.005;
   const PolachParameters<double> dry{0.36, 1.0, 0.0, 1.0, 1.0};
   const double g = kE / (2.0 * (1.0 + kNu));
-  const WheelForces<double> w = wheel_forces(pts, 60000.0, k, g, 70.0 * kDeg, dry);
+  const WheelForces<double> w =
+      wheel_forces(pts, 60000.0, k, g, nadal_reference(70.0 * kDeg, 0.36), dry);
   double y = 0.0;
   double q = 0.0;
   for (int i = 0; i < 2; ++i) {
@@ -131,10 +132,22 @@ TEST(WheelContact, FlangeContactGivesYOverQAgainstNadal) {
   EXPECT_NEAR(w.derailment.margin, w.derailment.limit - y / q, 1e-12);
 }
 
+TEST(WheelContact, WithoutAValidNadalReferenceThereIsNoLimit) {
+  // A default (never computed) reference must not turn into a limit at mu = 0 of whatever
+  // contact angle is loaded.
+  const ContactPointData<double> pts[2] = {point(460.0, 40.0, 0.0, 0.5 / 460.0, 0.5 / 30.0), {}};
+  const WheelForces<double> w = wheel_forces(pts, 60000.0, rolling(20.0, 460.0), 80000.0,
+                                             NadalReference<double>{}, PolachParameters<double>{});
+  EXPECT_EQ(w.derailment_status, Status::invalid_argument);
+  EXPECT_EQ(w.derailment.limit, 0.0);
+  EXPECT_EQ(nadal_reference(2.0, 0.3).status, Status::invalid_argument);  // beyond 90 deg
+}
+
 TEST(WheelContact, LiftedWheelAndFloat) {
   const ContactPointData<double> pts[2] = {point(460.0, 2.0, 0.0, 0.5 / 460.0, 0.5 / 300.0), {}};
   const PolachParameters<double> p{};
-  const WheelForces<double> lifted = wheel_forces(pts, 0.0, rolling(20.0, 460.0), 80000.0, 1.2, p);
+  const WheelForces<double> lifted =
+      wheel_forces(pts, 0.0, rolling(20.0, 460.0), 80000.0, nadal_reference(1.2, 0.36), p);
   EXPECT_EQ(lifted.derailment_status, Status::out_of_range);
   EXPECT_EQ(lifted.point[0].normal_n, 0.0);
   EXPECT_TRUE(std::isfinite(lifted.derailment.margin));
@@ -151,8 +164,10 @@ TEST(WheelContact, LiftedWheelAndFloat) {
   WheelKinematics<float> kf{20.0F, 0.0F, 0.001F, 0.0F, static_cast<float>(k.axle_spin_rad_s),
                             750.0F};
   const PolachParameters<float> pfp{};
-  const WheelForces<double> d = wheel_forces(pts, 70000.0, k, 80000.0, 1.2, p);
-  const WheelForces<float> f = wheel_forces(pf, 70000.0F, kf, 80000.0F, 1.2F, pfp);
+  const WheelForces<double> d =
+      wheel_forces(pts, 70000.0, k, 80000.0, nadal_reference(1.2, 0.36), p);
+  const WheelForces<float> f =
+      wheel_forces(pf, 70000.0F, kf, 80000.0F, nadal_reference(1.2F, 0.36F), pfp);
   EXPECT_NEAR(f.point[0].creep.fx_n, d.point[0].creep.fx_n, 1e-4 * 70000.0);
   EXPECT_NEAR(f.point[0].creep.fy_n, d.point[0].creep.fy_n, 1e-4 * 70000.0);
   EXPECT_NEAR(f.derailment.y_over_q, d.derailment.y_over_q, 1e-5);
