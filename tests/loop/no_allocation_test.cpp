@@ -3,14 +3,20 @@
 // malloc/calloc/realloc in this process is counted. The count must stay zero.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdlib>
 #include <new>
+#include <vector>
 
+#include "contact/contact_mechanics.hpp"
+#include "contact/contact_setup.hpp"
 #include "golden_path.hpp"
 #include "loop/loop_runner.hpp"
 #include "mf/mf_parameters_from_tir.hpp"
+#include "node/contact_table_channel.hpp"
 #include "node/mf_tyre_channel.hpp"
+#include "node/rail_force_channel.hpp"
 #include "node/test_channels.hpp"
 #include "proto/rig_link.hpp"
 #include "stub/fake_gpio.hpp"
@@ -102,6 +108,84 @@ TEST(NoAllocation, HundredThousandCyclesOfTheFullLoopAllocateNothing) {
   EXPECT_EQ(node.counters().non_finite_outputs, 0U);
   EXPECT_GT(rig.accepted(), 13U * kCycles * 99U / 100U);
   EXPECT_NE(outputs.wheels[0].fx_n, 0.0F);
+}
+
+TEST(NoAllocation, WheelRailForcesInTheLoopAllocateNothing) {
+  // ---- init: the contact and mechanics tables of S1002 on 60E1 (may allocate) ----
+  contact::ContactSetup setup;
+  setup.wheel_spec = "S1002";
+  setup.rail_spec = "60E1";
+  const contact::RigidContact c = contact::build_contact(setup);
+  const contact::ContactTable t = c.table(-10.0, 10.0, 0.1);
+  std::vector<rail::ContactRowF32> rows(t.y_mm.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    rows[i] = {static_cast<float>(t.r_left_mm[i]), static_cast<float>(t.r_right_mm[i]),
+               static_cast<float>(t.delta_r_mm[i]), static_cast<float>(t.gamma_left_rad[i]),
+               static_cast<float>(t.gamma_right_rad[i])};
+  }
+  const rail::ContactTableF32 table{-10.0F, 0.1F, static_cast<std::uint32_t>(rows.size()),
+                                    rows.data()};
+  const std::vector<rail::MechanicsRowF32> mech =
+      contact::mechanics_rows_f32(contact::mechanics_table(c, -10.0, 10.0, 0.1, {}));
+  const rail::MechanicsTableF32 mech_table{-10.0F, 0.1F, static_cast<std::uint32_t>(mech.size()),
+                                           mech.data()};
+  std::array<node::NoTyre, 1> tyres{};
+  std::array<node::ContactTableChannel, 2> contacts{node::ContactTableChannel(table),
+                                                    node::ContactTableChannel(table)};
+  std::array<node::RailForceTableChannel, 2> forces{
+      node::RailForceTableChannel(mech_table, node::RailForceSettings{}),
+      node::RailForceTableChannel(mech_table, node::RailForceSettings{})};
+  node::NodeConfig config{proto::Layout::classic,   0,    2, 10 * kMs,
+                          node::Schedule::periodic, true, 3};
+  config.wheelset_forces = 2;
+  node::Node<node::NoTyre, node::ContactTableChannel, node::RailForceTableChannel> node(
+      config, tyres, contacts, forces);
+  hal::SimClock clock(0);
+  hal::StubCanNetwork net(&hal::clock_now<hal::SimClock>, &clock);
+  hal::FakeGpio<hal::SimClock, 16> pin(clock);
+  hal::NoObserver observer;
+  hal::LoopRunner loop(node, net.endpoint(0), clock, pin, hal::LoopConfig{}, observer);
+  proto::RigLink rig(proto::Layout::classic, 0, 2, 2);
+  std::array<proto::CanFrame, proto::RigLink::kMaxRigFrames> frames{};
+  proto::NodeData outputs{};
+  proto::RigData inputs{};
+
+  // ---- the measured region: a slow sweep over tread and flange, yawed, both wheelsets ----
+  g_allocations = 0;
+  g_counting = true;
+  constexpr std::uint32_t kCycles = 100'000;
+  float worst_y_over_q = 0.0F;
+  for (std::uint32_t c_i = 0; c_i < kCycles; ++c_i) {
+    const float phase = static_cast<float>(c_i % 4000) / 4000.0F;
+    for (std::size_t j = 0; j < 2; ++j) {
+      proto::WheelsetInput& w = inputs.wheelsets[j];
+      w.lateral_mm = (j == 0 ? 1.0F : -1.0F) * (18.0F * phase - 9.0F);
+      w.yaw_rad = 0.004F * (phase - 0.5F);
+      w.yaw_valid = true;
+      w.speed_mps = 30.0F;
+      w.lateral_velocity_mps = 0.02F;
+      w.yaw_rate_radps = 0.01F;
+      w.load_left_n = 80000.0F;
+      w.load_right_n = 75000.0F;
+    }
+    inputs.rig_cycle = c_i;
+    const std::size_t n = rig.encode_cycle(inputs, frames);
+    for (std::size_t k = 0; k < n; ++k) {
+      static_cast<void>(net.endpoint(1).send(frames[k]));
+    }
+    loop.run_periodic_cycle();
+    proto::CanFrame f{};
+    while (net.endpoint(1).receive(f) == Status::ok) {
+      static_cast<void>(rig.receive(f, outputs));
+    }
+    worst_y_over_q = std::max(worst_y_over_q, outputs.rail_wheels[0].y_over_q);
+  }
+  g_counting = false;
+
+  EXPECT_EQ(g_allocations.load(), 0U);
+  EXPECT_EQ(node.counters().non_finite_outputs, 0U);
+  EXPECT_GT(worst_y_over_q, 1.0F);  // the sweep reached the flange
+  EXPECT_NE(outputs.rail_wheels[3].q_n, 0.0F);
 }
 
 }  // namespace
