@@ -55,8 +55,7 @@ contact::ContactSetup parse_wheelset_profile(const std::string& spec) {
 }
 
 void NodeRuntime::build_forces(const contact::RigidContact& contact, const NodeSettings& settings,
-                               double y_first_mm, double y_last_mm, double step_mm,
-                               const contact::ContactSetup& setup) {
+                               double y_first_mm, double y_last_mm, double step_mm) {
   const std::vector<contact::MechanicsRow> table =
       contact::mechanics_table(contact, y_first_mm, y_last_mm, step_mm, settings.materials);
   mechanics_rows_ = contact::mechanics_rows_f32(table);
@@ -72,8 +71,9 @@ void NodeRuntime::build_forces(const contact::RigidContact& contact, const NodeS
                             static_cast<float>(p.k_slip)};
   force_settings_.flange_angle_left_rad = static_cast<float>(flange.left_rad);
   force_settings_.flange_angle_right_rad = static_cast<float>(flange.right_rad);
-  force_settings_.r0_mm =
-      static_cast<float>(0.5 * (setup.r0_mm + setup.r0_right_mm.value_or(setup.r0_mm)));
+  // A free axle spins so that it rolls without longitudinal creep at the centred position.
+  const contact::ContactState centred = contact.at(0.0);
+  force_settings_.r0_mm = static_cast<float>(0.5 * (centred.left.r_mm + centred.right.r_mm));
   force_settings_.half_contact_base_mm = static_cast<float>(contact::kTrackFrameOrigin_mm);
   for (auto& f : forces_) {
     f = node::RailForceTableChannel(mechanics_, force_settings_);
@@ -169,8 +169,7 @@ NodeRuntime::NodeRuntime(const NodeSettings& settings) {
         throw std::runtime_error(
             "wheel-rail forces (--wheelset-forces) run in float only, not with --fixed");
       }
-      build_forces(contact, settings, t.y_first_mm, t.y_mm.back(), t.y_step_mm,
-                   parse_wheelset_profile(settings.wheelset_profile));
+      build_forces(contact, settings, t.y_first_mm, t.y_mm.back(), t.y_step_mm);
     }
     for (auto& c : contacts_fixed_) {
       c = node::ContactTableChannelFixed(table_q_);

@@ -89,8 +89,7 @@ class NodeRuntime {
 
  private:
   void build_forces(const contact::RigidContact& contact, const NodeSettings& settings,
-                    double y_first_mm, double y_last_mm, double step_mm,
-                    const contact::ContactSetup& setup);
+                    double y_first_mm, double y_last_mm, double step_mm);
 
   mf::MfParameters<double> params_double_{};
   mf::MfParameters<float> params_{};

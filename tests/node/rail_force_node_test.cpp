@@ -79,7 +79,9 @@ rail::WheelForces<double> reference(bool right, const proto::WheelsetInput& in) 
   state.yaw_rad = in.yaw_rad;
   state.load_left_n = in.load_left_n;
   state.load_right_n = in.load_right_n;
-  return contact::evaluate_wheel(right ? row.right : row.left, right, state, 460.0,
+  // The node's axle spins at V / r with r the mean rolling radius at y = 0.
+  static const double r_spin = 0.5 * (c.at(0.0).left.r_mm + c.at(0.0).right.r_mm);
+  return contact::evaluate_wheel(right ? row.right : row.left, right, state, r_spin,
                                  contact::kTrackFrameOrigin_mm, m,
                                  right ? flange.right_rad : flange.left_rad,
                                  contact::friction_parameters("kalker"), contact::CreepLaw::polach);

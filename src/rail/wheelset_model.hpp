@@ -1,0 +1,110 @@
+#pragma once
+// A suspended wheelset on straight track: lateral displacement y and yaw angle psi, held to a frame
+// that runs straight at the speed V by lateral and yaw springs and dampers (the primary
+// suspension), driven by the wheel-rail contact forces (the classic two-degree-of-freedom model of
+// wheelset hunting, e.g. Wickens):
+//     m y''   = F_y(contact) - k_y y - c_y y'
+//     I psi'' = M_z(contact) - k_psi psi - c_psi psi'
+// with the contact's generalised forces from each wheel's Y (rail on wheel, toward the track
+// centre), longitudinal creep force Fx and spin moment (rail/wheel_contact.hpp, the node's
+// RailWheel outputs):
+//     F_y = Y_right - Y_left,   M_z = -e0 (Fx_left - Fx_right) + Mz_left - Mz_right.
+// (The left wheel sits at +e0, toward +y; the right wheel's spin moment is in its mirrored frame.)
+//
+// One step of length dt is linearly implicit in the velocities: with D the derivative of the
+// contact forces with respect to the velocities (the creep damping, which grows as 1/V and makes
+// an explicit step unstable at low speed),
+//     (M - dt (D - C)) dv = dt (F - K q - C v),   v += dv,   q += dt v.
+// The forces F are those of this step (the node's answer); D only steadies the step, so any fair
+// estimate of it keeps the scheme consistent.
+//
+// Fixed-size Eigen types, no heap (EIGEN_NO_MALLOC in every unit that includes this).
+
+#ifndef EIGEN_NO_MALLOC
+#define EIGEN_NO_MALLOC
+#endif
+#include <Eigen/Dense>
+
+namespace tread::rail {
+
+template <typename T>
+using Vector2 = Eigen::Matrix<T, 2, 1>;
+template <typename T>
+using Matrix2 = Eigen::Matrix<T, 2, 2>;
+
+template <typename T>
+struct WheelsetParams {
+  T mass_kg{1500};
+  T yaw_inertia_kgm2{800};
+  T lateral_stiffness_n_per_m{1.0e6};    ///< k_y (both sides together)
+  T yaw_stiffness_nm_per_rad{1.0e6};     ///< k_psi = 2 k_x b^2 (k_x 0.5 MN/m at b = 1 m)
+  T lateral_damping_ns_per_m{0};         ///< c_y
+  T yaw_damping_nms_per_rad{0};          ///< c_psi
+  T half_contact_base_m{static_cast<T>(0.75)};  ///< e0
+  T wheel_load_n{80000};                 ///< static vertical load per wheel (16.3 t axle)
+};
+
+/// Wheelset state: q = (y [m], psi [rad]), v = (y', psi').
+template <typename T>
+struct WheelsetState {
+  Vector2<T> q = Vector2<T>::Zero();
+  Vector2<T> v = Vector2<T>::Zero();
+};
+
+/// One wheel's contact forces as the node answers them (N, N m).
+template <typename T>
+struct WheelContactForces {
+  T y_n{};    ///< rail on wheel, toward the track centre
+  T fx_n{};   ///< longitudinal creep force, forward
+  T mz_nm{};  ///< spin moment in the wheel's own frame
+};
+
+/// The generalised contact forces (F_y [N], M_z [N m]) on the wheelset.
+template <typename T>
+Vector2<T> contact_generalised_force(const WheelContactForces<T>& left,
+                                     const WheelContactForces<T>& right,
+                                     T half_contact_base_m) noexcept {
+  return Vector2<T>(right.y_n - left.y_n,
+                    -half_contact_base_m * (left.fx_n - right.fx_n) + left.mz_nm - right.mz_nm);
+}
+
+template <typename T>
+Matrix2<T> mass_matrix(const WheelsetParams<T>& p) noexcept {
+  return Vector2<T>(p.mass_kg, p.yaw_inertia_kgm2).asDiagonal();
+}
+template <typename T>
+Matrix2<T> suspension_stiffness(const WheelsetParams<T>& p) noexcept {
+  return Vector2<T>(p.lateral_stiffness_n_per_m, p.yaw_stiffness_nm_per_rad).asDiagonal();
+}
+template <typename T>
+Matrix2<T> suspension_damping(const WheelsetParams<T>& p) noexcept {
+  return Vector2<T>(p.lateral_damping_ns_per_m, p.yaw_damping_nms_per_rad).asDiagonal();
+}
+
+/// Advances the state by dt under the contact force F (this step's) with creep damping D.
+template <typename T>
+void wheelset_step(WheelsetState<T>& s, const Vector2<T>& contact_force,
+                   const Matrix2<T>& contact_damping, const WheelsetParams<T>& p, T dt) noexcept {
+  const Matrix2<T> c = suspension_damping(p);
+  const Matrix2<T> lhs = mass_matrix(p) - dt * (contact_damping - c);
+  const Vector2<T> rhs = dt * (contact_force - suspension_stiffness(p) * s.q - c * s.v);
+  const Vector2<T> dv = lhs.partialPivLu().solve(rhs);
+  s.v += dv;
+  s.q += dt * s.v;
+}
+
+/// The first-order system matrix of the linearised wheelset, state (y, psi, y', psi'):
+///     A = [[0, I], [M^-1 (K_c - K), M^-1 (D_c - C)]]
+/// with K_c, D_c the contact forces' derivatives with respect to q and v at the equilibrium.
+template <typename T>
+Eigen::Matrix<T, 4, 4> system_matrix(const WheelsetParams<T>& p, const Matrix2<T>& contact_stiffness,
+                                     const Matrix2<T>& contact_damping) noexcept {
+  const Matrix2<T> m_inv = mass_matrix(p).inverse();
+  Eigen::Matrix<T, 4, 4> a = Eigen::Matrix<T, 4, 4>::Zero();
+  a.template block<2, 2>(0, 2) = Matrix2<T>::Identity();
+  a.template block<2, 2>(2, 0) = m_inv * (contact_stiffness - suspension_stiffness(p));
+  a.template block<2, 2>(2, 2) = m_inv * (contact_damping - suspension_damping(p));
+  return a;
+}
+
+}  // namespace tread::rail
