@@ -1,14 +1,19 @@
 // `tread demo`: the README's main job — node + rig scenarios on the in-process CAN bus (or --can
 // vcan0), summary, trace and plots.
+#include <algorithm>
 #include <iostream>
 #include <stdexcept>
 
 #include "cli/commands.hpp"
 #include "cli/node_options.hpp"
 #include "rig/hil_demo.hpp"
+#include "rig/scenario_catalogue.hpp"
 
 namespace tread::cli {
 namespace {
+
+/// The wheel/rail pair of the dynamic-hunting scenario unless --wheelset-profile is given.
+constexpr const char* kDynamicHuntingProfile = "wheel=EPS,rail=60E1,cant=1:40";
 
 void add_demo_command(CLI::App& app) {
   auto* demo =
@@ -29,7 +34,11 @@ void add_demo_command(CLI::App& app) {
   demo->add_option(
           "--scenario", settings.scenarios,
           "scenarios to run, in order (default: braking, step-steer, sine-dwell with 4 "
-          "wheels; hunting with wheelsets): braking, step-steer, sine-dwell, hunting, sweep")
+          "wheels; hunting with wheelsets): braking, step-steer, sine-dwell, hunting, "
+          "dynamic-hunting, sweep. dynamic-hunting turns on the node's wheel-rail forces for "
+          "wheelset 0 and, without --wheelset-profile, runs on " +
+              std::string(kDynamicHuntingProfile) +
+              " (smooth contact near the centre; S1002 on 60E1 1:40 has a delta r jump at y = 0)")
       ->delimiter(',');
   demo->add_option("--sweep-duration-s", settings.sweep_duration_s,
                    "length of the 'sweep' scenario (tyre test machine sweeps)")
@@ -49,7 +58,18 @@ void add_demo_command(CLI::App& app) {
       "--no-plot", [](std::int64_t) { settings.plot = false; }, "write the trace but no plot");
   demo->add_option("--log", settings.log,
                    "candump log of the node's traffic (replay with tread node --replay)");
-  demo->callback([] {
+  demo->callback([demo] {
+    // The dynamic-hunting scenario runs on the node's wheel-rail forces.
+    const bool dynamic =
+        std::any_of(settings.scenarios.begin(), settings.scenarios.end(),
+                    [](const std::string& n) { return host::needs_wheelset_forces(n); });
+    if (dynamic) {
+      state.wheelsets = std::max(state.wheelsets, 1);
+      state.wheelset_forces = std::max(state.wheelset_forces, 1);
+      if (demo->get_option("--wheelset-profile")->count() == 0) {
+        state.settings.wheelset_profile = kDynamicHuntingProfile;
+      }
+    }
     settings.node = node_settings(state);
     settings.sim_clock = clock == "sim";
     const host::DemoResult result = host::run_demo(settings);

@@ -15,6 +15,7 @@ void add_rig_command(CLI::App& app) {
   static bool fd = false;
   static int wheels = 4;
   static int wheelsets = 0;
+  static int wheelset_forces = 0;
   cmd->add_option("--can", settings.can, "SocketCAN interface")->capture_default_str();
   cmd->add_flag("--fd", fd, "CAN FD layout");
   cmd->add_option("--tir", settings.tir, "the node's tyre property file (the reference)");
@@ -26,8 +27,17 @@ void add_rig_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--wheelset-profile", settings.wheelset_profile,
                   "the node's wheelset profile (the reference), as for tread node");
+  cmd->add_option("--wheelset-forces", wheelset_forces,
+                  "the node's --wheelset-forces (wheelsets it answers wheel-rail forces for)")
+      ->check(CLI::Range(0, 2))
+      ->capture_default_str();
+  cmd->add_option("--friction", settings.friction, "the node's --friction (kalker, dry, wet)")
+      ->check(CLI::IsMember({"kalker", "dry", "wet"}))
+      ->capture_default_str();
+  cmd->add_option("--mu", settings.mu, "the node's --mu")->check(CLI::PositiveNumber);
   cmd->add_option("--scenario", settings.scenarios,
-                  "scenarios, in order: braking, step-steer, sine-dwell, hunting, sweep")
+                  "scenarios, in order: braking, step-steer, sine-dwell, hunting, "
+                  "dynamic-hunting, sweep")
       ->delimiter(',');
   cmd->add_option("--sweep-duration-s", settings.sweep_duration_s, "length of 'sweep'")
       ->check(CLI::Range(0.001, 3600.0))
@@ -51,6 +61,7 @@ void add_rig_command(CLI::App& app) {
     settings.layout = fd ? proto::Layout::fd : proto::Layout::classic;
     settings.wheels = static_cast<std::uint8_t>(wheels);
     settings.wheelsets = static_cast<std::uint8_t>(wheelsets);
+    settings.wheelset_forces = static_cast<std::uint8_t>(wheelset_forces);
     if (settings.wheels > 0 && settings.tir.empty()) {
       throw CLI::ValidationError("--tir", "road wheels need the node's tyre file");
     }

@@ -24,6 +24,10 @@ ScenarioContext context_of(const DemoSettings& s) {
   c.tir = s.node.tir;
   c.wheels = s.node.node.wheels;
   c.wheelsets = s.node.node.wheelsets;
+  c.wheelset_forces = s.node.node.wheelset_forces;
+  c.friction = s.node.friction;
+  c.mu = s.node.mu;
+  c.materials = s.node.materials;
   c.wheelset_profile = s.node.wheelset_profile;
   c.wheelset_ymax_mm = s.node.wheelset_ymax_mm;
   c.wheelset_step_mm = s.node.wheelset_step_mm;
@@ -60,7 +64,7 @@ DemoResult co_simulate(const DemoSettings& s, NodeRuntime& runtime, ClockT& cloc
   loop_config.period_ns = s.period_us * 1000;
   return runtime.visit([&](auto& node) {
     hal::LoopRunner loop(node, node_bus, clock, pin, loop_config, recorder);
-    proto::RigLink link(cfg.layout, cfg.wheels, cfg.wheelsets);
+    proto::RigLink link(cfg.layout, cfg.wheels, cfg.wheelsets, cfg.wheelset_forces);
     const double dt_s = static_cast<double>(s.period_us) * 1e-6;
     std::filesystem::create_directories(s.out_dir);
 
@@ -69,8 +73,8 @@ DemoResult co_simulate(const DemoSettings& s, NodeRuntime& runtime, ClockT& cloc
     // Outcomes (results, reference runs, traces, plots) after the last cycle, as `tread rig` does.
     std::vector<std::unique_ptr<ScenarioRunner>> runners;
     for (auto& scenario : scenarios) {
-      runners.push_back(std::make_unique<ScenarioRunner>(*scenario, link, cfg.layout, cfg.wheels,
-                                                         cfg.wheelsets, reference));
+      runners.push_back(std::make_unique<ScenarioRunner>(
+          *scenario, link, cfg.layout, cfg.wheels, cfg.wheelsets, reference, cfg.wheelset_forces));
       ScenarioRunner& runner = *runners.back();
       while (!runner.done()) {
         for (const proto::CanFrame& f : runner.begin_cycle(runner.time_s(), rig_cycle++)) {

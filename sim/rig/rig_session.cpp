@@ -17,6 +17,9 @@ RigReport run_rig(const RigSettings& s) {
   context.tir = s.tir;
   context.wheels = s.wheels;
   context.wheelsets = s.wheelsets;
+  context.wheelset_forces = s.wheelset_forces;
+  context.friction = s.friction;
+  context.mu = s.mu;
   context.wheelset_profile = s.wheelset_profile;
   context.wheelset_ymax_mm = s.wheelset_ymax_mm;
   context.wheelset_step_mm = s.wheelset_step_mm;
@@ -41,7 +44,7 @@ RigReport run_rig(const RigSettings& s) {
   open_protocol_socket(bus, s.can, s.layout, proto::Direction::node_to_rig);
   RigReport r;
   r.receive_buffer_bytes = bus.receive_buffer_bytes();
-  proto::RigLink link(s.layout, s.wheels, s.wheelsets);
+  proto::RigLink link(s.layout, s.wheels, s.wheelsets, s.wheelset_forces);
   hal::PosixClock clock;
   const std::int64_t period_ns = (s.pace_us > 0 ? s.pace_us : s.period_us) * 1000;
   const auto timeout_ns = static_cast<std::int64_t>(s.answer_timeout_ms * 1e6);
@@ -76,7 +79,7 @@ RigReport run_rig(const RigSettings& s) {
   std::vector<std::unique_ptr<ScenarioRunner>> runners;
   for (auto& scenario : scenarios) {
     runners.push_back(std::make_unique<ScenarioRunner>(*scenario, link, s.layout, s.wheels,
-                                                       s.wheelsets, reference));
+                                                       s.wheelsets, reference, s.wheelset_forces));
     ScenarioRunner& runner = *runners.back();
     while (!runner.done()) {
       // Anything that arrived between cycles is not this cycle's answer (e.g. the node's

@@ -26,6 +26,9 @@ struct RigSettings {
   proto::Layout layout{proto::Layout::classic};
   std::uint8_t wheels{4};
   std::uint8_t wheelsets{0};
+  std::uint8_t wheelset_forces{0};  ///< the node's --wheelset-forces
+  std::string friction{"kalker"};   ///< the node's --friction and --mu (the reference)
+  double mu{0.0};
   std::filesystem::path tir;      ///< the node's tyre file (the reference)
   std::string wheelset_profile;   ///< the node's wheelset profile (the reference)
   double wheelset_ymax_mm{12.0};  ///< the node's contact table range and step

@@ -4,6 +4,7 @@
 
 #include "contact/contact_setup.hpp"
 #include "node/node_runtime.hpp"
+#include "rig/dynamic_hunting_scenario.hpp"
 #include "rig/hunting_scenario.hpp"
 #include "rig/sweep_scenario.hpp"
 #include "rig/vehicle_scenario.hpp"
@@ -11,7 +12,7 @@
 namespace tread::host {
 
 std::vector<std::string> scenario_names() {
-  return {"braking", "step-steer", "sine-dwell", "hunting", "sweep"};
+  return {"braking", "step-steer", "sine-dwell", "hunting", "dynamic-hunting", "sweep"};
 }
 
 std::vector<std::string> default_scenarios(const ScenarioContext& context) {
@@ -26,6 +27,10 @@ std::vector<std::string> default_scenarios(const ScenarioContext& context) {
     names.emplace_back("sweep");
   }
   return names;
+}
+
+bool needs_wheelset_forces(const std::string& name) {
+  return name == "dynamic-hunting";
 }
 
 std::unique_ptr<RigScenario> make_scenario(const std::string& name,
@@ -50,6 +55,21 @@ std::unique_ptr<RigScenario> make_scenario(const std::string& name,
     s.ymax_mm = context.wheelset_ymax_mm;
     s.step_mm = context.wheelset_step_mm;
     return std::make_unique<HuntingScenario>(s);
+  }
+  if (name == "dynamic-hunting") {
+    if (context.wheelsets == 0 || context.wheelset_forces == 0) {
+      throw std::invalid_argument(
+          "scenario 'dynamic-hunting' needs a wheelset with wheel-rail forces (--wheelsets 1 "
+          "--wheelset-forces 1)");
+    }
+    DynamicHuntingSettings s;
+    s.wheelset_profile = context.wheelset_profile;
+    s.ymax_mm = context.wheelset_ymax_mm;
+    s.step_mm = context.wheelset_step_mm;
+    s.friction = context.friction;
+    s.mu = context.mu;
+    s.materials = context.materials;
+    return std::make_unique<DynamicHuntingScenario>(s);
   }
   std::string known;
   for (const std::string& n : scenario_names()) {

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/contact_mechanics.hpp"
 #include "contact/rigid_contact.hpp"
 #include "rig/rig_scenario.hpp"
 
@@ -14,7 +15,11 @@ struct ScenarioContext {
   std::filesystem::path tir;  ///< the node's tyre file (road scenarios)
   std::uint8_t wheels{4};
   std::uint8_t wheelsets{2};
-  std::string wheelset_profile;  ///< the node's wheelset profile (rail scenarios)
+  std::uint8_t wheelset_forces{0};  ///< wheelsets the node serves wheel-rail forces for
+  std::string wheelset_profile;     ///< the node's wheelset profile (rail scenarios)
+  std::string friction{"kalker"};   ///< the node's Polach parameters and materials
+  double mu{0.0};
+  contact::ContactMaterials materials{};
   double wheelset_ymax_mm{12.0};
   double wheelset_step_mm{0.1};
   double sweep_duration_s{4.0};
@@ -25,6 +30,8 @@ struct ScenarioContext {
 std::vector<std::string> scenario_names();
 /// The scenarios `tread demo` runs by default for this channel configuration.
 std::vector<std::string> default_scenarios(const ScenarioContext& context);
+/// Whether a scenario needs the node's wheel-rail forces (dynamic-hunting).
+bool needs_wheelset_forces(const std::string& name);
 /// Throws std::invalid_argument for an unknown name or one the channels cannot run.
 std::unique_ptr<RigScenario> make_scenario(const std::string& name, const ScenarioContext& context);
 /// Every scenario of a run, built (and so checked) before the first cycle; `names` empty: the

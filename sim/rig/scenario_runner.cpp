@@ -23,7 +23,7 @@ void AnswerCheck::add(const AnswerCheck& other) {
 
 ScenarioRunner::ScenarioRunner(RigScenario& scenario, proto::RigLink& link, proto::Layout layout,
                                std::uint8_t wheels, std::uint8_t wheelsets,
-                               const RigReference& reference)
+                               const RigReference& reference, std::uint8_t wheelset_forces)
     : scenario_(scenario),
       wheels_(wheels),
       wheelsets_(wheelsets),
@@ -46,8 +46,11 @@ ScenarioRunner::ScenarioRunner(RigScenario& scenario, proto::RigLink& link, prot
                          role <= static_cast<unsigned>(proto::Role::wheel_status);
       const bool wheelset = role >= static_cast<unsigned>(proto::Role::r_left) &&
                             role <= static_cast<unsigned>(proto::Role::ws_status);
+      const bool rail_wheel = role >= static_cast<unsigned>(proto::Role::rw_fx) &&
+                              role <= static_cast<unsigned>(proto::Role::rw_status);
       sent = sent || (wheel && channel >= 0 && channel < wheels) ||
-             (wheelset && channel >= 0 && channel < wheelsets);
+             (wheelset && channel >= 0 && channel < wheelsets) ||
+             (rail_wheel && channel >= 0 && channel / 2 < wheelset_forces);
     }
     if (sent) {
       expected_mask_ |= std::uint64_t{1} << m;

@@ -41,8 +41,10 @@ struct AnswerCheck {
 class ScenarioRunner {
  public:
   /// `link` carries the E2E counters of the session: one link for every scenario of a run.
+  /// `wheelset_forces`: how many of the wheelsets the node answers wheel-rail forces for.
   ScenarioRunner(RigScenario& scenario, proto::RigLink& link, proto::Layout layout,
-                 std::uint8_t wheels, std::uint8_t wheelsets, const RigReference& reference);
+                 std::uint8_t wheels, std::uint8_t wheelsets, const RigReference& reference,
+                 std::uint8_t wheelset_forces = 0);
 
   /// The frames of the cycle at `t_s` (the cycle frame last).
   std::span<const proto::CanFrame> begin_cycle(double t_s, std::uint32_t rig_cycle);

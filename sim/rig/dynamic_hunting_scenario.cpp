@@ -1,0 +1,423 @@
+#include "rig/dynamic_hunting_scenario.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "contact/contact_setup.hpp"
+#include "contact/equivalent_conicity.hpp"
+#include "contact/klingel.hpp"
+#include "node/node_runtime.hpp"
+#include "plot/gnuplot.hpp"
+
+namespace tread::host {
+namespace {
+
+contact::RigidContact build(const DynamicHuntingSettings& s) {
+  return contact::build_contact(parse_wheelset_profile(s.wheelset_profile));
+}
+
+double centred_radius_mm(const contact::RigidContact& c) {
+  const contact::ContactState centred = c.at(0.0);
+  return 0.5 * (centred.left.r_mm + centred.right.r_mm);
+}
+
+int phase_code(DynamicHuntingScenario::Phase p) {
+  return static_cast<int>(p);
+}
+
+const char* phase_name(DynamicHuntingScenario::Phase p) {
+  switch (p) {
+    case DynamicHuntingScenario::Phase::low_speed:
+      return "low speed";
+    case DynamicHuntingScenario::Phase::scan:
+      return "scan";
+    case DynamicHuntingScenario::Phase::refine:
+      return "refine";
+    case DynamicHuntingScenario::Phase::below:
+      return "below";
+    case DynamicHuntingScenario::Phase::above:
+      return "above";
+    case DynamicHuntingScenario::Phase::done:
+      break;
+  }
+  return "done";
+}
+
+}  // namespace
+
+DynamicHuntingScenario::DynamicHuntingScenario(const DynamicHuntingSettings& settings)
+    : settings_(settings),
+      contact_(build(settings)),
+      reference_(contact_.table(-settings.ymax_mm, settings.ymax_mm, settings.step_mm)),
+      model_(contact_, settings.materials,
+             contact::friction_parameters(settings.friction, settings.mu),
+             centred_radius_mm(contact_), settings.params.wheel_load_n,
+             settings.params.half_contact_base_m,
+             contact::flange_angles(contact::mechanics_table(contact_, -settings.ymax_mm,
+                                                             settings.ymax_mm, settings.step_mm,
+                                                             settings.materials))) {
+  if (settings_.scan_speeds_m_s.size() < 2) {
+    throw std::runtime_error("dynamic-hunting: need at least two scan speeds");
+  }
+  critical_linear_ =
+      linear_critical_speed(settings_.params, model_, 1.0, 1.5 * settings_.scan_speeds_m_s.back());
+  if (std::isfinite(critical_linear_)) {
+    mode_at_critical_ = least_damped_mode(settings_.params, model_, critical_linear_);
+  }
+  start(Phase::low_speed, settings_.low_speed_m_s, settings_.low_speed_amplitude_mm,
+        settings_.low_speed_run_s);
+}
+
+std::string DynamicHuntingScenario::description() const {
+  std::ostringstream s;
+  const rail::WheelsetParams<double>& p = settings_.params;
+  s << "suspended wheelset (m " << p.mass_kg << " kg, I " << p.yaw_inertia_kgm2 << " kg m^2, k_y "
+    << p.lateral_stiffness_n_per_m / 1e6 << " MN/m, k_psi " << p.yaw_stiffness_nm_per_rad / 1e6
+    << " MN m/rad, Q " << p.wheel_load_n / 1000.0 << " kN) on the node's wheel-rail forces ("
+    << settings_.wheelset_profile << ", Polach '" << settings_.friction << "')";
+  return s.str();
+}
+
+double DynamicHuntingScenario::duration_s() const {
+  // Upper bound: every run of the plan; finished() ends it when the plan is done.
+  const DynamicHuntingSettings& s = settings_;
+  return s.low_speed_run_s +
+         s.run_s * static_cast<double>(s.scan_speeds_m_s.size() +
+                                       static_cast<std::size_t>(s.refinements) + 1U) +
+         s.above_run_s + 1.0;
+}
+
+void DynamicHuntingScenario::start(Phase phase, double speed_m_s, double y0_mm, double duration_s) {
+  phase_ = phase;
+  speed_ = speed_m_s;
+  run_duration_ = duration_s;
+  run_t_ = 0.0;
+  state_ = rail::WheelsetState<double>{};
+  state_.q(0) = y0_mm * 1e-3;
+  const WheelsetContactModel::Linearisation lin = model_.linearise(speed_m_s);
+  jacobian_ = rail::system_matrix(settings_.params, lin.stiffness, lin.damping);
+  force_.setZero();
+  answer_[0] = answer_[1] = proto::RailWheelOutput{};
+  run_time_.clear();
+  run_y_.clear();
+  const auto n = static_cast<std::size_t>(duration_s * 1000.0) + 2;
+  run_time_.reserve(n);
+  run_y_.reserve(n);
+  current_ = Run{};
+  current_.phase = phase;
+  current_.speed_m_s = speed_m_s;
+  current_.min_nadal_margin = 1e9;
+}
+
+void DynamicHuntingScenario::inputs(double /*t_s*/, proto::RigData& data) {
+  if (phase_ == Phase::done) {
+    return;
+  }
+  proto::WheelsetInput& w = data.wheelsets[0];
+  w.lateral_mm = static_cast<float>(state_.q(0) * 1000.0);
+  w.yaw_rad = static_cast<float>(state_.q(1));
+  w.yaw_valid = true;
+  w.speed_mps = static_cast<float>(speed_);
+  w.lateral_velocity_mps = static_cast<float>(state_.v(0));
+  w.yaw_rate_radps = static_cast<float>(state_.v(1));
+  w.load_left_n = static_cast<float>(settings_.params.wheel_load_n);
+  w.load_right_n = static_cast<float>(settings_.params.wheel_load_n);
+}
+
+void DynamicHuntingScenario::advance(const proto::RigData& /*inputs_seen*/,
+                                     const proto::NodeData& answers, double dt_s) {
+  if (phase_ == Phase::done) {
+    return;
+  }
+  // A stale or flagged answer carries no forces: hold the last ones rather than drop them.
+  if (answers.rail_wheels[0].status == 0U && answers.rail_wheels[1].status == 0U) {
+    answer_[0] = answers.rail_wheels[0];
+    answer_[1] = answers.rail_wheels[1];
+    const auto wheel = [](const proto::RailWheelOutput& o) {
+      return rail::WheelContactForces<double>{
+          static_cast<double>(o.y_n), static_cast<double>(o.fx_n), static_cast<double>(o.mz_nm)};
+    };
+    force_ = rail::contact_generalised_force(wheel(answer_[0]), wheel(answer_[1]),
+                                             settings_.params.half_contact_base_m);
+  }
+  rail::wheelset_step(state_, force_, jacobian_, settings_.params, dt_s);
+  run_t_ += dt_s;
+  run_time_.push_back(run_t_);
+  run_y_.push_back(state_.q(0) * 1000.0);
+  for (const proto::RailWheelOutput& w : answer_) {
+    current_.max_y_over_q = std::max(current_.max_y_over_q, static_cast<double>(w.y_over_q));
+    current_.min_nadal_margin =
+        std::min(current_.min_nadal_margin, static_cast<double>(w.nadal_margin));
+  }
+  row_ = {static_cast<double>(runs_.size()),
+          static_cast<double>(phase_code(phase_)),
+          speed_,
+          run_t_,
+          state_.q(0) * 1000.0,
+          state_.q(1) * 1000.0,
+          static_cast<double>(answer_[0].y_n),
+          static_cast<double>(answer_[1].y_n),
+          static_cast<double>(answer_[0].y_over_q),
+          static_cast<double>(answer_[1].y_over_q),
+          static_cast<double>(answer_[0].nadal_margin),
+          static_cast<double>(answer_[1].nadal_margin)};
+  if (run_t_ >= run_duration_ - 1e-9) {
+    finish_run();
+  }
+}
+
+double DynamicHuntingScenario::growth_rate(const std::vector<double>& t,
+                                           const std::vector<double>& y, double cap_mm) {
+  // The largest |y| of each half swing (between zero crossings) after the first one (the start is
+  // not on the mode's shape), up to cap_mm (beyond it the flanges bound a growing motion: no longer
+  // the small-amplitude growth); ln(peak) against time by least squares. A fast growth that passes
+  // the cap within three half swings is measured on its first three.
+  std::vector<double> pt;
+  std::vector<double> pa;
+  double peak = 0.0;
+  double peak_t = 0.0;
+  int crossings = 0;
+  for (std::size_t i = 1; i < y.size(); ++i) {
+    if (std::abs(y[i]) > peak) {
+      peak = std::abs(y[i]);
+      peak_t = t[i];
+    }
+    if ((y[i - 1] < 0.0) != (y[i] < 0.0)) {
+      if (++crossings > 1 && peak > 0.0 && (peak < cap_mm || pt.size() < 3)) {
+        pt.push_back(peak_t);
+        pa.push_back(std::log(peak));
+      }
+      peak = 0.0;
+    }
+  }
+  if (pt.size() < 3) {
+    return std::nan("");
+  }
+  double st = 0.0;
+  double sa = 0.0;
+  double stt = 0.0;
+  double sta = 0.0;
+  for (std::size_t k = 0; k < pt.size(); ++k) {
+    st += pt[k];
+    sa += pa[k];
+    stt += pt[k] * pt[k];
+    sta += pt[k] * pa[k];
+  }
+  const auto n = static_cast<double>(pt.size());
+  return (n * sta - st * sa) / (n * stt - st * st);
+}
+
+double DynamicHuntingScenario::wavelength(const std::vector<double>& t,
+                                          const std::vector<double>& y, double speed_m_s) {
+  // Mean time between upward zero crossings (interpolated): the symmetric wheelset oscillates about
+  // y = 0 however fast the motion decays.
+  std::vector<double> up;
+  for (std::size_t i = 1; i < y.size(); ++i) {
+    if (y[i - 1] < 0.0 && y[i] >= 0.0) {
+      up.push_back(t[i - 1] + (t[i] - t[i - 1]) * (-y[i - 1]) / (y[i] - y[i - 1]));
+    }
+  }
+  if (up.size() < 2) {
+    return std::nan("");
+  }
+  return speed_m_s * (up.back() - up.front()) / static_cast<double>(up.size() - 1);
+}
+
+void DynamicHuntingScenario::finish_run() {
+  Run& r = current_;
+  r.growth_rate_per_s = growth_rate(run_time_, run_y_, 3.0 * settings_.initial_y_mm);
+  r.wavelength_m = wavelength(run_time_, run_y_, speed_);
+  for (std::size_t i = 0; i < run_time_.size(); ++i) {
+    if (run_time_[i] > run_duration_ - 1.0) {
+      r.amplitude_mm = std::max(r.amplitude_mm, std::abs(run_y_[i]));
+    }
+  }
+  runs_.push_back(r);
+  const DynamicHuntingSettings& s = settings_;
+  const double sigma = r.growth_rate_per_s;
+  switch (r.phase) {
+    case Phase::low_speed:
+      start(Phase::scan, s.scan_speeds_m_s[0], s.initial_y_mm, s.run_s);
+      return;
+    case Phase::scan:
+      if (std::isfinite(sigma) && sigma > 0.0 && scan_index_ > 0 && lo_v_ > 0.0) {
+        hi_v_ = r.speed_m_s;
+        hi_sigma_ = sigma;
+      } else if (std::isfinite(sigma) && sigma <= 0.0) {
+        lo_v_ = r.speed_m_s;
+        lo_sigma_ = sigma;
+      }
+      if (hi_v_ > 0.0) {
+        refined_ = 0;
+        const double v = lo_v_ - lo_sigma_ * (hi_v_ - lo_v_) / (hi_sigma_ - lo_sigma_);
+        start(Phase::refine, v, s.initial_y_mm, s.run_s);
+        return;
+      }
+      if (++scan_index_ < s.scan_speeds_m_s.size()) {
+        start(Phase::scan, s.scan_speeds_m_s[scan_index_], s.initial_y_mm, s.run_s);
+        return;
+      }
+      break;  // no sign change on the scan: no critical speed found
+    case Phase::refine:
+      if (std::isfinite(sigma)) {
+        // Illinois: halve the retained end's value when the same end is kept twice.
+        if (sigma > 0.0) {
+          hi_v_ = r.speed_m_s;
+          hi_sigma_ = sigma;
+          if (side_ == 1) lo_sigma_ *= 0.5;
+          side_ = 1;
+        } else {
+          lo_v_ = r.speed_m_s;
+          lo_sigma_ = sigma;
+          if (side_ == -1) hi_sigma_ *= 0.5;
+          side_ = -1;
+        }
+      }
+      critical_ = lo_v_ - lo_sigma_ * (hi_v_ - lo_v_) / (hi_sigma_ - lo_sigma_);
+      if (++refined_ < s.refinements) {
+        start(Phase::refine, critical_, s.initial_y_mm, s.run_s);
+        return;
+      }
+      start(Phase::below, s.below_factor * critical_, s.initial_y_mm, s.run_s);
+      return;
+    case Phase::below:
+      start(Phase::above, s.above_factor * critical_, s.initial_y_mm, s.above_run_s);
+      return;
+    case Phase::above:
+    case Phase::done:
+      break;
+  }
+  phase_ = Phase::done;
+}
+
+double DynamicHuntingScenario::klingel_wavelength_m() const {
+  for (const Run& r : runs_) {
+    if (r.phase != Phase::low_speed) {
+      continue;
+    }
+    try {
+      contact::ConicityOptions o;
+      o.r0_mm = model_.r_spin_mm();
+      o.e0_mm = settings_.params.half_contact_base_m * 1000.0;
+      const double tan_gamma_e =
+          contact::equivalent_conicity(reference_, settings_.low_speed_amplitude_mm, o).tan_gamma_e;
+      return contact::klingel_wavelength_mm(tan_gamma_e, o.r0_mm, o.e0_mm) / 1000.0;
+    } catch (const std::domain_error&) {
+      return std::nan("");
+    }
+  }
+  return std::nan("");
+}
+
+std::vector<std::string> DynamicHuntingScenario::trace_columns() const {
+  return {"run",           "phase",          "speed_mps",         "run_t_s",
+          "y_mm",          "yaw_mrad",       "y_left_n",          "y_right_n",
+          "y_over_q_left", "y_over_q_right", "nadal_margin_left", "nadal_margin_right"};
+}
+
+void DynamicHuntingScenario::trace_values(std::vector<double>& row) const {
+  row.insert(row.end(), row_.begin(), row_.end());
+}
+
+std::vector<ScenarioMetric> DynamicHuntingScenario::metrics() const {
+  std::vector<ScenarioMetric> m;
+  const double dev = 100.0 * (critical_ / critical_linear_ - 1.0);
+  std::ostringstream note;
+  note.precision(3);
+  note << "from " << runs_.size() << " runs with the node in the loop; linear "
+       << (dev >= 0 ? "+" : "") << dev << " % away";
+  m.push_back({"critical_speed", critical_, "m/s", note.str()});
+  std::ostringstream lin;
+  lin.precision(4);
+  lin << "eigenvalues of the linearised model; hunting " << mode_at_critical_.frequency_hz
+      << " Hz, wavelength " << mode_at_critical_.wavelength_m << " m";
+  m.push_back({"critical_speed_linear", critical_linear_, "m/s", lin.str()});
+  m.push_back({"critical_speed_difference", dev, "%", "target: within 5 %"});
+  for (const Run& r : runs_) {
+    if (r.phase == Phase::low_speed) {
+      const double klingel = klingel_wavelength_m();
+      const double d = 100.0 * (r.wavelength_m / klingel - 1.0);
+      std::ostringstream n;
+      n.precision(4);
+      n << "at " << r.speed_m_s << " m/s; Klingel " << klingel << " m at the EN 15302 conicity, "
+        << (d >= 0 ? "+" : "") << d << " %";
+      m.push_back({"low_speed_wavelength", r.wavelength_m, "m", n.str()});
+    }
+    if (r.phase == Phase::below) {
+      m.push_back({"growth_rate_below", r.growth_rate_per_s, "1/s",
+                   "at 0.9 x critical: the motion decays"});
+    }
+    if (r.phase == Phase::above) {
+      m.push_back({"growth_rate_above", r.growth_rate_per_s, "1/s",
+                   "at 1.1 x critical, from a 1 mm start"});
+      m.push_back({"limit_cycle_amplitude", r.amplitude_mm, "mm", "last second at 1.1 x critical"});
+      m.push_back({"max_y_over_q", r.max_y_over_q, "-", "in the limit cycle"});
+      m.push_back({"min_nadal_margin", r.min_nadal_margin, "-", "Nadal's limit minus Y/Q"});
+    }
+  }
+  return m;
+}
+
+std::vector<std::filesystem::path> DynamicHuntingScenario::plot(
+    const std::filesystem::path& trace_csv, const std::filesystem::path& out_dir) const {
+  // The stability runs' growth rates beside the trace, for the second panel.
+  const std::filesystem::path runs_csv = out_dir / "dynamic-hunting-runs.csv";
+  {
+    std::ofstream out(runs_csv);
+    out << "phase,speed_mps,growth_rate_per_s,amplitude_mm\n";
+    for (const Run& r : runs_) {
+      out << phase_name(r.phase) << ',' << r.speed_m_s << ',' << r.growth_rate_per_s << ','
+          << r.amplitude_mm << '\n';
+    }
+  }
+  const std::filesystem::path png = out_dir / "dynamic-hunting.png";
+  const std::string data = gnuplot_quote(trace_csv.string());
+  const std::string runs = gnuplot_quote(runs_csv.string());
+  const std::string below = std::to_string(phase_code(Phase::below));
+  const std::string above = std::to_string(phase_code(Phase::above));
+  std::ostringstream v;
+  v.precision(4);
+  v << "critical speed " << critical_ << " m/s (node in the loop), " << critical_linear_
+    << " m/s (linear)";
+  std::string script = gnuplot_terminal(png.string(), 1500, 500);
+  script += "set output " + gnuplot_quote(png.string()) + "\n";
+  script += "set datafile separator ','\nset grid\nset multiplot layout 1,3 title " +
+            gnuplot_quote("Dynamic hunting: " + v.str()) + "\n";
+  const bool demonstrated =
+      std::any_of(runs_.begin(), runs_.end(), [](const Run& r) { return r.phase == Phase::above; });
+  if (demonstrated) {
+    script +=
+        "set xlabel 't (s)'\nset ylabel 'y (mm)'\nset title 'below and above the critical "
+        "speed'\nplot " +
+        data + " using (column('phase')==" + below +
+        " ? column('run_t_s') : 1/0):'y_mm' with lines lw 2 title '0.9 x critical', " + data +
+        " using (column('phase')==" + above +
+        " ? column('run_t_s') : 1/0):'y_mm' with lines lw 2 title '1.1 x critical'\n";
+  } else {
+    script +=
+        "set xlabel 't (s)'\nset ylabel 'y (mm)'\nset title 'every run (no critical speed "
+        "found)'\nplot " +
+        data + " using 'run_t_s':'y_mm' with lines title 'y'\n";
+  }
+  script +=
+      "set xlabel 'V (m/s)'\nset ylabel 'growth rate (1/s)'\nset title 'stability runs'\n"
+      "plot " +
+      runs +
+      " using 2:3 with points pt 7 ps 1.2 title 'runs (node in the loop)', 0 with "
+      "lines lc rgb 'black' notitle\n";
+  if (demonstrated) {
+    script += "set xlabel 't (s)'\nset ylabel 'Y/Q'\nset title 'Y/Q in the limit cycle'\nplot " +
+              data + " using (column('phase')==" + above +
+              " ? column('run_t_s') : 1/0):'y_over_q_left' with lines title 'left', " + data +
+              " using (column('phase')==" + above +
+              " ? column('run_t_s') : 1/0):'y_over_q_right' with lines title 'right'\n";
+  }
+  script += "unset multiplot\n";
+  run_gnuplot(script, png.string());
+  return {png};
+}
+
+}  // namespace tread::host
