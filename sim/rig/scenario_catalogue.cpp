@@ -4,6 +4,7 @@
 
 #include "contact/contact_setup.hpp"
 #include "node/node_runtime.hpp"
+#include "rig/curving_scenario.hpp"
 #include "rig/dynamic_hunting_scenario.hpp"
 #include "rig/hunting_scenario.hpp"
 #include "rig/sweep_scenario.hpp"
@@ -12,7 +13,7 @@
 namespace tread::host {
 
 std::vector<std::string> scenario_names() {
-  return {"braking", "step-steer", "sine-dwell", "hunting", "dynamic-hunting", "sweep"};
+  return {"braking", "step-steer", "sine-dwell", "hunting", "dynamic-hunting", "curving", "sweep"};
 }
 
 std::vector<std::string> default_scenarios(const ScenarioContext& context) {
@@ -30,7 +31,7 @@ std::vector<std::string> default_scenarios(const ScenarioContext& context) {
 }
 
 bool needs_wheelset_forces(const std::string& name) {
-  return name == "dynamic-hunting";
+  return name == "dynamic-hunting" || name == "curving";
 }
 
 std::unique_ptr<RigScenario> make_scenario(const std::string& name,
@@ -70,6 +71,21 @@ std::unique_ptr<RigScenario> make_scenario(const std::string& name,
     s.mu = context.mu;
     s.materials = context.materials;
     return std::make_unique<DynamicHuntingScenario>(s);
+  }
+  if (name == "curving") {
+    if (context.wheelsets == 0 || context.wheelset_forces == 0) {
+      throw std::invalid_argument(
+          "scenario 'curving' needs a wheelset with wheel-rail forces (--wheelsets 1 "
+          "--wheelset-forces 1)");
+    }
+    CurvingSettings s;
+    s.wheelset_profile = context.wheelset_profile;
+    s.ymax_mm = context.wheelset_ymax_mm;
+    s.step_mm = context.wheelset_step_mm;
+    s.friction = context.friction;
+    s.mu = context.mu;
+    s.materials = context.materials;
+    return std::make_unique<CurvingScenario>(s);
   }
   std::string known;
   for (const std::string& n : scenario_names()) {

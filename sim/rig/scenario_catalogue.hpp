@@ -30,7 +30,7 @@ struct ScenarioContext {
 std::vector<std::string> scenario_names();
 /// The scenarios `tread demo` runs by default for this channel configuration.
 std::vector<std::string> default_scenarios(const ScenarioContext& context);
-/// Whether a scenario needs the node's wheel-rail forces (dynamic-hunting).
+/// Whether a scenario needs the node's wheel-rail forces (dynamic-hunting, curving).
 bool needs_wheelset_forces(const std::string& name);
 /// Throws std::invalid_argument for an unknown name or one the channels cannot run.
 std::unique_ptr<RigScenario> make_scenario(const std::string& name, const ScenarioContext& context);

@@ -107,3 +107,33 @@ TEST(WheelsetStability, LinearisationHasTheClassicalWheelsetTerms) {
 
 }  // namespace
 }  // namespace tread
+
+namespace tread {
+namespace {
+
+TEST(Curving, SteadyCurvingBalancesAndStaysBelowNadal) {
+  host::DemoSettings s = testing::demo_settings({"curving"}, "curving", kProfile);
+  s.node.node.wheels = 0;
+  s.node.node.wheelsets = 1;
+  s.node.node.wheelset_forces = 1;
+  const host::DemoResult r = host::run_demo(s);
+  const host::ScenarioOutcome* o = testing::find_outcome(r, "curving");
+  ASSERT_NE(o, nullptr);
+  EXPECT_EQ(r.unanswered_cycles, 0U);
+  // Lateral equilibrium in the steady state: contact forces plus the cant-deficiency force
+  // (2 x 80 kN / g x 0.65 m/s^2 = 10.6 kN) against the suspension, within 2 % of that force.
+  EXPECT_LT(testing::metric(*o, "lateral_equilibrium_error"), 0.02 * 10600.0);
+  // The wheelset moves outward as the curves tighten, and the outer wheel's Y/Q grows, staying
+  // below Nadal's limit (margin > 0) at this cant deficiency.
+  const double wide = testing::metric(*o, "R3000_outer_y_over_q");
+  const double sharp = testing::metric(*o, "R250_outer_y_over_q");
+  EXPECT_GT(sharp, wide);
+  EXPECT_GT(testing::metric(*o, "min_nadal_margin"), 0.5);
+  EXPECT_LT(testing::metric(*o, "max_y_over_q"), 1.2);
+  // Large radius: nearly pure rolling, the outer wheel larger by 2 e0 r0 / R (0.23 mm at 3000 m):
+  // y close to that delta r over EPS's slope of delta r (0.2275 mm/mm near the centre).
+  EXPECT_NEAR(testing::metric(*o, "widest_curve_displacement"), 0.23 / 0.2275, 0.3);
+}
+
+}  // namespace
+}  // namespace tread
