@@ -92,6 +92,9 @@ class DynamicHuntingScenario final : public RigScenario {
   contact::ContactTable reference_;
   WheelsetContactModel model_;
   double critical_linear_{0.0};
+  /// Empty, or why the linearisation at the centre does not describe the motion (a contact that
+  /// jumps there, as S1002 on 60E1 1:40 does).
+  std::string smoothness_note_;
   LinearMode mode_at_critical_{};
   // The run in progress.
   Phase phase_{Phase::low_speed};
