@@ -54,6 +54,18 @@ else
   failed_steps+=("demo")
   total_failed=$((total_failed + 1))
 fi
+# The wheel-rail force scenarios (the node serving Hertz/Polach forces, Y/Q): their plots and the
+# critical speeds from the loop and from the eigenvalues.
+if bash scripts/demo.sh --clock sim --scenario dynamic-hunting,curving --out build/demo-rail \
+  >"$log_dir/demo-rail.log" 2>&1 &&
+  [[ -s build/demo-rail/dynamic-hunting.png && -s build/demo-rail/curving.png ]]; then
+  grep -E "critical_speed|low_speed_wavelength|min_nadal_margin" "$log_dir/demo-rail.log"
+  total_passed=$((total_passed + 1))
+else
+  tail -20 "$log_dir/demo-rail.log"
+  failed_steps+=("demo-rail")
+  total_failed=$((total_failed + 1))
+fi
 
 echo "=== installed package: bash scripts/check-install.sh (host, cortex-m4f) ==="
 # cmake --install of the host and Cortex-M4F builds, and examples/consumer built against each
