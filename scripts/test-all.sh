@@ -43,29 +43,33 @@ for preset in host asan fuzz aarch64 armhf cortex-m4f cortex-m3; do
 done
 
 echo "=== main job: bash scripts/demo.sh (simulated clock) ==="
+# demo_step NAME OUT "PATTERN" "PLOTS" [tread demo arguments]: runs scripts/demo.sh on the simulated
+# clock into OUT, requires every plot of PLOTS (names in OUT), prints the summary lines matching
+# PATTERN; counts a pass or a failure.
+demo_step() {
+  local name=$1 out=$2 pattern=$3 plots=$4 ok=1 plot
+  shift 4
+  bash scripts/demo.sh --clock sim --out "$out" "$@" >"$log_dir/$name.log" 2>&1 || ok=0
+  for plot in $plots; do
+    [[ -s $out/$plot ]] || ok=0
+  done
+  if ((ok)); then
+    grep -E "$pattern" "$log_dir/$name.log"
+    total_passed=$((total_passed + 1))
+  else
+    tail -20 "$log_dir/$name.log"
+    failed_steps+=("$name")
+    total_failed=$((total_failed + 1))
+  fi
+}
 # The README's first command, as a new user runs it (here on the simulated clock: the same scenarios
 # and results; the real clock only adds timing figures). It must finish and draw every plot.
-if bash scripts/demo.sh --clock sim --out build/demo-check >"$log_dir/demo.log" 2>&1 &&
-  [[ -s build/demo-check/braking.png && -s build/demo-check/hunting.png ]]; then
-  grep -E "mean_deceleration|ay_steady|wavelength vs Klingel" "$log_dir/demo.log"
-  total_passed=$((total_passed + 1))
-else
-  tail -20 "$log_dir/demo.log"
-  failed_steps+=("demo")
-  total_failed=$((total_failed + 1))
-fi
+demo_step demo build/demo-check "mean_deceleration|ay_steady|wavelength vs Klingel" \
+  "braking.png hunting.png"
 # The wheel-rail force scenarios (the node serving Hertz/Polach forces, Y/Q): their plots and the
 # critical speeds from the loop and from the eigenvalues.
-if bash scripts/demo.sh --clock sim --scenario dynamic-hunting,curving --out build/demo-rail \
-  >"$log_dir/demo-rail.log" 2>&1 &&
-  [[ -s build/demo-rail/dynamic-hunting.png && -s build/demo-rail/curving.png ]]; then
-  grep -E "critical_speed|low_speed_wavelength|min_nadal_margin" "$log_dir/demo-rail.log"
-  total_passed=$((total_passed + 1))
-else
-  tail -20 "$log_dir/demo-rail.log"
-  failed_steps+=("demo-rail")
-  total_failed=$((total_failed + 1))
-fi
+demo_step demo-rail build/demo-rail "critical_speed|low_speed_wavelength|min_nadal_margin" \
+  "dynamic-hunting.png curving.png" --scenario dynamic-hunting,curving
 
 echo "=== installed package: bash scripts/check-install.sh (host, cortex-m4f) ==="
 # cmake --install of the host and Cortex-M4F builds, and examples/consumer built against each

@@ -15,27 +15,12 @@ namespace {
 
 constexpr double kGravity = 9.81;
 
-contact::RigidContact build(const CurvingSettings& s) {
-  return contact::build_contact(parse_wheelset_profile(s.wheelset_profile));
-}
-
-double centred_radius_mm(const contact::RigidContact& c) {
-  const contact::ContactState centred = c.at(0.0);
-  return 0.5 * (centred.left.r_mm + centred.right.r_mm);
-}
-
 }  // namespace
 
 CurvingScenario::CurvingScenario(const CurvingSettings& settings)
     : settings_(settings),
-      contact_(build(settings)),
-      model_(contact_, settings.materials,
-             contact::friction_parameters(settings.friction, settings.mu),
-             centred_radius_mm(contact_), settings.params.wheel_load_n,
-             settings.params.half_contact_base_m,
-             contact::flange_angles(contact::mechanics_table(contact_, -settings.ymax_mm,
-                                                             settings.ymax_mm, settings.step_mm,
-                                                             settings.materials))) {
+      contact_(build_wheelset_contact(settings.setup)),
+      model_(contact_, settings.setup, settings.params) {
   if (settings_.radii_m.empty()) {
     throw std::runtime_error("curving: no curve radii");
   }
@@ -49,8 +34,8 @@ std::string CurvingScenario::description() const {
   s << "suspended wheelset through right-hand curves of " << settings_.radii_m.front() << " to "
     << settings_.radii_m.back() << " m at " << settings_.speed_m_s * 3.6
     << " km/h, cant deficiency " << settings_.uncompensated_acceleration_m_s2
-    << " m/s^2, on the node's wheel-rail forces (" << settings_.wheelset_profile << ", Polach '"
-    << settings_.friction << "')";
+    << " m/s^2, on the node's wheel-rail forces (" << settings_.setup.wheelset_profile
+    << ", Polach '" << settings_.setup.friction << "')";
   return s.str();
 }
 
@@ -103,12 +88,7 @@ void CurvingScenario::advance(const proto::RigData& /*inputs_seen*/, const proto
   if (answers.rail_wheels[0].status == 0U && answers.rail_wheels[1].status == 0U) {
     answer_[0] = answers.rail_wheels[0];
     answer_[1] = answers.rail_wheels[1];
-    const auto wheel = [](const proto::RailWheelOutput& o) {
-      return rail::WheelContactForces<double>{
-          static_cast<double>(o.y_n), static_cast<double>(o.fx_n), static_cast<double>(o.mz_nm)};
-    };
-    force_ = rail::contact_generalised_force(wheel(answer_[0]), wheel(answer_[1]),
-                                             settings_.params.half_contact_base_m);
+    force_ = generalised_force(answer_[0], answer_[1], settings_.params.half_contact_base_m);
   }
   const double f_q = cant_deficiency_force_n();
   rail::Vector2<double> applied = force_;
@@ -261,8 +241,8 @@ std::vector<std::filesystem::path> CurvingScenario::plot(
   script += "set output " + gnuplot_quote(png.string()) + "\n";
   std::ostringstream title;
   title << "Curving at " << settings_.speed_m_s * 3.6 << " km/h, cant deficiency "
-        << settings_.uncompensated_acceleration_m_s2 << " m/s^2 (" << settings_.wheelset_profile
-        << "), node in the loop";
+        << settings_.uncompensated_acceleration_m_s2 << " m/s^2 ("
+        << settings_.setup.wheelset_profile << "), node in the loop";
   script += "set datafile separator ','\nset grid\nset multiplot layout 1,2 title " +
             gnuplot_quote(title.str()) + "\n";
   script +=

@@ -24,12 +24,7 @@
 namespace tread::host {
 
 struct CurvingSettings {
-  std::string wheelset_profile;  ///< the node's --wheelset-profile
-  double ymax_mm{12.0};
-  double step_mm{0.1};
-  std::string friction{"kalker"};
-  double mu{0.0};
-  contact::ContactMaterials materials{};
+  WheelsetForceSetup setup;  ///< the node's force channel (the same contact)
   rail::WheelsetParams<double> params{};
   double speed_m_s{20.0};
   double uncompensated_acceleration_m_s2{0.65};  ///< cant deficiency (about 100 mm)

@@ -15,15 +15,6 @@
 namespace tread::host {
 namespace {
 
-contact::RigidContact build(const DynamicHuntingSettings& s) {
-  return contact::build_contact(parse_wheelset_profile(s.wheelset_profile));
-}
-
-double centred_radius_mm(const contact::RigidContact& c) {
-  const contact::ContactState centred = c.at(0.0);
-  return 0.5 * (centred.left.r_mm + centred.right.r_mm);
-}
-
 int phase_code(DynamicHuntingScenario::Phase p) {
   return static_cast<int>(p);
 }
@@ -50,15 +41,10 @@ const char* phase_name(DynamicHuntingScenario::Phase p) {
 
 DynamicHuntingScenario::DynamicHuntingScenario(const DynamicHuntingSettings& settings)
     : settings_(settings),
-      contact_(build(settings)),
-      reference_(contact_.table(-settings.ymax_mm, settings.ymax_mm, settings.step_mm)),
-      model_(contact_, settings.materials,
-             contact::friction_parameters(settings.friction, settings.mu),
-             centred_radius_mm(contact_), settings.params.wheel_load_n,
-             settings.params.half_contact_base_m,
-             contact::flange_angles(contact::mechanics_table(contact_, -settings.ymax_mm,
-                                                             settings.ymax_mm, settings.step_mm,
-                                                             settings.materials))) {
+      contact_(build_wheelset_contact(settings.setup)),
+      reference_(
+          contact_.table(-settings.setup.ymax_mm, settings.setup.ymax_mm, settings.setup.step_mm)),
+      model_(contact_, settings.setup, settings.params) {
   if (settings_.scan_speeds_m_s.size() < 2) {
     throw std::runtime_error("dynamic-hunting: need at least two scan speeds");
   }
@@ -92,7 +78,7 @@ std::string DynamicHuntingScenario::description() const {
   s << "suspended wheelset (m " << p.mass_kg << " kg, I " << p.yaw_inertia_kgm2 << " kg m^2, k_y "
     << p.lateral_stiffness_n_per_m / 1e6 << " MN/m, k_psi " << p.yaw_stiffness_nm_per_rad / 1e6
     << " MN m/rad, Q " << p.wheel_load_n / 1000.0 << " kN) on the node's wheel-rail forces ("
-    << settings_.wheelset_profile << ", Polach '" << settings_.friction << "')";
+    << settings_.setup.wheelset_profile << ", Polach '" << settings_.setup.friction << "')";
   return s.str();
 }
 
@@ -151,12 +137,7 @@ void DynamicHuntingScenario::advance(const proto::RigData& /*inputs_seen*/,
   if (answers.rail_wheels[0].status == 0U && answers.rail_wheels[1].status == 0U) {
     answer_[0] = answers.rail_wheels[0];
     answer_[1] = answers.rail_wheels[1];
-    const auto wheel = [](const proto::RailWheelOutput& o) {
-      return rail::WheelContactForces<double>{
-          static_cast<double>(o.y_n), static_cast<double>(o.fx_n), static_cast<double>(o.mz_nm)};
-    };
-    force_ = rail::contact_generalised_force(wheel(answer_[0]), wheel(answer_[1]),
-                                             settings_.params.half_contact_base_m);
+    force_ = generalised_force(answer_[0], answer_[1], settings_.params.half_contact_base_m);
   }
   rail::wheelset_step(state_, force_, jacobian_, settings_.params, dt_s);
   run_t_ += dt_s;

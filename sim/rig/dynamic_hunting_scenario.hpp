@@ -23,12 +23,7 @@
 namespace tread::host {
 
 struct DynamicHuntingSettings {
-  std::string wheelset_profile;  ///< the node's --wheelset-profile (the same contact)
-  double ymax_mm{12.0};          ///< the node's table range (for its flange angles)
-  double step_mm{0.1};
-  std::string friction{"kalker"};  ///< the node's Polach parameters
-  double mu{0.0};
-  contact::ContactMaterials materials{};
+  WheelsetForceSetup setup;  ///< the node's force channel (the same contact)
   rail::WheelsetParams<double> params{};
   double initial_y_mm{1.0};  ///< start of every stability run
   double run_s{2.5};         ///< length of a stability run

@@ -57,35 +57,27 @@ std::unique_ptr<RigScenario> make_scenario(const std::string& name,
     s.step_mm = context.wheelset_step_mm;
     return std::make_unique<HuntingScenario>(s);
   }
-  if (name == "dynamic-hunting") {
+  if (needs_wheelset_forces(name)) {
     if (context.wheelsets == 0 || context.wheelset_forces == 0) {
-      throw std::invalid_argument(
-          "scenario 'dynamic-hunting' needs a wheelset with wheel-rail forces (--wheelsets 1 "
-          "--wheelset-forces 1)");
+      throw std::invalid_argument("scenario '" + name +
+                                  "' needs a wheelset with wheel-rail forces (--wheelsets 1 "
+                                  "--wheelset-forces 1)");
+    }
+    WheelsetForceSetup setup;
+    setup.wheelset_profile = context.wheelset_profile;
+    setup.ymax_mm = context.wheelset_ymax_mm;
+    setup.step_mm = context.wheelset_step_mm;
+    setup.friction = context.friction;
+    setup.mu = context.mu;
+    setup.materials = context.materials;
+    if (name == "curving") {
+      CurvingSettings s;
+      s.setup = setup;
+      return std::make_unique<CurvingScenario>(s);
     }
     DynamicHuntingSettings s;
-    s.wheelset_profile = context.wheelset_profile;
-    s.ymax_mm = context.wheelset_ymax_mm;
-    s.step_mm = context.wheelset_step_mm;
-    s.friction = context.friction;
-    s.mu = context.mu;
-    s.materials = context.materials;
+    s.setup = setup;
     return std::make_unique<DynamicHuntingScenario>(s);
-  }
-  if (name == "curving") {
-    if (context.wheelsets == 0 || context.wheelset_forces == 0) {
-      throw std::invalid_argument(
-          "scenario 'curving' needs a wheelset with wheel-rail forces (--wheelsets 1 "
-          "--wheelset-forces 1)");
-    }
-    CurvingSettings s;
-    s.wheelset_profile = context.wheelset_profile;
-    s.ymax_mm = context.wheelset_ymax_mm;
-    s.step_mm = context.wheelset_step_mm;
-    s.friction = context.friction;
-    s.mu = context.mu;
-    s.materials = context.materials;
-    return std::make_unique<CurvingScenario>(s);
   }
   std::string known;
   for (const std::string& n : scenario_names()) {

@@ -5,6 +5,9 @@
 #include <limits>
 #include <numbers>
 
+#include "contact/contact_setup.hpp"
+#include "node/node_runtime.hpp"
+
 namespace tread::host {
 
 WheelsetContactModel::WheelsetContactModel(const contact::RigidContact& contact,
@@ -20,6 +23,38 @@ WheelsetContactModel::WheelsetContactModel(const contact::RigidContact& contact,
       wheel_load_n_(wheel_load_n),
       e0_m_(half_contact_base_m),
       flange_(flange) {}
+
+contact::RigidContact build_wheelset_contact(const WheelsetForceSetup& setup) {
+  return contact::build_contact(parse_wheelset_profile(setup.wheelset_profile));
+}
+
+rail::Vector2<double> generalised_force(const proto::RailWheelOutput& left,
+                                        const proto::RailWheelOutput& right,
+                                        double half_contact_base_m) {
+  const auto wheel = [](const proto::RailWheelOutput& o) {
+    return rail::WheelContactForces<double>{static_cast<double>(o.y_n), static_cast<double>(o.fx_n),
+                                            static_cast<double>(o.mz_nm)};
+  };
+  return rail::contact_generalised_force(wheel(left), wheel(right), half_contact_base_m);
+}
+
+namespace {
+
+double centred_radius_mm(const contact::RigidContact& c) {
+  const contact::ContactState centred = c.at(0.0);
+  return 0.5 * (centred.left.r_mm + centred.right.r_mm);
+}
+
+}  // namespace
+
+WheelsetContactModel::WheelsetContactModel(const contact::RigidContact& contact,
+                                           const WheelsetForceSetup& setup,
+                                           const rail::WheelsetParams<double>& params)
+    : WheelsetContactModel(
+          contact, setup.materials, contact::friction_parameters(setup.friction, setup.mu),
+          centred_radius_mm(contact), params.wheel_load_n, params.half_contact_base_m,
+          contact::flange_angles(contact::mechanics_table(contact, -setup.ymax_mm, setup.ymax_mm,
+                                                          setup.step_mm, setup.materials))) {}
 
 rail::Vector2<double> WheelsetContactModel::force(const rail::WheelsetState<double>& s,
                                                   double speed_m_s) const {

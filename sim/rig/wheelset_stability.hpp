@@ -6,11 +6,32 @@
 // part crosses zero).
 
 #include <complex>
+#include <string>
 
 #include "contact/contact_mechanics.hpp"
+#include "proto/codec.hpp"
 #include "rail/wheelset_model.hpp"
 
 namespace tread::host {
+
+/// What the rig must know of the node's force channel to model it: the wheelset profile, the
+/// table's range (its flange angles), Polach's parameters and the materials (the node's settings).
+struct WheelsetForceSetup {
+  std::string wheelset_profile;
+  double ymax_mm{12.0};
+  double step_mm{0.1};
+  std::string friction{"kalker"};
+  double mu{0.0};
+  contact::ContactMaterials materials{};
+};
+
+/// The wheelset's contact from the setup's profile (throws as contact::build_contact).
+contact::RigidContact build_wheelset_contact(const WheelsetForceSetup& setup);
+
+/// The generalised contact forces from the node's answers for the two wheels (left, right).
+rail::Vector2<double> generalised_force(const proto::RailWheelOutput& left,
+                                        const proto::RailWheelOutput& right,
+                                        double half_contact_base_m);
 
 class WheelsetContactModel {
  public:
@@ -20,6 +41,10 @@ class WheelsetContactModel {
                        const rail::PolachParameters<double>& polach, double r_spin_mm,
                        double wheel_load_n, double half_contact_base_m,
                        const contact::FlangeAngles& flange);
+  /// The node's force channel as `setup` configures it, for a wheelset with `params`: the axle
+  /// spin radius is the mean rolling radius at y = 0, the flange angles those of the table.
+  WheelsetContactModel(const contact::RigidContact& contact, const WheelsetForceSetup& setup,
+                       const rail::WheelsetParams<double>& params);
 
   /// Generalised contact forces (F_y [N], M_z [N m]) at state s and speed V.
   [[nodiscard]] rail::Vector2<double> force(const rail::WheelsetState<double>& s,
