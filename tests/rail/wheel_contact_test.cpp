@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <random>
 
 namespace tread::rail {
 namespace {
@@ -141,6 +142,47 @@ TEST(WheelContact, WithoutAValidNadalReferenceThereIsNoLimit) {
   EXPECT_EQ(w.derailment_status, Status::invalid_argument);
   EXPECT_EQ(w.derailment.limit, 0.0);
   EXPECT_EQ(nadal_reference(2.0, 0.3).status, Status::invalid_argument);  // beyond 90 deg
+}
+
+TEST(WheelContact, RandomFiniteInputsGiveFiniteForces) {
+  // 20 000 random wheels (float, the node's type): any finite geometry, load, motion and friction
+  // within wide bounds gives finite forces, quotient and margin.
+  std::mt19937 rng(15);
+  std::uniform_real_distribution<float> u(0.0F, 1.0F);
+  const auto in = [&](float lo, float hi) { return lo + (hi - lo) * u(rng); };
+  for (int n = 0; n < 20000; ++n) {
+    ContactPointData<float> pts[2];
+    for (int i = 0; i < 2; ++i) {
+      pts[i].present = i == 0 || u(rng) < 0.5F;
+      pts[i].r_mm = in(300.0F, 600.0F);
+      pts[i].gamma_rad = in(-0.2F, 1.45F);
+      pts[i].vertical_gap_mm = i == 0 ? 0.0F : in(0.0F, 0.6F);
+      const HertzShape<double> shape = hertz_shape(static_cast<double>(in(1e-4F, 2e-3F)),
+                                                   static_cast<double>(in(5e-5F, 5e-2F)), 115000.0)
+                                           .value;
+      pts[i].shape = shape_as<float>(shape);
+      pts[i].c = kalker_coefficients(static_cast<float>(shape.a_unit_mm / shape.b_unit_mm),
+                                     in(0.25F, 0.3F));
+    }
+    WheelKinematics<float> k;
+    k.speed_m_s = in(-1.0F, 150.0F);
+    k.lateral_velocity_m_s = in(-3.0F, 3.0F);
+    k.yaw_rad = in(-0.1F, 0.1F);
+    k.yaw_rate_rad_s = in(-3.0F, 3.0F);
+    k.axle_spin_rad_s = k.speed_m_s / 0.46F * in(0.5F, 1.5F);
+    const PolachParameters<float> p{in(0.05F, 0.8F), in(0.1F, 1.0F), in(0.0F, 2.0F), in(0.1F, 1.0F),
+                                    in(0.05F, 1.0F)};
+    const WheelForces<float> w =
+        wheel_forces(pts, in(-1000.0F, 250000.0F), k, 80769.0F, nadal_reference(1.2F, p.mu0), p);
+    for (const PointForces<float>& pf : w.point) {
+      ASSERT_TRUE(std::isfinite(pf.normal_n) && std::isfinite(pf.creep.fx_n) &&
+                  std::isfinite(pf.creep.fy_n) && std::isfinite(pf.creep.mz_nmm))
+          << n;
+    }
+    ASSERT_TRUE(std::isfinite(w.yq.y_n) && std::isfinite(w.yq.q_n) &&
+                std::isfinite(w.derailment.y_over_q) && std::isfinite(w.derailment.margin))
+        << n;
+  }
 }
 
 TEST(WheelContact, LiftedWheelAndFloat) {
