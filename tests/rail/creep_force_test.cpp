@@ -12,6 +12,8 @@
 namespace tread::rail {
 namespace {
 
+constexpr double kPi = 3.14159265358979323846;
+
 /// CONTACT's "tractcurv" example: Eurosprinter-like wheel (R = 625 mm) with a/b = 0.5, FN =
 /// 106.7 kN, G = 82 GPa, nu = 0.28, mu = 0.33.
 CreepContact<double> tractcurv() {
@@ -99,6 +101,50 @@ TEST(Fastsim, LateralAndSpinAgainstContact) {
   EXPECT_NEAR(par.force.fy_n / mu_n, -0.6338, 0.025);
   EXPECT_LT(par.force.mz_nmm, 0.0);
   EXPECT_NEAR(par.force.fx_n, 0.0, 1e-3 * mu_n);
+}
+
+TEST(Fastsim, FullSlipSpinMomentOfACircularContact) {
+  // Pure spin far into full slip (phi a = 6: the adhesion zone at the leading edge, which leaves a
+  // lateral force falling as 1 / phi, is then negligible): the traction is mu p everywhere, along
+  // circles about the centre, so the lateral force vanishes and the moment is mu times the first
+  // moment of the pressure: (3 pi / 16) mu N a for Hertz's pressure, (8 / 15) mu N a for the
+  // parabolic one.
+  CreepContact<double> k;
+  k.a_mm = 6.0;
+  k.b_mm = 6.0;
+  k.normal_n = 80000.0;
+  k.g_mpa = 80000.0;
+  k.c = kalker_coefficients(1.0, 0.28);
+  const Creepage<double> spin{0.0, 0.0, 1.0};
+  const double mu_na = 0.3 * k.normal_n * k.a_mm;
+  const FastsimResult<double> ell = fastsim(k, spin, 0.3, {200, 200, TractionBound::elliptic});
+  const FastsimResult<double> par = fastsim(k, spin, 0.3, {200, 200, TractionBound::parabolic});
+  EXPECT_NEAR(ell.force.mz_nmm, -3.0 * kPi / 16.0 * mu_na, 0.01 * mu_na);
+  EXPECT_NEAR(par.force.mz_nmm, -8.0 / 15.0 * mu_na, 0.01 * mu_na);
+  EXPECT_NEAR(ell.force.fy_n, 0.0, 0.01 * 0.3 * k.normal_n);
+  EXPECT_NEAR(ell.force.fx_n, 0.0, 0.01 * 0.3 * k.normal_n);
+  EXPECT_LT(ell.adhesion_fraction, 0.02);
+}
+
+TEST(Fastsim, LateralAndLongitudinalCoincideAtPoissonZero) {
+  // nu = 0: C11 = C22 in every row of Kalker's table, so the pure lateral curve is the pure
+  // longitudinal one (as in the exact theory) for any a/b.
+  for (const double ratio : {0.3, 1.0, 2.5}) {
+    CreepContact<double> k;
+    k.a_mm = 6.0 * std::sqrt(ratio);
+    k.b_mm = 6.0 / std::sqrt(ratio);
+    k.normal_n = 80000.0;
+    k.g_mpa = 80000.0;
+    k.c = kalker_coefficients(ratio, 0.0);
+    for (const double s : {2e-4, 1e-3, 3e-3}) {
+      const double fx = fastsim(k, Creepage<double>{s, 0.0, 0.0}, 0.3, {60, 60}).force.fx_n;
+      const double fy = fastsim(k, Creepage<double>{0.0, s, 0.0}, 0.3, {60, 60}).force.fy_n;
+      EXPECT_NEAR(fx, fy, 1e-9 * std::abs(fx)) << ratio << ' ' << s;
+      const double px = polach_creep(k, Creepage<double>{s, 0.0, 0.0}, 10.0, {}).fx_n;
+      const double py = polach_creep(k, Creepage<double>{0.0, s, 0.0}, 10.0, {}).fy_n;
+      EXPECT_NEAR(px, py, 1e-9 * std::abs(px)) << ratio << ' ' << s;
+    }
+  }
 }
 
 TEST(Fastsim, GridConvergesAndFloatAgrees) {
