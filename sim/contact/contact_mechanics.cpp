@@ -138,29 +138,21 @@ rail::WheelForces<double> evaluate_wheel(const WheelMechanics& wheel, bool right
     k = rail::mirrored(k);
   }
   const double load = right_wheel ? state.load_right_n : state.load_left_n;
-  rail::WheelForces<double> out = rail::wheel_forces(
-      wheel.point, load, k, m.g_mpa(), rail::nadal_reference(flange_angle_rad, polach.mu0), polach);
+  const rail::NadalReference<double> nadal = rail::nadal_reference(flange_angle_rad, polach.mu0);
   if (law == CreepLaw::polach) {
-    return out;
+    return rail::wheel_forces(wheel.point, load, k, m.g_mpa(), nadal, polach);
   }
-  // FASTSIM at the same points and loads, then Y/Q again.
-  out.yq = {};
-  double flange = flange_angle_rad;
+  // FASTSIM at the same points and loads (constant friction mu0), then Y/Q the same way.
+  rail::WheelForces<double> out = rail::wheel_contact(wheel.point, load, k);
   for (int i = 0; i < 2; ++i) {
     rail::PointForces<double>& p = out.point[i];
-    if (!(p.normal_n > 0.0)) {
-      continue;
+    if (p.normal_n > 0.0) {
+      const rail::CreepContact<double> c{p.patch.a_mm, p.patch.b_mm, p.normal_n, m.g_mpa(),
+                                         wheel.point[i].c};
+      p.creep = rail::fastsim(c, p.creepage, polach.mu0, grid).force;
     }
-    const rail::CreepContact<double> c{p.patch.a_mm, p.patch.b_mm, p.normal_n, m.g_mpa(),
-                                       wheel.point[i].c};
-    p.creep = rail::fastsim(c, p.creepage, polach.mu0, grid).force;
-    rail::add_contact_point(out.yq, p.normal_n, wheel.point[i].gamma_rad, p.creep.fy_n);
-    flange = std::max(flange, wheel.point[i].gamma_rad);
   }
-  const Result<rail::DerailmentCheck<double>> check =
-      rail::derailment_check(out.yq, flange, polach.mu0);
-  out.derailment = check.value;
-  out.derailment_status = check.status;
+  rail::wheel_derailment(out, wheel.point, nadal);
   return out;
 }
 

@@ -76,9 +76,8 @@ rail::Vector2<double> WheelsetContactModel::force(const rail::WheelsetState<doub
       contact::evaluate_wheel(row.right, true, state, r_spin_mm_, e0_mm, materials_,
                               flange_.right_rad, polach_, contact::CreepLaw::polach);
   const auto wheel = [](const rail::WheelForces<double>& w) {
-    return rail::WheelContactForces<double>{
-        w.yq.y_n, w.point[0].creep.fx_n + w.point[1].creep.fx_n,
-        (w.point[0].creep.mz_nmm + w.point[1].creep.mz_nmm) * 1e-3};
+    const rail::WheelContactTotals<double> totals = rail::wheel_totals(w);
+    return rail::WheelContactForces<double>{w.yq.y_n, totals.fx_n, totals.mz_nm};
   };
   return rail::contact_generalised_force(wheel(left), wheel(right), e0_m_);
 }

@@ -58,10 +58,11 @@ class RailForceTableChannel {
 
  private:
   static void fill(RailWheelForces& out, const rail::WheelForces<float>& w) noexcept {
-    out.fx_n = w.point[0].creep.fx_n + w.point[1].creep.fx_n;
+    const rail::WheelContactTotals<float> totals = rail::wheel_totals(w);
+    out.fx_n = totals.fx_n;
     out.y_n = w.yq.y_n;
     out.q_n = w.yq.q_n;
-    out.mz_nm = (w.point[0].creep.mz_nmm + w.point[1].creep.mz_nmm) * 1e-3F;
+    out.mz_nm = totals.mz_nm;
     out.n1_n = w.point[0].normal_n;
     out.n2_n = w.point[1].normal_n;
     out.y_over_q = w.derailment.y_over_q;

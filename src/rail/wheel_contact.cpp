@@ -121,19 +121,17 @@ NadalReference<T> nadal_reference(T flange_angle_rad, T mu) noexcept {
 }
 
 template <typename T>
-WheelForces<T> wheel_forces(const ContactPointData<T> (&points)[2], T q_n,
-                            const WheelKinematics<T>& kinematics, T g_mpa,
-                            const NadalReference<T>& nadal,
-                            const PolachParameters<T>& polach) noexcept {
+WheelForces<T> wheel_contact(const ContactPointData<T> (&points)[2], T q_n,
+                             const WheelKinematics<T>& kinematics) noexcept {
   WheelForces<T> out;
   const Trig<T> trig[2] = {trig_of(points[0]), trig_of(points[1])};
   T cbrt_alone{};
   const NormalSplit<T> normals = split(points, trig, q_n, cbrt_alone);
-  int steepest = -1;  // a loaded point steeper than the flange angle
-  T steepest_angle = nadal.angle_rad;
   for (int i = 0; i < 2; ++i) {
     PointForces<T>& p = out.point[i];
     p.normal_n = normals.normal_n[i];
+    p.sin_gamma = trig[i].s;
+    p.cos_gamma = trig[i].c;
     if (!points[i].present || !(p.normal_n > T{0})) {
       continue;
     }
@@ -149,10 +147,23 @@ WheelForces<T> wheel_forces(const ContactPointData<T> (&points)[2], T q_n,
       p.patch = hertz_patch(points[i].shape, p.normal_n);
     }
     p.creepage = creepage_at(kinematics, points[i].r_mm, trig[i]);
-    const CreepContact<T> contact{p.patch.a_mm, p.patch.b_mm, p.normal_n, g_mpa, points[i].c};
-    p.creep = polach_creep(contact, p.creepage, kinematics.speed_m_s, polach);
-    out.yq.y_n += p.normal_n * trig[i].s - p.creep.fy_n * trig[i].c;
-    out.yq.q_n += p.normal_n * trig[i].c + p.creep.fy_n * trig[i].s;
+  }
+  return out;
+}
+
+template <typename T>
+void wheel_derailment(WheelForces<T>& w, const ContactPointData<T> (&points)[2],
+                      const NadalReference<T>& nadal) noexcept {
+  w.yq = {};
+  int steepest = -1;  // a loaded point steeper than the flange angle
+  T steepest_angle = nadal.angle_rad;
+  for (int i = 0; i < 2; ++i) {
+    const PointForces<T>& p = w.point[i];
+    if (!points[i].present || !(p.normal_n > T{0})) {
+      continue;
+    }
+    w.yq.y_n += p.normal_n * p.sin_gamma - p.creep.fy_n * p.cos_gamma;
+    w.yq.q_n += p.normal_n * p.cos_gamma + p.creep.fy_n * p.sin_gamma;
     if (points[i].gamma_rad > steepest_angle) {
       steepest_angle = points[i].gamma_rad;
       steepest = i;
@@ -161,28 +172,50 @@ WheelForces<T> wheel_forces(const ContactPointData<T> (&points)[2], T q_n,
   // Nadal's limit at the steepest angle: the reference's, or (rarely) a steeper loaded point's,
   // from its sin and cos: (sin - mu cos) / (cos + mu sin).
   T limit = nadal.limit;
-  Status limit_status = nadal.status;
-  if (limit_status == Status::ok && steepest >= 0 &&
+  if (nadal.status == Status::ok && steepest >= 0 &&
       steepest_angle < static_cast<T>(1.57079632679489661923)) {
     const T mu = nadal.mu;
     const T c = std::cos(steepest_angle);
-    const T sn = trig[steepest].s;
+    const T sn = w.point[steepest].sin_gamma;
     limit = (sn - mu * c) / (c + mu * sn);
   }
-  out.derailment.limit = limit;
-  if (limit_status != Status::ok) {
-    out.derailment_status = limit_status;
-    out.derailment.limit = T{0};
-    return out;
+  w.derailment = {};
+  w.derailment_status = Status::ok;
+  if (nadal.status != Status::ok) {
+    w.derailment_status = nadal.status;
+    return;
   }
-  if (!(out.yq.q_n > T{0}) || !std::isfinite(out.yq.y_n)) {
-    out.derailment.margin = limit;
-    out.derailment_status = Status::out_of_range;
-    return out;
+  w.derailment.limit = limit;
+  if (!(w.yq.q_n > T{0}) || !std::isfinite(w.yq.y_n)) {
+    w.derailment.margin = limit;
+    w.derailment_status = Status::out_of_range;
+    return;
   }
-  out.derailment.y_over_q = out.yq.y_n / out.yq.q_n;
-  out.derailment.margin = limit - out.derailment.y_over_q;
+  w.derailment.y_over_q = w.yq.y_n / w.yq.q_n;
+  w.derailment.margin = limit - w.derailment.y_over_q;
+}
+
+template <typename T>
+WheelForces<T> wheel_forces(const ContactPointData<T> (&points)[2], T q_n,
+                            const WheelKinematics<T>& kinematics, T g_mpa,
+                            const NadalReference<T>& nadal,
+                            const PolachParameters<T>& polach) noexcept {
+  WheelForces<T> out = wheel_contact(points, q_n, kinematics);
+  for (int i = 0; i < 2; ++i) {
+    PointForces<T>& p = out.point[i];
+    if (points[i].present && p.normal_n > T{0}) {
+      const CreepContact<T> contact{p.patch.a_mm, p.patch.b_mm, p.normal_n, g_mpa, points[i].c};
+      p.creep = polach_creep(contact, p.creepage, kinematics.speed_m_s, polach);
+    }
+  }
+  wheel_derailment(out, points, nadal);
   return out;
+}
+
+template <typename T>
+WheelContactTotals<T> wheel_totals(const WheelForces<T>& w) noexcept {
+  return {w.point[0].creep.fx_n + w.point[1].creep.fx_n,
+          (w.point[0].creep.mz_nmm + w.point[1].creep.mz_nmm) * static_cast<T>(1e-3)};
 }
 
 template Creepage<float> point_creepage<float>(const WheelKinematics<float>&, float,
@@ -201,6 +234,16 @@ template WheelForces<double> wheel_forces<double>(const ContactPointData<double>
                                                   const WheelKinematics<double>&, double,
                                                   const NadalReference<double>&,
                                                   const PolachParameters<double>&) noexcept;
+template WheelForces<float> wheel_contact<float>(const ContactPointData<float> (&)[2], float,
+                                                 const WheelKinematics<float>&) noexcept;
+template WheelForces<double> wheel_contact<double>(const ContactPointData<double> (&)[2], double,
+                                                   const WheelKinematics<double>&) noexcept;
+template void wheel_derailment<float>(WheelForces<float>&, const ContactPointData<float> (&)[2],
+                                      const NadalReference<float>&) noexcept;
+template void wheel_derailment<double>(WheelForces<double>&, const ContactPointData<double> (&)[2],
+                                       const NadalReference<double>&) noexcept;
+template WheelContactTotals<float> wheel_totals<float>(const WheelForces<float>&) noexcept;
+template WheelContactTotals<double> wheel_totals<double>(const WheelForces<double>&) noexcept;
 template NadalReference<float> nadal_reference<float>(float, float) noexcept;
 template NadalReference<double> nadal_reference<double>(double, double) noexcept;
 

@@ -79,6 +79,8 @@ NormalSplit<T> split_wheel_load(const ContactPointData<T> (&points)[2], T q_n) n
 template <typename T>
 struct PointForces {
   T normal_n{};
+  T sin_gamma{};   ///< of the point's contact angle
+  T cos_gamma{1};  ///< (held at >= 0.05: angles beyond ~87 deg are not a wheel's)
   Creepage<T> creepage{};
   CreepForce<T> creep{};  ///< on the wheel, in the point's contact frame
   HertzPatch<T> patch{};
@@ -103,6 +105,25 @@ struct NadalReference {
 };
 template <typename T>
 NadalReference<T> nadal_reference(T flange_angle_rad, T mu) noexcept;
+
+/// The steps of wheel_forces, for other creep laws (the host's FASTSIM): the load split, Hertz
+/// patches and creepages of the points (creep forces left zero) ...
+template <typename T>
+WheelForces<T> wheel_contact(const ContactPointData<T> (&points)[2], T q_n,
+                             const WheelKinematics<T>& kinematics) noexcept;
+/// ... and, once the points' creep forces are in, Y, Q and the check against Nadal's limit.
+template <typename T>
+void wheel_derailment(WheelForces<T>& wheel, const ContactPointData<T> (&points)[2],
+                      const NadalReference<T>& nadal) noexcept;
+
+/// A wheel's longitudinal creep force and spin moment summed over its points (N, N m).
+template <typename T>
+struct WheelContactTotals {
+  T fx_n{};
+  T mz_nm{};
+};
+template <typename T>
+WheelContactTotals<T> wheel_totals(const WheelForces<T>& wheel) noexcept;
 
 /// The whole wheel: split, creepages, Polach at each loaded point, Y/Q against Nadal's limit at
 /// the larger of the reference's flange angle and the contact angles that carry load.
@@ -129,6 +150,20 @@ extern template WheelForces<double> wheel_forces<double>(const ContactPointData<
                                                          double, const WheelKinematics<double>&,
                                                          double, const NadalReference<double>&,
                                                          const PolachParameters<double>&) noexcept;
+extern template WheelForces<float> wheel_contact<float>(const ContactPointData<float> (&)[2], float,
+                                                        const WheelKinematics<float>&) noexcept;
+extern template WheelForces<double> wheel_contact<double>(const ContactPointData<double> (&)[2],
+                                                          double,
+                                                          const WheelKinematics<double>&) noexcept;
+extern template void wheel_derailment<float>(WheelForces<float>&,
+                                             const ContactPointData<float> (&)[2],
+                                             const NadalReference<float>&) noexcept;
+extern template void wheel_derailment<double>(WheelForces<double>&,
+                                              const ContactPointData<double> (&)[2],
+                                              const NadalReference<double>&) noexcept;
+extern template WheelContactTotals<float> wheel_totals<float>(const WheelForces<float>&) noexcept;
+extern template WheelContactTotals<double> wheel_totals<double>(
+    const WheelForces<double>&) noexcept;
 extern template NadalReference<float> nadal_reference<float>(float, float) noexcept;
 extern template NadalReference<double> nadal_reference<double>(double, double) noexcept;
 
