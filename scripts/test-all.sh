@@ -64,12 +64,12 @@ demo_step() {
 }
 # The README's first command, as a new user runs it (here on the simulated clock: the same scenarios
 # and results; the real clock only adds timing figures). It must finish and draw every plot.
-demo_step demo build/demo-check "mean_deceleration|ay_steady|wavelength vs Klingel" \
-  "braking.png hunting.png"
-# The wheel-rail force scenarios (the node serving Hertz/Polach forces, Y/Q): their plots and the
-# critical speeds from the loop and from the eigenvalues.
-demo_step demo-rail build/demo-rail "critical_speed|low_speed_wavelength|min_nadal_margin" \
-  "dynamic-hunting.png curving.png" --scenario dynamic-hunting,curving
+demo_step demo build/demo-check \
+  "mean_deceleration|ay_steady|wavelength vs Klingel|critical_speed|low_speed_wavelength" \
+  "braking.png hunting.png dynamic-hunting.png"
+# The curving scenario (on request): outer wheel Y/Q against Nadal.
+demo_step demo-curving build/demo-curving "outer_y_over_q|min_nadal_margin|equilibrium" \
+  "curving.png" --scenario curving
 
 echo "=== installed package: bash scripts/check-install.sh (host, cortex-m4f) ==="
 # cmake --install of the host and Cortex-M4F builds, and examples/consumer built against each

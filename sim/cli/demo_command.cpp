@@ -12,8 +12,10 @@
 namespace tread::cli {
 namespace {
 
-/// The wheel/rail pair of the dynamic-hunting scenario unless --wheelset-profile is given.
-constexpr const char* kDynamicHuntingProfile = "wheel=EPS,rail=60E1,cant=1:40";
+/// The demo's wheel/rail pair: EPS on 60E1 1:40, whose contact is smooth at the centre, so the
+/// dynamic-hunting scenario's linearisation describes the motion (S1002 on 60E1 1:40 has a delta r
+/// jump at y = 0).
+constexpr const char* kDemoWheelsetProfile = "wheel=EPS,rail=60E1,cant=1:40";
 
 void add_demo_command(CLI::App& app) {
   auto* demo =
@@ -22,9 +24,12 @@ void add_demo_command(CLI::App& app) {
   static host::DemoSettings settings;
   static std::string clock = "posix";
   state.wheelsets = 2;
-  state.settings.wheelset_profile = "wheel=S1002,rail=60E1,cant=1:40";
+  state.wheelset_forces = 1;
+  state.settings.wheelset_profile = kDemoWheelsetProfile;
   add_node_options(*demo, state, false);
   demo->get_option("--wheelsets")->default_val(2);
+  demo->get_option("--wheelset-forces")->default_val(1);
+  demo->get_option("--wheelset-profile")->default_val(kDemoWheelsetProfile);
   demo->add_option("--can", settings.can,
                    "stub (in-process bus) or a SocketCAN interface such as vcan0")
       ->capture_default_str();
@@ -34,11 +39,9 @@ void add_demo_command(CLI::App& app) {
   demo->add_option(
           "--scenario", settings.scenarios,
           "scenarios to run, in order (default: braking, step-steer, sine-dwell with 4 "
-          "wheels; hunting with wheelsets): braking, step-steer, sine-dwell, hunting, "
-          "dynamic-hunting, sweep. dynamic-hunting turns on the node's wheel-rail forces for "
-          "wheelset 0 and, without --wheelset-profile, runs on " +
-              std::string(kDynamicHuntingProfile) +
-              " (smooth contact near the centre; S1002 on 60E1 1:40 has a delta r jump at y = 0)")
+          "wheels; hunting with wheelsets; dynamic-hunting with wheelset forces): braking, "
+          "step-steer, sine-dwell, hunting, dynamic-hunting, curving, sweep. dynamic-hunting and "
+          "curving turn on the node's wheel-rail forces for wheelset 0")
       ->delimiter(',');
   demo->add_option("--sweep-duration-s", settings.sweep_duration_s,
                    "length of the 'sweep' scenario (tyre test machine sweeps)")
@@ -58,17 +61,14 @@ void add_demo_command(CLI::App& app) {
       "--no-plot", [](std::int64_t) { settings.plot = false; }, "write the trace but no plot");
   demo->add_option("--log", settings.log,
                    "candump log of the node's traffic (replay with tread node --replay)");
-  demo->callback([demo] {
-    // The dynamic-hunting scenario runs on the node's wheel-rail forces.
-    const bool dynamic =
+  demo->callback([] {
+    // The dynamic-hunting and curving scenarios run on the node's wheel-rail forces.
+    const bool forces =
         std::any_of(settings.scenarios.begin(), settings.scenarios.end(),
                     [](const std::string& n) { return host::needs_wheelset_forces(n); });
-    if (dynamic) {
+    if (forces) {
       state.wheelsets = std::max(state.wheelsets, 1);
       state.wheelset_forces = std::max(state.wheelset_forces, 1);
-      if (demo->get_option("--wheelset-profile")->count() == 0) {
-        state.settings.wheelset_profile = kDynamicHuntingProfile;
-      }
     }
     settings.node = node_settings(state);
     settings.sim_clock = clock == "sim";

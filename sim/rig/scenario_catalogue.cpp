@@ -24,6 +24,9 @@ std::vector<std::string> default_scenarios(const ScenarioContext& context) {
   if (context.wheelsets > 0) {
     names.emplace_back("hunting");
   }
+  if (context.wheelsets > 0 && context.wheelset_forces > 0) {
+    names.emplace_back("dynamic-hunting");
+  }
   if (names.empty()) {
     names.emplace_back("sweep");
   }

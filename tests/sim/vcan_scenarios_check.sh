@@ -17,7 +17,7 @@ for layout in classic fd; do
   flag=""; [[ $layout == fd ]] && flag="--fd"
   # The same scenarios in process (stub bus, simulated clock): the traces must be equal, value for
   # value (lockstep makes the two-process run independent of timing).
-  "$tread" demo --clock sim $flag --tir "$tir" --wheelsets 2 --wheelset-profile "$profile" \
+  "$tread" demo --clock sim $flag --tir "$tir" --wheelsets 2 --wheelset-forces 0 --wheelset-profile "$profile" \
     --scenario "$scenarios" --no-plot --out "$out/inproc_$layout" >"$out/inproc_$layout.txt"
   for csv in "$out/inproc_$layout"/*.csv; do
     name=$(basename "$csv")
