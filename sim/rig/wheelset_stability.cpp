@@ -104,6 +104,7 @@ LinearMode least_damped_mode(const rail::WheelsetParams<double>& params,
                              const WheelsetContactModel& model, double speed_m_s) {
   const WheelsetContactModel::Linearisation lin = model.linearise(speed_m_s);
   const Eigen::Matrix4d a = rail::system_matrix(params, lin.stiffness, lin.damping);
+  const rail::EigenHeapForbidden no_heap;
   const Eigen::EigenSolver<Eigen::Matrix4d> solver(a, false);
   LinearMode out;
   out.growth_rate_per_s = -std::numeric_limits<double>::infinity();

@@ -16,14 +16,34 @@
 // shifts the critical speed by several per cent at 1 kHz. The forces are those of this step (the
 // node's answer); the matrix only steadies the step.
 //
-// Fixed-size Eigen types, no heap (EIGEN_NO_MALLOC in every unit that includes this).
+// Fixed-size Eigen types, no heap: every function here holds an EigenHeapForbidden while it runs,
+// so a debug build asserts on any Eigen allocation (the build defines EIGEN_RUNTIME_NO_MALLOC, the
+// run-time form of EIGEN_NO_MALLOC: see CMakeLists.txt), and tests/loop/no_allocation_test.cpp
+// counts every allocation through the step and the eigen-analysis in any build.
 
-#ifndef EIGEN_NO_MALLOC
-#define EIGEN_NO_MALLOC
-#endif
 #include <Eigen/Dense>
 
 namespace tread::rail {
+
+/// Forbids Eigen heap allocations while alive (with EIGEN_RUNTIME_NO_MALLOC; else nothing).
+class EigenHeapForbidden {
+ public:
+#ifdef EIGEN_RUNTIME_NO_MALLOC
+  EigenHeapForbidden() noexcept : allowed_before_(Eigen::internal::set_is_malloc_allowed(false)) {}
+  ~EigenHeapForbidden() {
+    Eigen::internal::set_is_malloc_allowed(allowed_before_);
+  }
+#else
+  EigenHeapForbidden() noexcept = default;
+#endif
+  EigenHeapForbidden(const EigenHeapForbidden&) = delete;
+  EigenHeapForbidden& operator=(const EigenHeapForbidden&) = delete;
+
+ private:
+#ifdef EIGEN_RUNTIME_NO_MALLOC
+  bool allowed_before_;
+#endif
+};
 
 template <typename T>
 using Vector2 = Eigen::Matrix<T, 2, 1>;
@@ -101,6 +121,7 @@ template <typename T>
 void wheelset_step(WheelsetState<T>& s, const Vector2<T>& contact_force,
                    const Eigen::Matrix<T, 4, 4>& jacobian, const WheelsetParams<T>& p,
                    T dt) noexcept {
+  const EigenHeapForbidden no_heap;
   const Eigen::Matrix<T, 4, 4> lhs = Eigen::Matrix<T, 4, 4>::Identity() - (dt / T{2}) * jacobian;
   const Eigen::Matrix<T, 4, 1> dx =
       lhs.partialPivLu().solve(dt * state_derivative(s, contact_force, p));
@@ -115,6 +136,7 @@ template <typename T>
 Eigen::Matrix<T, 4, 4> system_matrix(const WheelsetParams<T>& p,
                                      const Matrix2<T>& contact_stiffness,
                                      const Matrix2<T>& contact_damping) noexcept {
+  const EigenHeapForbidden no_heap;
   const Matrix2<T> m_inv = mass_matrix(p).inverse();
   Eigen::Matrix<T, 4, 4> a = Eigen::Matrix<T, 4, 4>::Zero();
   a.template block<2, 2>(0, 2) = Matrix2<T>::Identity();

@@ -3,6 +3,7 @@
 // malloc/calloc/realloc in this process is counted. The count must stay zero.
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <atomic>
 #include <cstdlib>
@@ -19,6 +20,7 @@
 #include "node/rail_force_channel.hpp"
 #include "node/test_channels.hpp"
 #include "proto/rig_link.hpp"
+#include "rail/wheelset_model.hpp"
 #include "stub/fake_gpio.hpp"
 #include "stub/sim_clock.hpp"
 #include "stub/stub_can_bus.hpp"
@@ -186,6 +188,52 @@ TEST(NoAllocation, WheelRailForcesInTheLoopAllocateNothing) {
   EXPECT_EQ(node.counters().non_finite_outputs, 0U);
   EXPECT_GT(worst_y_over_q, 1.0F);  // the sweep reached the flange
   EXPECT_NE(outputs.rail_wheels[3].q_n, 0.0F);
+}
+
+#if !defined(NDEBUG) && defined(EIGEN_RUNTIME_NO_MALLOC)
+TEST(NoAllocationDeathTest, EigenHeapForbiddenCatchesADynamicMatrix) {
+  // The guard the wheelset model holds is not vacuous: a dynamic matrix inside it aborts a debug
+  // build; outside it the heap is allowed again (the fitter's Ceres code needs it).
+  EXPECT_DEATH(
+      {
+        const rail::EigenHeapForbidden no_heap;
+        Eigen::MatrixXd m(8, 8);
+        m.setZero();
+      },
+      "heap allocation is forbidden");
+  Eigen::MatrixXd allowed(8, 8);
+  allowed.setOnes();
+  EXPECT_EQ(allowed.sum(), 64.0);
+}
+#endif
+
+TEST(NoAllocation, WheelsetModelAndItsEigenAnalysisAllocateNothing) {
+  // The rig's wheelset step (4x4 linearly implicit solve) and the linear analysis (system matrix,
+  // eigenvalues of a fixed-size 4x4): fixed-size Eigen, no heap, counted in any build (debug
+  // builds also assert inside rail::EigenHeapForbidden scopes).
+  const rail::WheelsetParams<double> p;
+  rail::Matrix2<double> k;
+  k << -1.4e5, 1.9e7, -3.5e6, -6.2e4;
+  rail::Matrix2<double> d;
+  d << -6.3e5, -1.9e3, 2.0e3, -3.6e5;
+  const Eigen::Matrix4d j = rail::system_matrix(p, k, d);
+  rail::WheelsetState<double> s;
+  s.q(0) = 1e-3;
+  g_allocations = 0;
+  g_counting = true;
+  double growth = 0.0;
+  for (int n = 0; n < 100'000; ++n) {
+    const rail::Vector2<double> f = k * s.q + d * s.v;
+    rail::wheelset_step(s, f, j, p, 1e-3);
+    if (n % 1000 == 0) {
+      const rail::EigenHeapForbidden no_heap;
+      const Eigen::EigenSolver<Eigen::Matrix4d> solver(rail::system_matrix(p, k, d), false);
+      growth = std::max(growth, solver.eigenvalues().real().maxCoeff());
+    }
+  }
+  g_counting = false;
+  EXPECT_EQ(g_allocations.load(), 0U);
+  EXPECT_TRUE(std::isfinite(s.q(0)) && std::isfinite(growth));
 }
 
 }  // namespace
