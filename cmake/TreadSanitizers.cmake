@@ -1,7 +1,16 @@
 # AddressSanitizer + UndefinedBehaviorSanitizer; any report fails the run.
+#
+# Eigen under ASan: Eigen's headers switch to their own aligned allocator when __SANITIZE_ADDRESS__
+# is defined, while the uninstrumented static Ceres library was built with glibc's malloc (already
+# 16-byte aligned). Both copies of Eigen's inline allocation functions end up in one binary; the
+# linker keeps ours for some calls and Ceres' inlined free for others, and frees mismatch
+# (AddressSanitizer: bad-free in ceres::internal::CovarianceImpl). ASan's malloc is 16-byte aligned
+# too (and Eigen asserts it in debug builds), so every unit uses malloc as Ceres does.
+set(_tread_eigen_as_ceres EIGEN_MALLOC_ALREADY_ALIGNED=1)
 if(TREAD_SANITIZE)
   add_compile_options(-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
   add_link_options(-fsanitize=address,undefined -fno-sanitize-recover=all)
+  add_compile_definitions(${_tread_eigen_as_ceres})
 endif()
 
 # libFuzzer (clang): every object instrumented for coverage and sanitized; the fuzz targets link the
@@ -12,5 +21,6 @@ if(TREAD_FUZZ)
   endif()
   add_compile_options(-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all
     -fno-omit-frame-pointer)
+  add_compile_definitions(${_tread_eigen_as_ceres})
   add_link_options(-fsanitize=address,undefined -fno-sanitize-recover=all)
 endif()
