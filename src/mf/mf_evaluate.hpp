@@ -24,8 +24,9 @@
 // such an output is returned as 0 with MfOutput::status non_finite, never as NaN/inf.
 // Deliberate differences:
 //   - rho/Rl for FITTYP ≠ 61 (MF 5.2, MF 6.2): MFeval minimises (Fz62(Rl) − Fz)² with fminsearch
-//     (TolX 1e-6, start 0.3 m); here the root of Fz62(Rl) = Fz is found by bisection to the last
-//     bit. The two agree to about 1e-8 m.
+//     (TolX 1e-6, start 0.3 m); here the root of Fz62(Rl) = Fz is found by a safeguarded Newton
+//     iteration to the output type's resolution (detail::loaded_radius62). The two agree to about
+//     1e-8 m.
 //   - rho/Rl for FITTYP 61 solve the same quadratic in the cancellation-free form.
 //   - TYRESIDE mirroring (MountedSide), which MFeval ignores.
 //   - A finite-arithmetic envelope, applied in every mode: Fz ≤ 10·max(FZMAX, FNOMIN), |κ| ≤ 100,
@@ -653,36 +654,202 @@ T my(const MfParameters<P>& p, const Prepared<T>& in, const T& fx) {
   return if_else(stopped, T(0), m);
 }
 
-/// MF 6.2 vertical force for a loaded radius (calculateFz62). Writes the deflection.
+/// MF 6.2's vertical force as a function of the loaded radius, Fz62(Rl) (calculateFz62), at a
+/// given γ, ω, Romega, Fx, Fy and pressure. What does not depend on Rl is computed once here
+/// (√ of Q_FZ1, tan γ, the speed and Fx corrections), so the root search below pays per step only
+/// for the Rl-dependent part.
 template <typename T, typename P>
-T fz62(const MfParameters<P>& p, const T& gamma, const T& omega, const T& romega, const T& dpi,
-       const T& rl, const T& fx, const T& fy, T& rho_z) {
-  const T r0 = p.unloaded_radius_m;
-  const T fz0 = p.fnomin_n;
-  const T a = p.vertical_stiffness_npm * r0 / fz0;
-  const T q_fz1 = sqrt(max_of(T(0), a * a - T(4) * p.q_fz2));
-  const T ratio = rl / romega;
-  const T sfyg = (p.q_fys1 + p.q_fys2 * ratio + p.q_fys3 * ratio * ratio) * gamma;
-  const T rho_zfr = max_of(romega - rl, T(0));
+struct Fz62Curve {
+  const MfParameters<P>* p;
+  T r0, fz0, romega, gamma, abs_gamma;
+  T q_fz1;
+  T camber_scale;   // (rtw/8)·|tan γ|·γ² / den², 0 where den = 0 (MFeval: NaN → 0)
+  T base;           // 1 + Q_V2·(R0/V0)·|ω| − (Q_FCX·Fx/Fz0)²
+  T pressure;       // 1 + PFZ1·dpi
+  T fcy_per_force;  // Q_FCY / Fz0
+  T fy;
+};
+
+template <typename T, typename P>
+Fz62Curve<T, P> fz62_curve(const MfParameters<P>& p, const T& gamma, const T& omega,
+                           const T& romega, const T& dpi, const T& fx, const T& fy) {
+  Fz62Curve<T, P> c;
+  c.p = &p;
+  c.r0 = p.unloaded_radius_m;
+  c.fz0 = p.fnomin_n;
+  c.romega = romega;
+  c.gamma = gamma;
+  c.abs_gamma = abs(gamma);
+  const T a = p.vertical_stiffness_npm * c.r0 / c.fz0;
+  c.q_fz1 = sqrt(max_of(T(0), a * a - T(4) * p.q_fz2));
   const T rtw = (T(1.075) - T(0.5) * p.aspect_ratio) * p.width_m;
-  const T num = (p.q_cam1 * rl + p.q_cam2 * rl * rl) * gamma;
   const T den = (p.q_cam1 * romega + p.q_cam2 * romega * romega) * gamma;
-  // MFeval: NaN (0/0 at γ = 0 or Q_CAM1 = Q_CAM2 = 0) → 0.
   const auto cambered = !is_zero(den);
-  T rho_zg = T(0);
+  c.camber_scale = T(0);
   if (any_lane(cambered)) {
-    rho_zg = if_else(cambered, (num * num) * (rtw / T(8)) * abs(mf_tan(gamma)) / (den * den), T(0));
+    c.camber_scale =
+        if_else(cambered, (gamma * gamma) * (rtw / T(8)) * abs(mf_tan(gamma)) / (den * den), T(0));
   }
-  rho_zg = rho_zg - p.q_cam3 * rho_zfr * abs(gamma);
-  rho_z = max_of(rho_zfr + rho_zg, T(0));
-  const T rho_r0 = rho_z / r0;
-  const T fcx = p.q_fcx * fx / fz0;
-  const T rho_pow =
-      if_else(rho_r0 > T(0), T(pow(rho_r0, T(p.q_fcy2))), is_zero(p.q_fcy2) ? T(1) : T(0));
-  const T fcy = rho_pow * (p.q_fcy * (fy - sfyg) / fz0);
-  const T fcorr = (T(1) + p.q_v2 * (r0 / p.longvl_mps) * abs(omega) - fcx * fcx - fcy * fcy) *
-                  (T(1) + p.pfz1 * dpi);
-  return fcorr * (q_fz1 * rho_r0 + p.q_fz2 * rho_r0 * rho_r0) * fz0;
+  const T fcx = p.q_fcx * fx / c.fz0;
+  c.base = T(1) + p.q_v2 * (c.r0 / p.longvl_mps) * abs(omega) - fcx * fcx;
+  c.pressure = T(1) + p.pfz1 * dpi;
+  c.fcy_per_force = T(p.q_fcy) / c.fz0;
+  c.fy = fy;
+  return c;
+}
+
+/// The deflection ρz at a loaded radius: free-rolling ρ plus the camber part.
+template <typename T, typename P>
+T fz62_deflection(const Fz62Curve<T, P>& c, const T& rl, T& slope) {
+  const MfParameters<P>& p = *c.p;
+  const auto compressed = rl < c.romega;
+  const T rho_zfr = max_of(c.romega - rl, T(0));
+  const T drho_zfr = if_else(compressed, T(-1), T(0));
+  const T cam = p.q_cam1 * rl + p.q_cam2 * rl * rl;
+  const T rho_z = rho_zfr + c.camber_scale * cam * cam - p.q_cam3 * rho_zfr * c.abs_gamma;
+  const T drho_z = T(2) * c.camber_scale * cam * (p.q_cam1 + T(2) * p.q_cam2 * rl) +
+                   drho_zfr * (T(1) - p.q_cam3 * c.abs_gamma);
+  const auto positive = rho_z > T(0);
+  slope = if_else(positive, drho_z, T(0));
+  return if_else(positive, rho_z, T(0));
+}
+
+/// Fz62(Rl) and its slope dFz62/dRl; writes the deflection ρz.
+template <typename T, typename P>
+T fz62(const Fz62Curve<T, P>& c, const T& rl, T& slope, T& rho_z) {
+  const MfParameters<P>& p = *c.p;
+  T drho_z = T(0);
+  rho_z = fz62_deflection(c, rl, drho_z);
+  const T rho_r0 = rho_z / c.r0;
+  const T drho_r0 = drho_z / c.r0;
+  // Lateral force correction: Fy less the camber's share Sfyg (a polynomial in Rl/Romega).
+  const T ratio = rl / c.romega;
+  const T sfyg = (p.q_fys1 + p.q_fys2 * ratio + p.q_fys3 * ratio * ratio) * c.gamma;
+  const T dsfyg = (p.q_fys2 + T(2) * p.q_fys3 * ratio) * c.gamma / c.romega;
+  const auto loaded = rho_r0 > T(0);
+  const T rho_pow = if_else(loaded, T(pow(rho_r0, T(p.q_fcy2))), is_zero(p.q_fcy2) ? T(1) : T(0));
+  const T drho_pow = if_else(loaded, T(p.q_fcy2) * div_or(rho_pow, rho_r0, T(0)) * drho_r0, T(0));
+  const T lateral = c.fcy_per_force * (c.fy - sfyg);
+  const T fcy = rho_pow * lateral;
+  const T dfcy = drho_pow * lateral - rho_pow * c.fcy_per_force * dsfyg;
+  const T fcorr = (c.base - fcy * fcy) * c.pressure;
+  const T stiffness = (c.q_fz1 * rho_r0 + p.q_fz2 * rho_r0 * rho_r0) * c.fz0;
+  slope = T(-2) * fcy * dfcy * c.pressure * stiffness +
+          fcorr * (c.q_fz1 + T(2) * p.q_fz2 * rho_r0) * drho_r0 * c.fz0;
+  return fcorr * stiffness;
+}
+
+template <typename T>
+struct LoadedRadius62 {
+  T rl_m;
+  T rho_m;
+  int newton_steps;  // steps of the safeguarded Newton iteration (the most of any lane)
+  bool fallback;     // a lane needed the bisection fallback (never in the tested envelope)
+};
+
+/// Rl with Fz62(Rl) = Fz: a safeguarded Newton iteration on the branch where the root lies.
+/// - The branch: below Romega the tyre is compressed and Fz62 falls steeply with Rl; only where the
+///   camber deflection alone carries more than Fz (a light, cambered wheel) does the root lie above
+///   Romega. Above Romega Fz62 is a hump (Q_FYS's Sfyg grows with Rl/Romega), and just below it,
+///   with Fy ≠ 0, it may dip (ρ^Q_FCY2): the bracket, [0, Romega] or [Romega, Romega + w], keeps
+///   the search on the one branch. Romega's end is known (Fz62 evaluated there); the far end is
+///   evaluated when a step would leave the bracket towards it: if Fz62 is on the same side of Fz
+///   there, the branch has no root (loads beyond a fully squashed tyre, |γ| near 90° with the
+///   limits off) and that end is the answer, as bisection gives.
+/// - Start: the MF 6.1-style deflection (the quadratic in ρ/R0 with the Rl-independent
+///   corrections) less the camber's deflection at Romega.
+/// - A step is Newton's where it lands inside the bracket and the slope is negative, else the
+///   bracket's midpoint (or its far end, not yet evaluated). Converged when a Newton step is at
+///   most R0·ε^(3/4), ε of the output type: the error after it is of order the step² times
+///   Fz62''/Fz62' (≲ 1e3 /m at the lightest loads), below ε·R0.
+/// tests/mf/mf62_loaded_radius_test.cpp shows over the envelope (every MF 6.2, MF 5.2 and PAC2002
+/// test tyre, loads 0 … 10·FZMAX, |γ| to 1.5707, slips, speeds, pressures, limits on and off) that
+/// it converges in at most 13 steps (3–5 at most points; MF 5.2 and PAC2002, without the camber
+/// and lateral terms, in 1: the start is their root) to the least-deflection root, the one a tyre
+/// reaches when loaded from Romega. Should a lane still be unconverged after kNewtonSteps,
+/// bisection of its remaining bracket finishes it (lanes: a converged lane keeps its value).
+template <typename T, typename P>
+LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) {
+  constexpr int kNewtonSteps = 16;
+  const MfParameters<P>& p = *c.p;
+  constexpr bool coarse = std::is_same_v<T, float> || is_lanes<T> || is_fixed_point<T>;
+  // ε^(3/4): float 6.4e-6, double 1.8e-12 (fixed point Q31.32 as float: its resolution of a
+  // radius, 2.3e-10 m, is float's).
+  const T tolerance = c.r0 * T(coarse ? 6.4e-6 : 1.8e-12);
+  const T settle = c.r0 * T(coarse ? 1.2e-7 : 2.2e-16);  // ε·R0: the error aimed at
+  T slope_romega = T(0);
+  T rho_romega = T(0);
+  const auto beyond = fz62(c, c.romega, slope_romega, rho_romega) > fz_target;
+  const T lo_end = if_else(beyond, c.romega, T(0));
+  const T hi_end = if_else(beyond, c.romega + p.width_m, c.romega);
+  T lo = lo_end;
+  T hi = hi_end;
+  auto lo_known = beyond;   // Fz62(lo) > Fz is known
+  auto hi_known = !beyond;  // Fz62(hi) ≤ Fz is known
+  // Start: q_fz2·x² + q_fz1·x = Fz / ((1 + speed − Fx² − Fy²)(1 + PFZ1·dpi)·Fz0), x = ρ/R0.
+  const T fcy0 = c.fcy_per_force * c.fy;
+  const T external = (c.base - fcy0 * fcy0) * c.pressure * c.fz0;
+  const T q = max_of(div_or(fz_target, external, T(0)), T(0));
+  const T x0 = div_or(T(2) * q, c.q_fz1 + sqrt(c.q_fz1 * c.q_fz1 + T(4) * p.q_fz2 * q), T(0));
+  // The camber's deflection at Romega is carried already; the free-rolling part makes up the rest.
+  const T free_share = max_of(T(1) - p.q_cam3 * c.abs_gamma, T(0.1));
+  const T rho_zfr0 = max_of(x0 * c.r0 - rho_romega, T(0)) / free_share;
+  T rl = min_of(max_of(c.romega - rho_zfr0, lo), hi);
+  auto active = !(T(0) > T(0));  // every lane
+  auto previous_newton = !active;
+  T previous_step = T(0);
+  LoadedRadius62<T> result{T(0), T(0), 0, false};
+  for (int i = 0; i < kNewtonSteps; ++i) {
+    T slope = T(0);
+    T rho = T(0);
+    const T resid = fz62(c, rl, slope, rho) - fz_target;
+    const auto above = resid > T(0);
+    lo = if_else(active && above, rl, lo);
+    hi = if_else(active && !above, rl, hi);
+    lo_known = lo_known || (active && above);
+    hi_known = hi_known || (active && !above);
+    const T step = -div_or(resid, slope, T(0));
+    const T newton = rl + step;
+    const auto falling = slope < T(0);
+    // Converged: a step at most the tolerance (it may round onto the bracket's end it came
+    // from), or a Newton step after a Newton step whose remaining error, C·step² with
+    // C ≈ step / previous² (quadratic convergence), is at most ε·R0: |step|³ ≤ ε·R0·previous²
+    // (this saves the confirming step).
+    // At an end with Fz62 on the far side of Fz, the branch has no root: that end.
+    const auto no_root = (above && !(rl < hi_end)) || (!above && !(rl > lo_end));
+    const T step_abs = abs(step);
+    const auto settled = previous_newton && step_abs < previous_step &&
+                         !(step_abs * step_abs * step_abs > settle * previous_step * previous_step);
+    const auto converged =
+        is_zero(resid) || no_root || (falling && (!(step_abs > tolerance) || settled));
+    const auto inside = falling && newton > lo && newton < hi;
+    T next = if_else(inside, newton, T(0.5) * (lo + hi));
+    next = if_else(!inside && above && !hi_known, hi_end, next);
+    next = if_else(!inside && !above && !lo_known, lo_end, next);
+    next = if_else(converged, if_else(no_root, rl, min_of(max_of(newton, lo), hi)), next);
+    rl = if_else(active, next, rl);
+    previous_newton = inside;
+    previous_step = step_abs;
+    active = active && !converged;
+    result.newton_steps = i + 1;
+    if (!any_lane(active)) break;
+  }
+  if (any_lane(active)) {
+    result.fallback = true;
+    for (int i = 0; i < 80; ++i) {
+      const T mid = T(0.5) * (lo + hi);
+      T slope = T(0);
+      T rho = T(0);
+      const auto above = fz62(c, mid, slope, rho) > fz_target;
+      lo = if_else(active && above, mid, lo);
+      hi = if_else(active && !above, mid, hi);
+    }
+    rl = if_else(active, T(0.5) * (lo + hi), rl);
+  }
+  T unused = T(0);
+  result.rl_m = rl;
+  result.rho_m = fz62_deflection(c, rl, unused);
+  return result;
 }
 
 /// TYRESIDE mirroring, y → −y, where `mirror` is set (per lane for lanes): the lateral inputs
@@ -926,24 +1093,14 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
       out.rho_m = rho_z;
       out.cz_npm = fz / rho_z;
     } else {
-      // Rl with Fz62(Rl) = Fz (decreasing in Rl): bisection on [0, Romega + rtw]. The load: MF
-      // 6.2 solves for the load as given (MFeval 4.x's calculateRhoRl62 takes uFz, not the Fz
-      // limited to FZMAX that the forces see); MF 5.2 / PAC2002 for the limited load.
+      // Rl with Fz62(Rl) = Fz (decreasing in Rl), solved by loaded_radius62. The load: MF 6.2
+      // solves for the load as given (MFeval 4.x's calculateRhoRl62 takes uFz, not the Fz limited
+      // to FZMAX that the forces see); MF 5.2 / PAC2002 for the limited load.
       const T fz_target = p.fit_type == FitType::mf62 ? in.ufz : in.fz;
-      T lo = T(0);
-      T hi = in.romega + p.width_m;
-      T rho_dummy = T(0);
-      for (int i = 0; i < 80; ++i) {
-        const T mid = T(0.5) * (lo + hi);
-        const T f = fz62(p, in.gamma, in.omega, in.romega, dpi, mid, out.fx_n, out.fy_n, rho_dummy);
-        const auto above = f > fz_target;
-        lo = if_else(above, mid, lo);
-        hi = if_else(above, hi, mid);
-      }
-      out.rl_m = T(0.5) * (lo + hi);
-      T rho_z = T(0);
-      static_cast<void>(
-          fz62(p, in.gamma, in.omega, in.romega, dpi, out.rl_m, out.fx_n, out.fy_n, rho_z));
+      const LoadedRadius62<T> solved = loaded_radius62(
+          fz62_curve(p, in.gamma, in.omega, in.romega, dpi, out.fx_n, out.fy_n), fz_target);
+      out.rl_m = solved.rl_m;
+      T rho_z = solved.rho_m;
       rho_z = if_else(is_zero(in.fz) || !(rho_z > T(0)), T(1e-6), rho_z);
       out.rho_m = rho_z;
       out.cz_npm = in.fz / rho_z;

@@ -9,13 +9,19 @@
 // (1.5·FZMAX), κ = α = γ = 0, Vx = 16.7 m/s, Rl was 0.34050 m instead of 0.31827 m (22 mm high).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <exception>
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "golden_path.hpp"
 #include "mf/mf_evaluate.hpp"
 #include "mf/mf_evaluate_four.hpp"
+#include "mf/mf_lanes.hpp"
 #include "mf/mf_parameters_from_tir.hpp"
 
 namespace tread::mf {
@@ -42,7 +48,10 @@ double fz62_reference(const MfParameters<double>& p, double gamma, double omega,
   if (std::fabs(gamma) > 0.0) {
     const double num = (p.q_cam1 * rl + p.q_cam2 * rl * rl) * gamma;
     const double den = (p.q_cam1 * romega + p.q_cam2 * romega * romega) * gamma;
-    rho_camber = (num / den) * (num / den) * (rtw / 8.0) * std::fabs(std::tan(gamma));
+    // Q_CAM1 = Q_CAM2 = 0 (MF 5.2, PAC2002 files): 0/0, which MFeval turns into 0.
+    if (std::fabs(den) > 0.0) {
+      rho_camber = (num / den) * (num / den) * (rtw / 8.0) * std::fabs(std::tan(gamma));
+    }
   }
   rho_camber -= p.q_cam3 * rho_free * std::fabs(gamma);
   const double rho = std::max(rho_free + rho_camber, 0.0);
@@ -151,6 +160,177 @@ TEST(Mf62LoadedRadius, FloatAndFourLanesAgreeWithDouble) {
     EXPECT_NEAR(f.rl_m, d.rl_m, 2e-5) << loads[k];
     EXPECT_NEAR(four[k].rl_m, d.rl_m, 2e-5) << loads[k];
     EXPECT_EQ(four[k].status, Status::ok);
+  }
+}
+
+// The loaded radius is solved by a safeguarded Newton iteration (detail::loaded_radius62) with a
+// bounded number of steps. Over the whole envelope the model accepts (loads 0 … 10·FZMAX, |γ| up to
+// 1.5707 rad, slips, speeds and pressures far outside any measured range), for every tyre file that
+// takes this path (MF 6.2, MF 5.2, PAC2002), it must converge within its step budget without the
+// bisection fallback, to the root of the independent Fz62 above on the same branch (below Romega,
+// or above it where the camber alone carries more than Fz) found by 200 halvings in double.
+struct EnvelopePoint {
+  double fz, kappa, alpha, gamma, vx, p_ratio;
+};
+
+std::vector<EnvelopePoint> envelope(const MfParameters<double>& p) {
+  const double fz_top = 10.0 * std::max(p.fzmax_n, p.fnomin_n);
+  const std::array<double, 13> loads = {
+      0.0,           1.0,          10.0,       100.0,          300.0,
+      1000.0,        3000.0,       p.fnomin_n, 2 * p.fnomin_n, p.fzmax_n,
+      3 * p.fzmax_n, 0.5 * fz_top, fz_top};
+  const std::array<double, 10> gammas = {-1.5707, -0.5, -0.1, -0.03, 0.0,
+                                         0.002,   0.01, 0.05, 0.2,   1.0};
+  const std::array<std::array<double, 2>, 4> slips = {
+      {{0.0, 0.0}, {0.1, 0.05}, {-0.5, -0.3}, {0.02, 1.2}}};
+  const std::array<double, 3> speeds = {0.5, 16.7, 60.0};
+  const std::array<double, 3> pressures = {0.5, 1.0, 2.0};
+  std::vector<EnvelopePoint> points;
+  for (const double fz : loads)
+    for (const double g : gammas)
+      for (const auto& s : slips)
+        for (const double v : speeds)
+          for (const double pr : pressures) points.push_back({fz, s[0], s[1], g, v, pr});
+  return points;
+}
+
+/// Rl with the least deflection: loading the tyre from Romega, the first Rl where Fz62 reaches Fz.
+/// Below Romega: the largest root in [0, Romega]; above it (where the camber alone carries more
+/// than Fz at Romega), the smallest in [Romega, Romega + w]; the end of that interval if none. A
+/// scan away from Romega in steps of 10 µm finds the first crossing, bisection (100 halvings) the
+/// root.
+double rl_least_deflection(const MfParameters<double>& p, const MfOutput<double>& out, double dpi,
+                           double fz_target) {
+  const double r0 = p.unloaded_radius_m;
+  const double w = out.omega_radps * r0 / p.longvl_mps;
+  const double romega = r0 * (p.q_re0 + p.q_v1 * w * w);
+  const auto above = [&](double rl) {
+    return fz62_reference(p, out.gamma_rad, out.omega_radps, dpi, out.fx_n, out.fy_n, rl) >
+           fz_target;
+  };
+  const bool beyond = above(romega);
+  const double end = beyond ? romega + p.width_m : 0.0;
+  const double step = beyond ? 1e-5 : -1e-5;
+  double near = romega;  // above(near) == beyond
+  double far = romega;
+  for (;;) {
+    far = near + step;
+    if (beyond ? far >= end : far <= end) {
+      far = end;
+      if (above(far) == beyond) return end;  // no root on this branch
+      break;
+    }
+    if (above(far) != beyond) break;
+    near = far;
+  }
+  for (int i = 0; i < 100; ++i) {
+    const double mid = 0.5 * (near + far);
+    (above(mid) == beyond ? near : far) = mid;
+  }
+  return 0.5 * (near + far);
+}
+
+std::vector<std::string> fz62_path_tyres() {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(testing::tyres_dir())) {
+    if (entry.path().extension() != ".tir") continue;
+    try {
+      if (load_mf_parameters(entry.path()).params.fit_type == FitType::mf61) continue;
+    } catch (const std::exception&) {
+      continue;  // PAC89/PAC94: not a Magic Formula file
+    }
+    names.push_back(entry.path().filename().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+template <typename T>
+MfInput<T> input_at(const MfParameters<double>& p, const EnvelopePoint& e) {
+  MfInput<T> in;
+  in.fz_n = static_cast<T>(e.fz);
+  in.kappa = static_cast<T>(e.kappa);
+  in.alpha_rad = static_cast<T>(e.alpha);
+  in.gamma_rad = static_cast<T>(e.gamma);
+  in.vx_mps = static_cast<T>(e.vx);
+  in.p_pa = static_cast<T>(e.p_ratio * p.nompres_pa);
+  return in;
+}
+
+TEST(Mf62LoadedRadius, NewtonConvergesWithinItsBudgetOverTheEnvelope) {
+  const std::vector<std::string> tyres = fz62_path_tyres();
+  ASSERT_GE(tyres.size(), 4U);  // MF 6.2, MF 5.2 and the PAC2002 files
+  for (const std::string& name : tyres) {
+    const MfParameters<double> p = load(name.c_str());
+    const MfParameters<float> pf = convert_parameters<float>(p);
+    for (const int mode : {111, 211}) {
+      const MfOptions o = options_from_use_mode(mode).value;
+      std::array<int, 17> steps_double{};  // [0]: the bisection fallback
+      std::array<int, 17> steps_float{};
+      double worst_double = 0.0;
+      double worst_float = 0.0;
+      for (const EnvelopePoint& e : envelope(p)) {
+        MfOutput<double> out = evaluate(p, input_at<double>(p, e), o);
+        const double dpi = (out.p_pa - p.nompres_pa) / p.nompres_pa;  // P_Pa: limited
+        // γ within the envelope, and with the limits on within CAMMIN … CAMMAX (out.gamma_rad is
+        // the unlimited input).
+        double gamma = std::clamp(e.gamma, -1.5707, 1.5707);
+        if (o.use_limits) gamma = std::clamp(gamma, p.cammin_rad, p.cammax_rad);
+        out.gamma_rad = gamma;
+        // The load solved for: MF 6.2 the load as given (within the envelope), MF 5.2 / PAC2002
+        // the load the forces see.
+        const double fz_envelope = std::min(e.fz, 10.0 * std::max(p.fzmax_n, p.fnomin_n));
+        const double fz_target = p.fit_type == FitType::mf62 || !o.use_limits
+                                     ? fz_envelope
+                                     : std::min(fz_envelope, p.fzmax_n);
+        const double expected = rl_least_deflection(p, out, dpi, fz_target);
+        const double r0 = p.unloaded_radius_m;
+        const double w = out.omega_radps * r0 / p.longvl_mps;
+        const double romega = r0 * (p.q_re0 + p.q_v1 * w * w);
+        const auto solved = detail::loaded_radius62(
+            detail::fz62_curve(p, gamma, out.omega_radps, romega, dpi, out.fx_n, out.fy_n),
+            fz_target);
+        EXPECT_EQ(solved.rl_m, out.rl_m) << name;
+        ++steps_double[solved.fallback ? 0 : static_cast<std::size_t>(solved.newton_steps)];
+        const std::string where = name + " mode " + std::to_string(mode) + " Fz " +
+                                  std::to_string(e.fz) + " kappa " + std::to_string(e.kappa) +
+                                  " alpha " + std::to_string(e.alpha) + " gamma " +
+                                  std::to_string(e.gamma) + " Vx " + std::to_string(e.vx) + " p " +
+                                  std::to_string(e.p_ratio);
+        // Double: the least-deflection root to 1e-10 m, limits on or off.
+        EXPECT_NEAR(out.rl_m, expected, 1e-10) << where;
+        worst_double = std::max(worst_double, std::fabs(out.rl_m - expected));
+
+        // Float: its own Fz62 (Fx, Fy, ω in float).
+        const MfOutput<float> outf = evaluate(pf, input_at<float>(p, e), o);
+        const float dpif = (outf.p_pa - pf.nompres_pa) / pf.nompres_pa;
+        const float wf = outf.omega_radps * pf.unloaded_radius_m / pf.longvl_mps;
+        const float romegaf = pf.unloaded_radius_m * (pf.q_re0 + pf.q_v1 * wf * wf);
+        const auto solvedf = detail::loaded_radius62(
+            detail::fz62_curve(pf, static_cast<float>(gamma), outf.omega_radps, romegaf, dpif,
+                               outf.fx_n, outf.fy_n),
+            static_cast<float>(fz_target));
+        ++steps_float[solvedf.fallback ? 0 : static_cast<std::size_t>(solvedf.newton_steps)];
+        if (o.use_limits) {
+          // Within the model's limits: no lane ever needs the fallback, and float lands on the
+          // same root (its Fx, Fy differ by ~1e-4 relative).
+          EXPECT_FALSE(solved.fallback) << where;
+          EXPECT_FALSE(solvedf.fallback) << where;
+          EXPECT_NEAR(outf.rl_m, expected, 2e-5) << where;
+          worst_float = std::max(worst_float, std::fabs(double(outf.rl_m) - expected));
+        }
+      }
+      std::string histogram;
+      for (std::size_t k = 0; k < steps_double.size(); ++k) {
+        if (steps_double[k] + steps_float[k] == 0) continue;
+        histogram += " " + (k == 0 ? std::string("fallback") : std::to_string(k)) + ":" +
+                     std::to_string(steps_double[k]) + "/" + std::to_string(steps_float[k]);
+      }
+      std::printf(
+          "%s mode %d: points by Newton steps (double/float)%s; |Rl - reference| double "
+          "%.1e m, float %.1e m\n",
+          name.c_str(), mode, histogram.c_str(), worst_double, worst_float);
+    }
   }
 }
 

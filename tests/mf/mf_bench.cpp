@@ -1,6 +1,7 @@
 // Google Benchmark of src/mf: ns per evaluation (one wheel, one instant), float and double, pure
 // and combined slip, forces and moments only (extras off) and with the extras (Re, Rl, patch...).
-// Parameters: data/tyres/MagicFormula61_Parameters.tir (MF 6.1), useMode 111.
+// Parameters: data/tyres/MagicFormula61_Parameters.tir (MF 6.1) and MagicFormula62_Parameters.tir
+// (MF 6.2, the same tyre), useMode 111.
 // Inputs cycle through 1024 precomputed physical operating points, so branches are not trivially
 // predicted. Target (issue 3): MF 6.1 combined Fx, Fy, Mz, Mx, My in float ≤ 100 ns per wheel.
 #include <benchmark/benchmark.h>
@@ -76,6 +77,7 @@ void bench_four(benchmark::State& state, const char* tir, bool combined, bool ex
 
 constexpr const char* kMf61 = "MagicFormula61_Parameters.tir";
 constexpr const char* kMf52 = "MagicFormula52_Parameters.tir";
+constexpr const char* kMf62 = "MagicFormula62_Parameters.tir";  // the same tyre as kMf61
 
 void BM_Mf61_Float_Combined(benchmark::State& s) {
   bench<float>(s, kMf61, true, false);
@@ -101,6 +103,17 @@ void BM_Mf52_Float_Combined(benchmark::State& s) {
 void BM_Mf52_Double_Combined(benchmark::State& s) {
   bench<double>(s, kMf52, true, false);
 }
+// MF 6.2 with the extras: the loaded radius solved from Fz62(Rl) (issue 17: ≤ 1.3× MF 6.1 with
+// the extras, in every path).
+void BM_Mf62_Double_Combined_Extras(benchmark::State& s) {
+  bench<double>(s, kMf62, true, true);
+}
+void BM_Mf62_Float_Combined_Extras(benchmark::State& s) {
+  bench<float>(s, kMf62, true, true);
+}
+void BM_Mf62_FloatFour_Combined_Extras(benchmark::State& s) {
+  bench_four(s, kMf62, true, true);
+}
 void BM_Mf61_FloatFour_Combined(benchmark::State& s) {
   bench_four(s, kMf61, true, false);
 }
@@ -118,6 +131,9 @@ BENCHMARK(BM_Mf61_Float_Combined_Extras);
 BENCHMARK(BM_Mf61_Double_Combined_Extras);
 BENCHMARK(BM_Mf52_Float_Combined);
 BENCHMARK(BM_Mf52_Double_Combined);
+BENCHMARK(BM_Mf62_Double_Combined_Extras);
+BENCHMARK(BM_Mf62_Float_Combined_Extras);
+BENCHMARK(BM_Mf62_FloatFour_Combined_Extras);
 
 }  // namespace
 }  // namespace tread::mf
