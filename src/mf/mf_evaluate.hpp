@@ -656,32 +656,40 @@ T my(const MfParameters<P>& p, const Prepared<T>& in, const T& fx) {
 
 /// MF 6.2's vertical force as a function of the loaded radius, Fz62(Rl) (calculateFz62), at a
 /// given γ, ω, Romega, Fx, Fy and pressure. What does not depend on Rl is computed once here
-/// (√ of Q_FZ1, tan γ, the speed and Fx corrections), so the root search below pays per step only
-/// for the Rl-dependent part.
+/// (√ of Q_FZ1, tan γ, the speed and Fx corrections, the coefficients times γ), so the root
+/// search below pays per step only for the Rl-dependent part.
 template <typename T, typename P>
 struct Fz62Curve {
-  const MfParameters<P>* p;
-  T r0, fz0, romega, gamma, abs_gamma;
-  T q_fz1;
-  T camber_scale;   // (rtw/8)·|tan γ|·γ² / den², 0 where den = 0 (MFeval: NaN → 0)
-  T base;           // 1 + Q_V2·(R0/V0)·|ω| − (Q_FCX·Fx/Fz0)²
-  T pressure;       // 1 + PFZ1·dpi
-  T fcy_per_force;  // Q_FCY / Fz0
+  P q_fcy2;
+  T r0, fz0, romega, width, inv_r0, inv_romega;
+  T q_fz1, q_fz2;
+  T q_cam1, q_cam2;
+  T camber_scale;            // (rtw/8)·|tan γ|·γ² / den², 0 where den = 0 (MFeval: NaN → 0)
+  T free_share;              // 1 − Q_CAM3·|γ|: the free-rolling deflection's share of ρz
+  T fys1_g, fys2_g, fys3_g;  // Q_FYS1…3·γ
+  T base;                    // 1 + Q_V2·(R0/V0)·|ω| − (Q_FCX·Fx/Fz0)²
+  T pressure;                // 1 + PFZ1·dpi
+  T fcy_per_force;           // Q_FCY / Fz0
   T fy;
+  T pow_c1, pow_c2, pow_c3, pow_c4;  // binomial coefficients C(Q_FCY2, k), k = 1…4
 };
 
 template <typename T, typename P>
 Fz62Curve<T, P> fz62_curve(const MfParameters<P>& p, const T& gamma, const T& omega,
                            const T& romega, const T& dpi, const T& fx, const T& fy) {
   Fz62Curve<T, P> c;
-  c.p = &p;
+  c.q_fcy2 = p.q_fcy2;
   c.r0 = p.unloaded_radius_m;
   c.fz0 = p.fnomin_n;
   c.romega = romega;
-  c.gamma = gamma;
-  c.abs_gamma = abs(gamma);
+  c.width = p.width_m;
+  c.inv_r0 = T(1) / c.r0;
+  c.inv_romega = T(1) / romega;
   const T a = p.vertical_stiffness_npm * c.r0 / c.fz0;
   c.q_fz1 = sqrt(max_of(T(0), a * a - T(4) * p.q_fz2));
+  c.q_fz2 = p.q_fz2;
+  c.q_cam1 = p.q_cam1;
+  c.q_cam2 = p.q_cam2;
   const T rtw = (T(1.075) - T(0.5) * p.aspect_ratio) * p.width_m;
   const T den = (p.q_cam1 * romega + p.q_cam2 * romega * romega) * gamma;
   const auto cambered = !is_zero(den);
@@ -690,52 +698,93 @@ Fz62Curve<T, P> fz62_curve(const MfParameters<P>& p, const T& gamma, const T& om
     c.camber_scale =
         if_else(cambered, (gamma * gamma) * (rtw / T(8)) * abs(mf_tan(gamma)) / (den * den), T(0));
   }
+  c.free_share = T(1) - p.q_cam3 * abs(gamma);
+  c.fys1_g = p.q_fys1 * gamma;
+  c.fys2_g = p.q_fys2 * gamma;
+  c.fys3_g = p.q_fys3 * gamma;
   const T fcx = p.q_fcx * fx / c.fz0;
   c.base = T(1) + p.q_v2 * (c.r0 / p.longvl_mps) * abs(omega) - fcx * fcx;
   c.pressure = T(1) + p.pfz1 * dpi;
   c.fcy_per_force = T(p.q_fcy) / c.fz0;
   c.fy = fy;
+  const T q = T(p.q_fcy2);
+  c.pow_c1 = q;
+  c.pow_c2 = c.pow_c1 * (q - T(1)) / T(2);
+  c.pow_c3 = c.pow_c2 * (q - T(2)) / T(3);
+  c.pow_c4 = c.pow_c3 * (q - T(3)) / T(4);
   return c;
 }
 
-/// The deflection ρz at a loaded radius: free-rolling ρ plus the camber part.
+/// The deflection ρz at a loaded radius: free-rolling ρ plus the camber part; its slope dρz/dRl.
 template <typename T, typename P>
-T fz62_deflection(const Fz62Curve<T, P>& c, const T& rl, T& slope) {
-  const MfParameters<P>& p = *c.p;
+[[gnu::always_inline]] inline T fz62_deflection(const Fz62Curve<T, P>& c, const T& rl, T& slope) {
   const auto compressed = rl < c.romega;
   const T rho_zfr = max_of(c.romega - rl, T(0));
-  const T drho_zfr = if_else(compressed, T(-1), T(0));
-  const T cam = p.q_cam1 * rl + p.q_cam2 * rl * rl;
-  const T rho_z = rho_zfr + c.camber_scale * cam * cam - p.q_cam3 * rho_zfr * c.abs_gamma;
-  const T drho_z = T(2) * c.camber_scale * cam * (p.q_cam1 + T(2) * p.q_cam2 * rl) +
-                   drho_zfr * (T(1) - p.q_cam3 * c.abs_gamma);
+  const T cam = c.q_cam1 * rl + c.q_cam2 * rl * rl;
+  const T camber = c.camber_scale * cam;
+  const T rho_z = rho_zfr * c.free_share + camber * cam;
+  const T drho_z =
+      T(2) * camber * (c.q_cam1 + T(2) * c.q_cam2 * rl) - if_else(compressed, c.free_share, T(0));
   const auto positive = rho_z > T(0);
   slope = if_else(positive, drho_z, T(0));
   return if_else(positive, rho_z, T(0));
 }
 
+/// (ρz/R0)^Q_FCY2 at the last point where it was computed exactly: the Newton steps near a root
+/// move ρz by little, and a Taylor series about that point is exact to the output's resolution
+/// there at a fraction of pow's cost.
+template <typename T>
+struct Fz62PowMemo {
+  T base = T(0);  // ρz/R0 where pow was evaluated (0: none yet)
+  T value = T(0);
+};
+
+/// x^q from the memo's base b: (b·(1 + δ))^q = b^q·(1 + C(q,1)δ + … + C(q,4)δ⁴) for |δ| ≤ δmax
+/// (the remainder C(q,5)·δ⁵: |δ| ≤ 2e-4 in double, 1e-2 in float keeps it below ε for
+/// |Q_FCY2| ≤ 3), else pow, which becomes the new base.
+template <typename T, typename P>
+[[gnu::always_inline]] inline T fz62_pow(const Fz62Curve<T, P>& c, const T& x,
+                                         Fz62PowMemo<T>& memo) {
+  constexpr bool coarse = std::is_same_v<T, float> || is_lanes<T> || is_fixed_point<T>;
+  const T delta = div_or(x - memo.base, memo.base, T(1));
+  const auto near = memo.base > T(0) && abs(delta) < T(coarse ? 1e-2 : 2e-4);
+  const T series =
+      memo.value *
+      (T(1) + delta * (c.pow_c1 + delta * (c.pow_c2 + delta * (c.pow_c3 + delta * c.pow_c4))));
+  const auto far = !near;
+  if (!any_lane(far)) return series;
+  const T exact = T(pow(x, T(c.q_fcy2)));
+  memo.base = if_else(far, x, memo.base);
+  memo.value = if_else(far, exact, memo.value);
+  return if_else(far, exact, series);
+}
+
 /// Fz62(Rl) and its slope dFz62/dRl; writes the deflection ρz.
 template <typename T, typename P>
-T fz62(const Fz62Curve<T, P>& c, const T& rl, T& slope, T& rho_z) {
-  const MfParameters<P>& p = *c.p;
+[[gnu::always_inline]] inline T fz62(const Fz62Curve<T, P>& c, const T& rl, T& slope, T& rho_z,
+                                     Fz62PowMemo<T>& memo) {
   T drho_z = T(0);
   rho_z = fz62_deflection(c, rl, drho_z);
-  const T rho_r0 = rho_z / c.r0;
-  const T drho_r0 = drho_z / c.r0;
+  const T rho_r0 = rho_z * c.inv_r0;
+  const T drho_r0 = drho_z * c.inv_r0;
   // Lateral force correction: Fy less the camber's share Sfyg (a polynomial in Rl/Romega).
-  const T ratio = rl / c.romega;
-  const T sfyg = (p.q_fys1 + p.q_fys2 * ratio + p.q_fys3 * ratio * ratio) * c.gamma;
-  const T dsfyg = (p.q_fys2 + T(2) * p.q_fys3 * ratio) * c.gamma / c.romega;
+  const T ratio = rl * c.inv_romega;
+  const T sfyg = c.fys1_g + (c.fys2_g + c.fys3_g * ratio) * ratio;
+  const T dsfyg = (c.fys2_g + T(2) * c.fys3_g * ratio) * c.inv_romega;
   const auto loaded = rho_r0 > T(0);
-  const T rho_pow = if_else(loaded, T(pow(rho_r0, T(p.q_fcy2))), is_zero(p.q_fcy2) ? T(1) : T(0));
-  const T drho_pow = if_else(loaded, T(p.q_fcy2) * div_or(rho_pow, rho_r0, T(0)) * drho_r0, T(0));
+  T rho_pow = is_zero(c.q_fcy2) ? T(1) : T(0);
+  T drho_pow = T(0);
+  if (any_lane(loaded)) {
+    rho_pow = if_else(loaded, fz62_pow(c, if_else(loaded, rho_r0, T(1)), memo), rho_pow);
+    drho_pow = if_else(loaded, c.pow_c1 * div_or(rho_pow, rho_r0, T(0)) * drho_r0, T(0));
+  }
   const T lateral = c.fcy_per_force * (c.fy - sfyg);
   const T fcy = rho_pow * lateral;
   const T dfcy = drho_pow * lateral - rho_pow * c.fcy_per_force * dsfyg;
   const T fcorr = (c.base - fcy * fcy) * c.pressure;
-  const T stiffness = (c.q_fz1 * rho_r0 + p.q_fz2 * rho_r0 * rho_r0) * c.fz0;
+  const T stiffness = (c.q_fz1 + c.q_fz2 * rho_r0) * rho_r0 * c.fz0;
   slope = T(-2) * fcy * dfcy * c.pressure * stiffness +
-          fcorr * (c.q_fz1 + T(2) * p.q_fz2 * rho_r0) * drho_r0 * c.fz0;
+          fcorr * (c.q_fz1 + T(2) * c.q_fz2 * rho_r0) * drho_r0 * c.fz0;
   return fcorr * stiffness;
 }
 
@@ -771,17 +820,26 @@ struct LoadedRadius62 {
 template <typename T, typename P>
 LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) {
   constexpr int kNewtonSteps = 16;
-  const MfParameters<P>& p = *c.p;
   constexpr bool coarse = std::is_same_v<T, float> || is_lanes<T> || is_fixed_point<T>;
   // ε^(3/4): float 6.4e-6, double 1.8e-12 (fixed point Q31.32 as float: its resolution of a
   // radius, 2.3e-10 m, is float's).
   const T tolerance = c.r0 * T(coarse ? 6.4e-6 : 1.8e-12);
   const T settle = c.r0 * T(coarse ? 1.2e-7 : 2.2e-16);  // ε·R0: the error aimed at
+  // Fz62(Romega) is at most (1 + speed − Fx²)(1 + PFZ1·dpi)·stiffness(ρz): only where that bound
+  // exceeds Fz (light, cambered wheels) is it evaluated.
+  Fz62PowMemo<T> memo;
   T slope_romega = T(0);
-  T rho_romega = T(0);
-  const auto beyond = fz62(c, c.romega, slope_romega, rho_romega) > fz_target;
+  const T rho_romega = fz62_deflection(c, c.romega, slope_romega);
+  const T rho_romega_r0 = rho_romega / c.r0;
+  const T bound = c.base * c.pressure *
+                  (c.q_fz1 * rho_romega_r0 + c.q_fz2 * rho_romega_r0 * rho_romega_r0) * c.fz0;
+  auto beyond = bound > fz_target;
+  if (any_lane(beyond)) {
+    T rho_unused = T(0);
+    beyond = beyond && fz62(c, c.romega, slope_romega, rho_unused, memo) > fz_target;
+  }
   const T lo_end = if_else(beyond, c.romega, T(0));
-  const T hi_end = if_else(beyond, c.romega + p.width_m, c.romega);
+  const T hi_end = if_else(beyond, c.romega + c.width, c.romega);
   T lo = lo_end;
   T hi = hi_end;
   auto lo_known = beyond;   // Fz62(lo) > Fz is known
@@ -790,9 +848,9 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
   const T fcy0 = c.fcy_per_force * c.fy;
   const T external = (c.base - fcy0 * fcy0) * c.pressure * c.fz0;
   const T q = max_of(div_or(fz_target, external, T(0)), T(0));
-  const T x0 = div_or(T(2) * q, c.q_fz1 + sqrt(c.q_fz1 * c.q_fz1 + T(4) * p.q_fz2 * q), T(0));
+  const T x0 = div_or(T(2) * q, c.q_fz1 + sqrt(c.q_fz1 * c.q_fz1 + T(4) * c.q_fz2 * q), T(0));
   // The camber's deflection at Romega is carried already; the free-rolling part makes up the rest.
-  const T free_share = max_of(T(1) - p.q_cam3 * c.abs_gamma, T(0.1));
+  const T free_share = max_of(c.free_share, T(0.1));
   const T rho_zfr0 = max_of(x0 * c.r0 - rho_romega, T(0)) / free_share;
   T rl = min_of(max_of(c.romega - rho_zfr0, lo), hi);
   auto active = !(T(0) > T(0));  // every lane
@@ -802,7 +860,7 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
   for (int i = 0; i < kNewtonSteps; ++i) {
     T slope = T(0);
     T rho = T(0);
-    const T resid = fz62(c, rl, slope, rho) - fz_target;
+    const T resid = fz62(c, rl, slope, rho, memo) - fz_target;
     const auto above = resid > T(0);
     lo = if_else(active && above, rl, lo);
     hi = if_else(active && !above, rl, hi);
@@ -840,7 +898,7 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
       const T mid = T(0.5) * (lo + hi);
       T slope = T(0);
       T rho = T(0);
-      const auto above = fz62(c, mid, slope, rho) > fz_target;
+      const auto above = fz62(c, mid, slope, rho, memo) > fz_target;
       lo = if_else(active && above, mid, lo);
       hi = if_else(active && !above, mid, hi);
     }
