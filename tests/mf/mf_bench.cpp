@@ -132,10 +132,6 @@ BENCHMARK(BM_Mf61_Double_Combined_Extras);
 BENCHMARK(BM_Mf52_Float_Combined);
 BENCHMARK(BM_Mf52_Double_Combined);
 BENCHMARK(BM_Mf62_Double_Combined_Extras);
-void BM_TMP62(benchmark::State& s) { bench<double>(s, kMf62, true, false); }
-BENCHMARK(BM_TMP62);
-void BM_TMP61(benchmark::State& s) { bench<double>(s, kMf61, true, false); }
-BENCHMARK(BM_TMP61);
 BENCHMARK(BM_Mf62_Float_Combined_Extras);
 BENCHMARK(BM_Mf62_FloatFour_Combined_Extras);
 
