@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# Performance figures of issue 17 in one run (a benchmark, not pass/fail: these machines are shared
+# and noisy, so every ratio is taken against tread's own scalar double path measured in the same
+# run).
+#   1. The Magic Formula with all outputs (forces, moments, Rl, Re, contact patch, relaxation),
+#      MF 6.1 and MF 6.2 (data/tyres/MagicFormula6{1,2}_Parameters.tir, the same tyre), useMode 111,
+#      1024 random operating points: ns per evaluation (per wheel for the lanes), × the double path,
+#      and MF 6.2 / MF 6.1 in every path (medians of 5, CPU time).
+#   2. With --timing SECONDS: scripts/bench-timing.sh (cyclictest and the node in one run).
+#   3. With --cli: scripts/bench-mf-eval.sh (`tread mf eval` on 1 M rows), when present.
+# A peer (e.g. MFeval exported to C++) is not part of the project; where one is measured elsewhere,
+# its figure against the double path carries over through the ratio column.
+# Usage: scripts/bench-perf.sh [--timing SECONDS] [--cli]
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+timing=""
+cli=0
+while (($#)); do
+  case $1 in
+    --timing) timing=${2:?--timing needs SECONDS}; shift 2 ;;
+    --cli) cli=1; shift ;;
+    *) echo "usage: $0 [--timing SECONDS] [--cli]" >&2; exit 2 ;;
+  esac
+done
+cmake --preset host >/dev/null
+cmake --build --preset host --target mf_bench >/dev/null
+
+json=$(mktemp)
+trap 'rm -f "$json"' EXIT
+echo "== Magic Formula, all outputs (mf_bench, CPU medians of 5) on $(nproc) cores of" \
+  "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(date -u +%F) =="
+build/host/tests/mf/mf_bench --benchmark_filter='Mf6[12]_(Double|Float|FloatFour)_Combined_Extras$' \
+  --benchmark_repetitions=5 --benchmark_report_aggregates_only=true --benchmark_format=json \
+  >"$json" 2>/dev/null
+/usr/bin/python3 - "$json" <<'EOF'
+import json, sys
+runs = json.load(open(sys.argv[1]))["benchmarks"]
+ns = {}
+for r in runs:
+    if r.get("aggregate_name") != "median":
+        continue
+    name = r["run_name"].removeprefix("BM_")
+    scale = {"ns": 1, "us": 1e3, "ms": 1e6}[r["time_unit"]]
+    per_call = r["cpu_time"] * scale
+    ns[name] = per_call / 4 if "FloatFour" in name else per_call
+paths = [("tread double", "Double"), ("tread float", "Float"), ("tread four lanes, per wheel", "FloatFour")]
+print(f"| path | MF 6.1 ns/eval | × double | MF 6.2 ns/eval | × double | MF 6.2 / MF 6.1 |")
+print("|---|---|---|---|---|---|")
+base61 = ns["Mf61_Double_Combined_Extras"]
+base62 = ns["Mf62_Double_Combined_Extras"]
+for label, key in paths:
+    a = ns[f"Mf61_{key}_Combined_Extras"]
+    b = ns[f"Mf62_{key}_Combined_Extras"]
+    print(f"| {label} | {a:.0f} | {base61 / a:.2f} | {b:.0f} | {base62 / b:.2f} | {b / a:.2f} |")
+EOF
+
+if [[ -n $timing ]]; then
+  echo
+  bash scripts/bench-timing.sh "$timing"
+fi
+if ((cli)); then
+  echo
+  if [[ -x scripts/bench-mf-eval.sh || -f scripts/bench-mf-eval.sh ]]; then
+    bash scripts/bench-mf-eval.sh
+  else
+    echo "(scripts/bench-mf-eval.sh not present)"
+  fi
+fi
