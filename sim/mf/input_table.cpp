@@ -3,6 +3,7 @@
 #include <cctype>
 #include <istream>
 
+#include "io/csv_number.hpp"
 #include "tir/tir_file.hpp"
 
 namespace tread::mf {
@@ -104,11 +105,18 @@ std::string lower(std::string_view s) {
   return out;
 }
 
+std::string_view trim_view(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r')) {
+    s.remove_prefix(1);
+  }
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) {
+    s.remove_suffix(1);
+  }
+  return s;
+}
+
 std::string trim(std::string_view s) {
-  const std::size_t a = s.find_first_not_of(" \t\r");
-  if (a == std::string_view::npos) return {};
-  const std::size_t b = s.find_last_not_of(" \t\r");
-  return std::string(s.substr(a, b - a + 1));
+  return std::string(trim_view(s));
 }
 
 std::size_t index(InputQuantity q) {
@@ -218,6 +226,7 @@ InputTable::InputTable(std::istream& in, std::string name, InputTableOptions opt
     }
     header_ = split(t);
     cells_ = header_.size();
+    quantity_of_cell_.assign(cells_, -1);
     for (std::size_t i = 0; i < header_.size(); ++i) {
       const std::optional<InputColumn> c = recognise_input_column(header_[i]);
       if (!c) {
@@ -232,6 +241,10 @@ InputTable::InputTable(std::istream& in, std::string name, InputTableOptions opt
       }
       column_[q] = static_cast<int>(i);
       spec_[q] = *c;
+      quantity_of_cell_[i] = static_cast<int>(q);
+    }
+    for (std::size_t q = 0; q < kInputQuantityCount; ++q) {
+      sign_[q] = iso_w_sign(options_.convention, static_cast<InputQuantity>(q));
     }
     for (InputQuantity q : options_.required) {
       if (!has(q)) {
@@ -245,27 +258,28 @@ InputTable::InputTable(std::istream& in, std::string name, InputTableOptions opt
   throw tir::TirError(name_, line_, "no header row");
 }
 
-std::vector<std::string> InputTable::split(const std::string& line) const {
+std::vector<std::string> InputTable::split(std::string_view line) const {
   std::vector<std::string> cells;
   std::size_t start = 0;
   while (true) {
     const std::size_t end = line.find(separator_, start);
-    cells.push_back(trim(std::string_view(line).substr(
-        start, end == std::string::npos ? std::string::npos : end - start)));
-    if (end == std::string::npos) break;
+    cells.push_back(trim(
+        line.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start)));
+    if (end == std::string_view::npos) break;
     start = end + 1;
   }
   return cells;
 }
 
-bool InputTable::apply_units_row(const std::vector<std::string>& cells) {
+bool InputTable::apply_units_row(const std::vector<std::string>& cells, int line_no) {
   // A units row: every input column holds text that is not a number (or "1").
   bool any = false;
   for (std::size_t q = 0; q < kInputQuantityCount; ++q) {
     if (column_[q] < 0) continue;
     const std::string& cell = cells[static_cast<std::size_t>(column_[q])];
     if (cell == "1") continue;  // the unit of a ratio, or a number: decided by the others
-    if (cell.empty() || tir::parse_number(cell)) return false;
+    double number = 0.0;
+    if (cell.empty() || host::read_csv_number(cell, separator_ != ',', number)) return false;
     any = true;
   }
   if (!any) return false;
@@ -283,7 +297,7 @@ bool InputTable::apply_units_row(const std::vector<std::string>& cells) {
       expected += (expected.empty() ? "" : ", ") + std::string(u.name);
     }
     if (found == nullptr) {
-      throw tir::TirError(name_, line_,
+      throw tir::TirError(name_, line_no,
                           "unit '" + cells[static_cast<std::size_t>(column_[q])] + "' of column '" +
                               header_[static_cast<std::size_t>(column_[q])] +
                               "' is not a unit of " + std::string(kSiNames[q]) + " (expected " +
@@ -299,41 +313,67 @@ std::optional<InputRow> InputTable::next() {
   std::string line;
   while (std::getline(in_, line)) {
     ++line_;
-    const std::string t = trim(line);
+    const std::string_view t = trim_view(line);
     if (t.empty() || t.front() == '#') continue;
-    const std::vector<std::string> cells = split(t);
-    if (cells.size() != cells_) {
-      throw tir::TirError(
-          name_, line_,
-          "expected " + std::to_string(cells_) + " cells, found " + std::to_string(cells.size()));
-    }
     if (!seen_row_) {
       seen_row_ = true;
-      if (apply_units_row(cells)) continue;
+      if (take_units_row(t, line_)) continue;
     }
     InputRow row;
-    row.line = line_;
-    for (std::size_t q = 0; q < kInputQuantityCount; ++q) {
-      if (column_[q] < 0) continue;
-      std::string text = cells[static_cast<std::size_t>(column_[q])];
-      if (separator_ != ',' && text.find('.') == std::string::npos) {
-        for (char& c : text) {
-          if (c == ',') c = '.';
-        }
-      }
-      const std::optional<double> v = tir::parse_number(text);
-      if (!v) {
-        throw tir::TirError(name_, line_,
-                            header_[static_cast<std::size_t>(column_[q])] + ": '" +
-                                cells[static_cast<std::size_t>(column_[q])] +
-                                "' is not a finite number");
-      }
-      row.value[q] =
-          *v * spec_[q].to_si * iso_w_sign(options_.convention, static_cast<InputQuantity>(q));
-    }
+    parse_row(t, line_, row);
     return row;
   }
   return std::nullopt;
+}
+
+bool InputTable::take_units_row(std::string_view line, int line_no) {
+  const std::vector<std::string> cells = split(trim_view(line));
+  if (cells.size() != cells_) wrong_cell_count(cells.size(), line_no);
+  return apply_units_row(cells, line_no);
+}
+
+void InputTable::wrong_cell_count(std::size_t found, int line_no) const {
+  throw tir::TirError(
+      name_, line_no,
+      "expected " + std::to_string(cells_) + " cells, found " + std::to_string(found));
+}
+
+bool InputTable::parse_row(std::string_view line, int line_no, InputRow& row) const {
+  const std::string_view t = trim_view(line);
+  if (t.empty() || t.front() == '#') return false;
+  row.value.fill(0.0);
+  row.line = line_no;
+  // The cell count is checked first, so the first bad number is only noted on the way.
+  std::size_t cell = 0;
+  std::size_t start = 0;
+  std::size_t bad_quantity = kInputQuantityCount;
+  std::string_view bad_text;
+  while (true) {
+    const std::size_t end = t.find(separator_, start);
+    if (cell < cells_ && quantity_of_cell_[cell] >= 0) {
+      const auto q = static_cast<std::size_t>(quantity_of_cell_[cell]);
+      const std::string_view text = trim_view(
+          t.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start));
+      // With ';' or tab separators a cell without a '.' may have a decimal comma.
+      double v = 0.0;
+      if (host::read_csv_number(text, separator_ != ',', v)) {
+        row.value[q] = v * spec_[q].to_si * sign_[q];
+      } else if (bad_quantity == kInputQuantityCount) {
+        bad_quantity = q;
+        bad_text = text;
+      }
+    }
+    ++cell;
+    if (end == std::string_view::npos) break;
+    start = end + 1;
+  }
+  if (cell != cells_) wrong_cell_count(cell, line_no);
+  if (bad_quantity != kInputQuantityCount) {
+    throw tir::TirError(name_, line_no,
+                        header_[static_cast<std::size_t>(column_[bad_quantity])] + ": '" +
+                            std::string(bad_text) + "' is not a finite number");
+  }
+  return true;
 }
 
 std::vector<std::string> InputTable::mapping() const {

@@ -111,6 +111,19 @@ class InputTable {
   /// The next data row; std::nullopt at the end of the input.
   std::optional<InputRow> next();
 
+  // For a reader that takes the lines from the stream itself, after construction (`tread mf
+  // eval` reads large files in chunks and parses them on several threads): next() is these two.
+
+  /// The number of the last line read from the stream (the header's, after construction).
+  int line() const { return line_; }
+  /// Takes `line` (numbered `line_no`) as the units row if it is one (see the file comment): call
+  /// it with the first line after the header that is not blank or a comment, and only that one.
+  /// Throws as next() does (wrong number of cells, unknown unit).
+  bool take_units_row(std::string_view line, int line_no);
+  /// Reads a data line (without its '\n') into `row`: false for a blank or '#' line. Throws as
+  /// next() does. Does not change the table: safe to call from several threads at once.
+  bool parse_row(std::string_view line, int line_no, InputRow& row) const;
+
   bool has(InputQuantity q) const { return column_[static_cast<std::size_t>(q)] >= 0; }
   char separator() const { return separator_; }
   const std::string& name() const { return name_; }
@@ -123,9 +136,10 @@ class InputTable {
   std::string_view column_unit(InputQuantity q) const;
 
  private:
-  std::vector<std::string> split(const std::string& line) const;
+  std::vector<std::string> split(std::string_view line) const;
   /// Takes the units of a units row (see the file comment); false if `cells` is not one.
-  bool apply_units_row(const std::vector<std::string>& cells);
+  bool apply_units_row(const std::vector<std::string>& cells, int line_no);
+  [[noreturn]] void wrong_cell_count(std::size_t found, int line_no) const;
 
   std::istream& in_;
   std::string name_;
@@ -137,6 +151,8 @@ class InputTable {
   std::vector<std::string> header_;
   std::array<int, kInputQuantityCount> column_{};
   std::array<InputColumn, kInputQuantityCount> spec_{};
+  std::array<double, kInputQuantityCount> sign_{};  ///< iso_w_sign of each input
+  std::vector<int> quantity_of_cell_;               ///< input of each cell, -1 for none
   std::vector<std::string> ignored_;
 };
 

@@ -72,6 +72,18 @@ TEST(InputTable, TtcNamesSemicolonDecimalCommaAndSaeSigns) {
   EXPECT_NE(mapping.find("'FZ' → Fz_N (in N, sign changed"), std::string::npos) << mapping;
 }
 
+// A first row whose every number has a decimal comma is a row, not a units row (it used to be
+// refused as "unit '4000,5' of column 'Fz_N' is not a unit of Fz_N").
+TEST(InputTable, FirstRowOfDecimalCommasIsData) {
+  std::istringstream in("Fz_N;kappa;alpha_rad;gamma_rad;Vx_mps\n4000,5;0,05;0,1;0,01;16,5\n");
+  InputTable t(in, "comma.csv", {});
+  const auto row = t.next();
+  ASSERT_TRUE(row);
+  EXPECT_EQ(row->line, 2);
+  EXPECT_EQ((*row)[InputQuantity::fz], 4000.5);
+  EXPECT_EQ((*row)[InputQuantity::vx], 16.5);
+}
+
 TEST(InputTable, CaseInsensitiveUnitsInNamesAndTabs) {
   std::istringstream in(
       "FZ_kN\tKappa_PCT\tAlpha_Deg\tgamma_DEG\tvx_KPH\tp_psi\n4.5\t-5\t2\t-1\t36\t30\n");

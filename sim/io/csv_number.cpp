@@ -1,0 +1,69 @@
+#include "io/csv_number.hpp"
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstring>
+#include <system_error>
+
+#include <fast_float/fast_float.h>
+
+namespace tread::host {
+
+namespace {
+
+constexpr std::size_t kMaxChars = 64;  // as tir::parse_number
+
+bool is_blank(char c) noexcept {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\f';
+}
+
+// A Fortran exponent (1.5D-3), read as `e`: the rare path, apart from the common one.
+[[gnu::noinline]] bool read_fortran(const char* first, const char* last, char point,
+                                    double& value) noexcept {
+  std::array<char, kMaxChars> text{};
+  const auto n = static_cast<std::size_t>(last - first);
+  for (std::size_t i = 0; i < n; ++i) {
+    text[i] = first[i] == 'd' || first[i] == 'D' ? 'e' : first[i];
+  }
+  const fast_float::from_chars_result r = fast_float::from_chars_advanced(
+      text.data(), text.data() + n, value,
+      fast_float::parse_options(fast_float::chars_format::general, point));
+  return r.ec == std::errc() && r.ptr == text.data() + n;
+}
+
+// True if the digits before the exponent are not all zero: a zero result then is an underflow,
+// which std::from_chars (and so tir::parse_number) refuses as out of range.
+bool nonzero_mantissa(const char* first, const char* last) noexcept {
+  for (; first != last; ++first) {
+    const char c = *first;
+    if (c == 'e' || c == 'E' || c == 'd' || c == 'D') break;
+    if (c >= '1' && c <= '9') return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+bool read_csv_number(std::string_view cell, bool decimal_comma, double& value) noexcept {
+  const char* first = cell.data();
+  const char* last = first + cell.size();
+  while (first != last && is_blank(*first)) ++first;
+  while (first != last && is_blank(last[-1])) --last;
+  if (first != last && *first == '+') ++first;
+  const auto n = static_cast<std::size_t>(last - first);
+  if (n == 0 || n > kMaxChars) return false;
+  const char point = decimal_comma && std::memchr(first, '.', n) == nullptr ? ',' : '.';
+  const fast_float::from_chars_result r = fast_float::from_chars_advanced(
+      first, last, value, fast_float::parse_options(fast_float::chars_format::general, point));
+  if (r.ec != std::errc() || r.ptr != last) {
+    const bool fortran =
+        std::memchr(first, 'd', n) != nullptr || std::memchr(first, 'D', n) != nullptr;
+    if (!fortran || !read_fortran(first, last, point, value)) return false;
+  }
+  if (!std::isfinite(value)) return false;
+  // An underflow to zero ("1e-400") is refused, as std::from_chars does.
+  return std::fabs(value) > 0.0 || !nonzero_mantissa(first, last);
+}
+
+}  // namespace tread::host
