@@ -1,18 +1,23 @@
 // `tread mf eval`: evaluate a Magic Formula .tir (MF 5.2 / 6.1 / 6.2, PAC2002) on a CSV of inputs.
 // `tread mf plot`: its pure-slip curves at several loads and a Fx(κ, Fz) map, with warnings for
 // inverted curves. Both work in ISO-W axes (TYDEX W: x forward, y left, z up), SI units, as MFeval.
+#include <chrono>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "io/progress_bar.hpp"
 #include "io/replace_file.hpp"
 #include "mf/input_table.hpp"
 #include "mf/mf_csv.hpp"
 #include "mf/mf_curve_checks.hpp"
+#include "mf/mf_eval_columns.hpp"
 #include "mf/mf_options.hpp"
 #include "mf/mf_parameters_from_tir.hpp"
 #include "mf/mf_plot.hpp"
@@ -43,6 +48,7 @@ struct MfEvalArgs {
   std::string sep = "auto";
   std::string convention = "iso-w";
   bool strict = false;
+  std::string columns;  ///< --columns; empty: the default columns
 };
 
 mf::MfOptions options_for(int mode, const char* command) {
@@ -76,12 +82,32 @@ void run_mf_eval(const MfEvalArgs& args) {
   csv.tyre_name = args.tir;
   csv.table.separator = separator(args.sep);
   csv.table.convention = *mf::parse_sign_convention(args.convention);
-  std::ifstream in(args.input);
+  if (!args.columns.empty()) {
+    mf::EvalColumnSelection selection = mf::select_eval_columns(args.columns);
+    if (!selection.error.empty()) throw std::runtime_error(selection.error);
+    csv.columns = std::move(selection.columns);
+  }
+  std::ifstream in(args.input, std::ios::binary);
   if (!in) throw std::runtime_error(args.input + ": cannot open");
+  // A progress bar on a terminal, for a run that lasts more than a second.
+  std::error_code no_size;
+  const std::uintmax_t input_bytes = std::filesystem::file_size(args.input, no_size);
+  host::ProgressBar bar(std::cerr, host::stderr_is_terminal(), no_size ? 0 : input_bytes);
+  const auto start = std::chrono::steady_clock::now();
+  csv.progress = [&](std::uint64_t bytes, std::uint64_t rows) {
+    bar.update(bytes, rows,
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  };
   host::ReplaceFile out(args.output);
-  const mf::MfCsvReport report =
-      mf::evaluate_csv(loaded.params, o, csv, in, args.input, out.stream());
-  out.commit();
+  mf::MfCsvReport report;
+  try {
+    report = mf::evaluate_csv(loaded.params, o, csv, in, args.input, out.stream());
+    out.commit();
+  } catch (...) {
+    bar.finish();
+    throw;
+  }
+  bar.finish();
   for (const std::string& m : report.mapping) std::cerr << "tread mf eval: column " << m << '\n';
   if (!report.ignored.empty()) {
     std::cerr << "tread mf eval: ignored columns:";
@@ -165,6 +191,15 @@ void add_mf_command(CLI::App& app) {
                    "positive Fy: alpha changes sign)")
       ->check(CLI::IsMember({"iso-w", "sae", "adapted-iso"}))
       ->capture_default_str();
+  std::string column_names;
+  for (const mf::EvalColumn& c : mf::eval_columns()) {
+    column_names += (column_names.empty() ? "" : ", ") + std::string(c.name);
+  }
+  eval->add_option("--columns", args.columns,
+                   "Columns to write, comma-separated (default: the inputs in_Fz_N … in_P_Pa "
+                   "and Fx_N, Fy_N, Fz_N, Mx_Nm, My_Nm, Mz_Nm; 'all': every column); status is "
+                   "always written, last. Columns: " +
+                       column_names);
   eval->add_flag("--strict", args.strict,
                  "A row outside the model's range is an error naming the row (default: counted "
                  "on stderr)");

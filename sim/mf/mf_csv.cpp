@@ -1,10 +1,13 @@
 #include "mf/mf_csv.hpp"
 
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
-#include <cstdlib>
+#include <cstring>
 #include <istream>
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <stdexcept>
@@ -12,6 +15,9 @@
 #include <type_traits>
 #include <vector>
 
+#include "io/line_chunks.hpp"
+#include "io/ordered_pipeline.hpp"
+#include "io/shortest_number.hpp"
 #include "mf/mf_evaluate.hpp"
 #include "mf/mf_fixed.hpp"
 #include "tir/tir_file.hpp"
@@ -19,55 +25,6 @@
 namespace tread::mf {
 
 namespace {
-
-enum Column { kFz, kKappa, kAlpha, kGamma, kVx, kPhit, kP, kColumnCount };
-static_assert(kColumnCount == kInputQuantityCount);
-
-template <typename T>
-struct OutColumn {
-  std::string_view name;
-  T MfOutput<T>::*member;
-};
-
-template <typename T>
-constexpr std::array<OutColumn<T>, 29> out_columns() {
-  using O = MfOutput<T>;
-  return {{{"Fx_N", &O::fx_n},
-           {"Fy_N", &O::fy_n},
-           {"Fz_N", &O::fz_n},
-           {"Mx_Nm", &O::mx_nm},
-           {"My_Nm", &O::my_nm},
-           {"Mz_Nm", &O::mz_nm},
-           {"Rl_m", &O::rl_m},
-           {"Re_m", &O::re_m},
-           {"kappa_1", &O::kappa},
-           {"alpha_rad", &O::alpha_rad},
-           {"gamma_rad", &O::gamma_rad},
-           {"phit_1pm", &O::phit_1pm},
-           {"Vx_mps", &O::vx_mps},
-           {"P_Pa", &O::p_pa},
-           {"rho_m", &O::rho_m},
-           {"2a_m", &O::contact_length_m},
-           {"t_m", &O::t_m},
-           {"mux_1", &O::mux},
-           {"muy_1", &O::muy},
-           {"omega_radps", &O::omega_radps},
-           {"2b_m", &O::contact_width_m},
-           {"Mzr_Nm", &O::mzr_nm},
-           {"Cx_Npm", &O::cx_npm},
-           {"Cy_Npm", &O::cy_npm},
-           {"Cz_Npm", &O::cz_npm},
-           {"Kya_Nprad", &O::kya_nprad},
-           {"sigmax_m", &O::sigmax_m},
-           {"sigmay_m", &O::sigmay_m},
-           {"Kxk_N", &O::kxk_n}}};
-}
-
-std::string format(double v) {
-  char buffer[40];
-  std::snprintf(buffer, sizeof buffer, "%.17g", v);
-  return buffer;
-}
 
 /// An input in the evaluation's scalar: float/double by a cast, fixed point rounded to nearest
 /// Q31.32 — a value beyond its range (±2^31) taken as ±2^31, so that it is clamped to the
@@ -88,31 +45,6 @@ double as_double(const T& v) {
   } else {
     return static_cast<double>(v);
   }
-}
-
-template <typename T>
-// Returns the first output column that is not finite under status ok ("" when none).
-std::string write_row(std::ostream& out, const std::array<double, kColumnCount>& values,
-                      const MfParameters<T>& params, const MfOptions& options) {
-  MfInput<T> in;
-  in.fz_n = scalar_of<T>(values[kFz]);
-  in.kappa = scalar_of<T>(values[kKappa]);
-  in.alpha_rad = scalar_of<T>(values[kAlpha]);
-  in.gamma_rad = scalar_of<T>(values[kGamma]);
-  in.vx_mps = scalar_of<T>(values[kVx]);
-  in.phit_1pm = scalar_of<T>(values[kPhit]);
-  in.p_pa = scalar_of<T>(values[kP]);
-  const MfOutput<T> result = evaluate(params, in, options);
-  std::string non_finite;
-  for (double v : values) out << format(v) << ',';
-  for (const auto& c : out_columns<T>()) {
-    const double v = as_double(result.*(c.member));
-    if (!std::isfinite(v) && non_finite.empty())
-      non_finite = std::string(c.name) + " = " + format(v);
-    out << format(v) << ',';
-  }
-  out << to_string(result.status) << '\n';
-  return result.status == Status::ok ? non_finite : std::string();
 }
 
 // One limit of the model's range, checked on the SI ISO-W inputs.
@@ -155,6 +87,131 @@ std::string hint(const InputTable& table, const Limit& l, double value) {
   return {};
 }
 
+constexpr std::size_t kLimitCount = 10;
+
+// Rows outside one limit, in one chunk or so far.
+struct Tally {
+  std::size_t rows = 0;
+  int first_line = 0;
+};
+
+// One chunk of the stream: its lines in, its formatted rows out. Reused from chunk to chunk.
+struct Chunk {
+  host::LineChunk lines;
+  std::unique_ptr<char[]> text;  ///< the formatted rows (uninitialised beyond `used`)
+  std::size_t capacity = 0;
+  std::size_t used = 0;
+  std::size_t rows = 0;
+  std::array<Tally, kLimitCount> outside{};
+};
+
+// What every chunk of one evaluation shares (read only).
+struct EvalSetup {
+  const InputTable& table;
+  const std::string& in_name;
+  const std::array<Limit, kLimitCount>& limits;
+  MfOptions options;
+  bool strict = false;
+  std::vector<std::size_t> columns;
+  std::size_t row_bytes = 0;  ///< the most a formatted row takes
+};
+
+// Counts `row`'s values outside the model's range in `outside` (with --strict: refuses the first).
+void check_range(const EvalSetup& setup, const InputRow& row, std::array<Tally, kLimitCount>& out) {
+  for (std::size_t i = 0; i < kLimitCount; ++i) {
+    const Limit& l = setup.limits[i];
+    const double v = row[l.quantity];
+    if (l.quantity == InputQuantity::pressure &&
+        (!(std::fabs(v) > 0.0) || !setup.table.has(InputQuantity::pressure))) {
+      continue;
+    }
+    if (!(l.above ? v > l.bound : v < l.bound)) continue;
+    if (setup.strict) {
+      throw tir::TirError(setup.in_name, row.line,
+                          std::string(si_name(l.quantity)) + " = " + short_number(v) +
+                              " outside the model's range (" + describe(l) + ", --strict)" +
+                              hint(setup.table, l, v));
+    }
+    if (out[i].rows++ == 0) out[i].first_line = row.line;
+  }
+}
+
+// Parses, checks, evaluates (in T) and formats every row of `chunk`.
+template <typename T>
+void evaluate_chunk(const EvalSetup& setup, const MfParameters<T>& params, Chunk& chunk) {
+  const std::size_t needed = chunk.lines.lines * setup.row_bytes;
+  if (chunk.capacity < needed) {
+    chunk.text = std::make_unique_for_overwrite<char[]>(needed);
+    chunk.capacity = needed;
+  }
+  chunk.used = 0;
+  chunk.rows = 0;
+  chunk.outside = {};
+  constexpr auto members = eval_output_members<T>();
+  const std::array<EvalColumn, kEvalColumnCount>& columns = eval_columns();
+  char* p = chunk.text.get();
+  InputRow row;
+  // The text of each input written in the current row: an output that repeats it to the bit
+  // (kappa_1 and in_kappa, ...) copies it instead of formatting it again.
+  std::array<const char*, kEvalInputColumns> input_text{};
+  std::array<std::size_t, kEvalInputColumns> input_length{};
+  host::for_each_line(chunk.lines, [&](std::string_view line, int line_no) {
+    if (!setup.table.parse_row(line, line_no, row)) return;
+    check_range(setup, row, chunk.outside);
+    MfInput<T> in;
+    in.fz_n = scalar_of<T>(row.value[0]);
+    in.kappa = scalar_of<T>(row.value[1]);
+    in.alpha_rad = scalar_of<T>(row.value[2]);
+    in.gamma_rad = scalar_of<T>(row.value[3]);
+    in.vx_mps = scalar_of<T>(row.value[4]);
+    in.phit_1pm = scalar_of<T>(row.value[5]);
+    in.p_pa = scalar_of<T>(row.value[6]);
+    const MfOutput<T> result = evaluate(params, in, setup.options);
+    const bool ok = result.status == Status::ok;
+    input_text.fill(nullptr);
+    for (const std::size_t c : setup.columns) {
+      if (c < kEvalInputColumns) {
+        input_text[c] = p;
+        p = host::write_shortest(p, row.value[c]);
+        input_length[c] = static_cast<std::size_t>(p - input_text[c]);
+        *p++ = ',';
+        continue;
+      }
+      const double v = as_double(result.*(members[c - kEvalInputColumns]));
+      const int echoes = columns[c].echoes;
+      if (echoes >= 0 && input_text[static_cast<std::size_t>(echoes)] != nullptr &&
+          std::bit_cast<std::uint64_t>(v) ==
+              std::bit_cast<std::uint64_t>(row.value[static_cast<std::size_t>(echoes)])) {
+        const auto e = static_cast<std::size_t>(echoes);
+        std::memcpy(p, input_text[e], input_length[e]);
+        p += input_length[e];
+        *p++ = ',';
+        continue;
+      }
+      if (ok && !std::isfinite(v)) {
+        // Never a NaN or Inf under status ok. The core already writes a non-finite output as 0
+        // with Status::non_finite; this is the last check where numbers leave the program.
+        char number[host::kShortestNumberMaxChars];
+        char* end = host::write_shortest(number, v);
+        throw tir::TirError(setup.in_name, row.line,
+                            std::string(columns[c].name) + " = " + std::string(number, end) +
+                                " under status ok: the tyre's parameters give no finite "
+                                "result for this row (check the .tir for zero or missing "
+                                "stiffnesses and radii)");
+      }
+      p = host::write_shortest(p, v);
+      *p++ = ',';
+    }
+    const char* status = to_string(result.status);
+    const std::size_t n = std::strlen(status);
+    std::memcpy(p, status, n);
+    p += n;
+    *p++ = '\n';
+    ++chunk.rows;
+  });
+  chunk.used = static_cast<std::size_t>(p - chunk.text.get());
+}
+
 }  // namespace
 
 MfCsvReport evaluate_csv(const MfParameters<double>& params, const MfOptions& options,
@@ -168,7 +225,7 @@ MfCsvReport evaluate_csv(const MfParameters<double>& params, const MfOptions& op
   report.ignored = table.ignored_columns();
 
   using Q = InputQuantity;
-  const Limit limits[] = {
+  const std::array<Limit, kLimitCount> limits = {{
       {Q::fz, false, params.fzmin_n, "FZMIN", "N"},
       {Q::fz, true, params.fzmax_n, "FZMAX", "N"},
       {Q::kappa, false, params.kpumin, "KPUMIN", ""},
@@ -179,47 +236,66 @@ MfCsvReport evaluate_csv(const MfParameters<double>& params, const MfOptions& op
       {Q::gamma, true, params.cammax_rad, "CAMMAX", "rad"},
       {Q::pressure, false, params.presmin_pa, "PRESMIN", "Pa"},
       {Q::pressure, true, params.presmax_pa, "PRESMAX", "Pa"},
-  };
-  std::vector<MfRangeCount> counts;
-  for (const Limit& l : limits) counts.push_back({describe(l), 0, 0});
+  }};
+
+  EvalSetup setup{table, in_name, limits, options, csv.strict, csv.columns, 0};
+  // The extras (radii, contact patch, relaxation) change no force or moment: skipped when no
+  // selected column shows them.
+  if (!needs_extras(csv.columns)) setup.options.extras = false;
+  constexpr std::size_t kStatusBytes = 32;  // "non-finite result" and its '\n'
+  setup.row_bytes = csv.columns.size() * (host::kShortestNumberMaxChars + 1) + kStatusBytes;
 
   out << "# tread mf eval: ISO-W (TYDEX W) axes, SI units (inputs read in "
       << to_string(csv.table.convention) << " axes and converted)\n";
-  out << "in_Fz_N,in_kappa,in_alpha_rad,in_gamma_rad,in_Vx_mps,in_phit_1pm,in_P_Pa";
-  for (const auto& c : out_columns<double>()) out << ',' << c.name;
-  out << ",status\n";
-  while (const std::optional<InputRow> row = table.next()) {
-    for (std::size_t i = 0; i < std::size(limits); ++i) {
-      const Limit& l = limits[i];
-      const double v = (*row)[l.quantity];
-      if (l.quantity == Q::pressure && (!(std::fabs(v) > 0.0) || !table.has(Q::pressure))) continue;
-      if (!(l.above ? v > l.bound : v < l.bound)) continue;
-      if (csv.strict) {
-        throw tir::TirError(in_name, row->line,
-                            std::string(si_name(l.quantity)) + " = " + short_number(v) +
-                                " outside the model's range (" + describe(l) + ", --strict)" +
-                                hint(table, l, v));
-      }
-      if (counts[i].rows++ == 0) counts[i].first_line = row->line;
+  for (const std::size_t c : csv.columns) out << eval_columns()[c].name << ',';
+  out << "status\n";
+
+  // The first line after the header that is not blank or a comment may be a units row; if it is
+  // not, it is the first data line and goes first into the stream of chunks.
+  std::string pending;
+  int next_line = table.line() + 1;
+  for (std::string line; std::getline(in, line);) {
+    const int line_no = next_line++;
+    const std::size_t first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos || line[first] == '#') continue;
+    if (!table.take_units_row(line, line_no)) {
+      pending = line + '\n';
+      next_line = line_no;
     }
-    std::array<double, kColumnCount> values{};
-    for (std::size_t q = 0; q < kColumnCount; ++q) values[q] = row->value[q];
-    const std::string non_finite = csv.use_fixed   ? write_row(out, values, params_q, options)
-                                   : csv.use_float ? write_row(out, values, params_f, options)
-                                                   : write_row(out, values, params, options);
-    if (!non_finite.empty()) {
-      // Never a NaN or Inf under status ok. The core already writes a non-finite output as 0
-      // with Status::non_finite; this is the last check where numbers leave the program.
-      throw tir::TirError(in_name, row->line,
-                          non_finite +
-                              " under status ok: the tyre's parameters give no finite "
-                              "result for this row (check the .tir for zero or missing "
-                              "stiffnesses and radii)");
-    }
-    ++report.rows;
+    break;
   }
-  for (const MfRangeCount& c : counts) {
-    if (c.rows > 0) report.out_of_range.push_back(c);
+  host::LineChunker chunker(in, csv.chunk_lines, next_line, std::move(pending));
+
+  std::array<Tally, kLimitCount> outside{};
+  std::uint64_t bytes = 0;
+  const unsigned workers = csv.threads > 0 ? csv.threads : host::default_worker_count();
+  host::run_ordered_pipeline<Chunk>(
+      workers, 2 * std::size_t{workers} + 2,
+      [&](Chunk& chunk) { return chunker.next(chunk.lines); },
+      [&](Chunk& chunk) {
+        if (csv.use_fixed) {
+          evaluate_chunk(setup, params_q, chunk);
+        } else if (csv.use_float) {
+          evaluate_chunk(setup, params_f, chunk);
+        } else {
+          evaluate_chunk(setup, params, chunk);
+        }
+      },
+      [&](Chunk& chunk) {
+        out.write(chunk.text.get(), static_cast<std::streamsize>(chunk.used));
+        for (std::size_t i = 0; i < kLimitCount; ++i) {
+          if (chunk.outside[i].rows == 0) continue;
+          if (outside[i].rows == 0) outside[i].first_line = chunk.outside[i].first_line;
+          outside[i].rows += chunk.outside[i].rows;
+        }
+        report.rows += chunk.rows;
+        bytes += chunk.lines.text.size();
+        if (csv.progress) csv.progress(bytes, report.rows);
+      });
+  for (std::size_t i = 0; i < kLimitCount; ++i) {
+    if (outside[i].rows > 0) {
+      report.out_of_range.push_back({describe(limits[i]), outside[i].rows, outside[i].first_line});
+    }
   }
   report.mapping = table.mapping();  // after a units row, if any, was read
   return report;

@@ -9,17 +9,27 @@
 // with `strict`, refused at the first one with a hint at the likely cause (degrees in a radian
 // column, SAE signs). Errors: tir::TirError (`file:line: message`), also for a row with a NaN or
 // Inf output under status ok (a defective parameter set: never written as ok). Output: a '#' line
-// stating the axes (ISO-W, SI), then a header: the inputs as evaluated, in SI and ISO-W (in_Fz_N,
-// in_kappa, in_alpha_rad, in_gamma_rad, in_Vx_mps, in_phit_1pm, in_P_Pa), every MfOutput value
-// under MFeval's column names (Fx_N, Fy_N, Fz_N, Mx_Nm, My_Nm, Mz_Nm, Rl_m, Re_m, kappa_1, ...),
-// then status. Numbers are written with 17 significant digits.
+// stating the axes (ISO-W, SI), then a header: the selected columns of mf::eval_columns()
+// (sim/mf/mf_eval_columns.hpp: the inputs as evaluated, in SI and ISO-W, in_Fz_N, in_kappa, ...,
+// and MfOutput values under MFeval's column names, Fx_N, Fy_N, ..., Rl_m, Re_m, kappa_1, ...),
+// then status. Numbers are written as the shortest text that reads back to the same double
+// (std::to_chars); --float results are the float values as doubles.
+//
+// A stream: the input is read in chunks of lines, each chunk parsed, evaluated and formatted on a
+// worker thread (one per core), the chunks written in input order; memory is bounded by the
+// chunks in flight, not the number of rows. An error is the first one in input order, with the
+// rows before it already written to `out` (write to a host::ReplaceFile to keep the output whole
+// or nothing).
 
 #include <cstddef>
+#include <cstdint>
+#include <functional>
 #include <iosfwd>
 #include <string>
 #include <vector>
 
 #include "mf/input_table.hpp"
+#include "mf/mf_eval_columns.hpp"
 #include "mf/mf_options.hpp"
 #include "mf/mf_parameters.hpp"
 
@@ -33,6 +43,13 @@ struct MfCsvOptions {
   bool strict = false;    ///< a row outside the model's range is an error
   std::string tyre_name;  ///< the .tir, for messages
   InputTableOptions table;
+  /// Columns to write: indices into eval_columns() (select_eval_columns()). Without an output that
+  /// needs MfOptions::extras the evaluation runs without them (the same forces and moments).
+  std::vector<std::size_t> columns = default_eval_columns();
+  std::size_t chunk_lines = 8192;  ///< input lines per chunk
+  unsigned threads = 0;            ///< worker threads; 0: one per hardware thread
+  /// Called on the calling thread after each chunk is written: input bytes and rows done so far.
+  std::function<void(std::uint64_t bytes, std::uint64_t rows)> progress;
 };
 
 /// Rows outside one limit of the model.

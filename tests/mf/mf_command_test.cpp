@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "csv_table.hpp"
 #include "golden_path.hpp"
@@ -61,9 +62,11 @@ TEST(MfCommand, EvalMatchesMfevalGrid) {
     const bool use_fixed = arithmetic == "--fixed";
     const auto out_csv =
         dir / ("out" + (arithmetic.empty() ? std::string() : arithmetic.substr(1)) + ".csv");
-    const int status = run("mf eval --tir " + tir.string() + " --mode 111 " + arithmetic +
-                               " --input " + in_csv.string() + " --output " + out_csv.string(),
-                           dir / "stderr.txt");
+    // --columns all: Rl_m and Re_m are not among the default columns.
+    const int status =
+        run("mf eval --tir " + tir.string() + " --mode 111 " + arithmetic +
+                " --columns all --input " + in_csv.string() + " --output " + out_csv.string(),
+            dir / "stderr.txt");
     ASSERT_EQ(status, 0) << slurp(dir / "stderr.txt");
     const tread::testing::CsvTable out = tread::testing::read_csv(out_csv.string());
     ASSERT_EQ(out.rows.size(), (ref.rows.size() + 6) / 7);
@@ -120,6 +123,101 @@ TEST(MfCommand, BadInputNamesFileAndLine) {
                     " --output " + (dir / "x.csv").string(),
                 dir / "mode_stderr.txt"),
             0);
+}
+
+void write(const std::filesystem::path& path, const std::string& text);
+
+std::string first_line_after_comment(const std::filesystem::path& csv) {
+  std::ifstream in(csv);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (!line.empty() && line[0] != '#') return line;
+  }
+  return {};
+}
+
+TEST(MfCommand, ColumnsSelectsTheOutputs) {
+  const auto tir = tread::testing::tyre_file("MagicFormula61_Parameters.tir");
+  const auto dir = tmp_dir();
+  const auto in = dir / "columns.csv";
+  write(in,
+        "Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps\n4000,0.05,0.03,0.01,16\n6000,-0.1,-0.05,0,20\n");
+  const auto eval = [&](const std::string& columns, const std::string& name) {
+    return run("mf eval --tir " + tir.string() + columns + " --input " + in.string() +
+                   " --output " + (dir / name).string(),
+               dir / (name + ".txt"));
+  };
+  ASSERT_EQ(eval("", "default.csv"), 0) << slurp(dir / "default.csv.txt");
+  EXPECT_EQ(first_line_after_comment(dir / "default.csv"),
+            "in_Fz_N,in_kappa,in_alpha_rad,in_gamma_rad,in_Vx_mps,in_phit_1pm,in_P_Pa,Fx_N,Fy_N,"
+            "Fz_N,Mx_Nm,My_Nm,Mz_Nm,status");
+  ASSERT_EQ(eval(" --columns all", "all.csv"), 0) << slurp(dir / "all.csv.txt");
+  const tread::testing::CsvTable all = tread::testing::read_csv((dir / "all.csv").string());
+  EXPECT_EQ(all.header.size(), 37U);
+  EXPECT_EQ(all.header.back(), "status");
+  ASSERT_EQ(eval(" --columns Fx_N,Fy_N,Mz_Nm", "three.csv"), 0) << slurp(dir / "three.csv.txt");
+  const tread::testing::CsvTable three = tread::testing::read_csv((dir / "three.csv").string());
+  ASSERT_EQ(three.header, (std::vector<std::string>{"Fx_N", "Fy_N", "Mz_Nm", "status"}));
+  ASSERT_EQ(three.rows.size(), 2U);
+  for (std::size_t r = 0; r < 2; ++r) {
+    for (const char* name : {"Fx_N", "Fy_N", "Mz_Nm"}) {
+      EXPECT_EQ(three.at(r, name), all.at(r, name)) << name << ' ' << r;  // to the bit
+    }
+  }
+  // An unknown name: an error listing the valid ones, and no output.
+  EXPECT_NE(eval(" --columns Fx_N,Fy", "bad.csv"), 0);
+  const std::string err = slurp(dir / "bad.csv.txt");
+  EXPECT_NE(err.find("--columns: unknown column 'Fy'; valid names: all, in_Fz_N"),
+            std::string::npos)
+      << err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "bad.csv"));
+}
+
+// A bad cell far into a file of several chunks: the error names its line, no output is left
+// (neither the file nor a temporary), and stderr (not a terminal) never shows a progress bar.
+TEST(MfCommand, ErrorInALateChunkNamesItsLineAndLeavesNoOutput) {
+  const auto tir = tread::testing::tyre_file("MagicFormula61_Parameters.tir");
+  const auto dir = tmp_dir() / "late";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::string good = "Fz_N;kappa;alpha_deg;gamma_rad;Vx_kph\n";
+  std::string bad = good;
+  for (int line = 2; line <= 40000; ++line) {
+    const std::string row = std::to_string(2000 + line % 5000) + ";0,0" + std::to_string(line % 9) +
+                            ";" + std::to_string(line % 7 - 3) + ",5;0;" +
+                            std::to_string(10 + line % 100) + "\n";
+    good += row;
+    bad += line == 35001 ? "4000;0,01;1,5;0;;\n" : row;
+  }
+  write(dir / "good.csv", good);
+  write(dir / "late.csv", bad);
+  const auto out = dir / "out.csv";
+  ASSERT_EQ(run("mf eval --tir " + tir.string() + " --input " + (dir / "good.csv").string() +
+                    " --output " + out.string(),
+                dir / "good.txt"),
+            0)
+      << slurp(dir / "good.txt");
+  const std::string good_err = slurp(dir / "good.txt");
+  EXPECT_NE(good_err.find("39999 rows"), std::string::npos) << good_err;
+  EXPECT_EQ(good_err.find('\r'), std::string::npos);
+  EXPECT_EQ(good_err.find("\033"), std::string::npos);
+  const tread::testing::CsvTable table = tread::testing::read_csv(out.string());
+  ASSERT_EQ(table.rows.size(), 39999U);
+  EXPECT_EQ(table.at(39998, "in_Fz_N"), 2000.0 + 40000 % 5000);  // the last row is the last
+  EXPECT_EQ(table.at(12345, "in_Fz_N"), 2000.0 + 12347 % 5000);
+  std::filesystem::remove(out);
+  EXPECT_NE(run("mf eval --tir " + tir.string() + " --input " + (dir / "late.csv").string() +
+                    " --output " + out.string(),
+                dir / "late.txt"),
+            0);
+  const std::string err = slurp(dir / "late.txt");
+  EXPECT_NE(err.find("late.csv:35001: expected 5 cells, found 6"), std::string::npos) << err;
+  EXPECT_EQ(err.find('\r'), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(out));
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
+    EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos)
+        << "left behind: " << e.path();
+  }
 }
 
 TEST(MfCommand, PlotWritesPngAndSvg) {
