@@ -28,9 +28,10 @@ std::size_t after_newline(const std::string& text, std::size_t from, std::size_t
 
 }  // namespace
 
-LineChunker::LineChunker(std::istream& in, std::size_t lines_per_chunk, int next_line,
-                         std::string pending)
+LineChunker::LineChunker(std::istream& in, std::string name, std::size_t lines_per_chunk,
+                         int next_line, std::string pending)
     : in_(in),
+      name_(std::move(name)),
       lines_per_chunk_(lines_per_chunk == 0 ? 1 : lines_per_chunk),
       next_line_(next_line),
       carry_(std::move(pending)) {}
@@ -49,7 +50,7 @@ bool LineChunker::next(LineChunk& chunk) {
     const auto got = static_cast<std::size_t>(in_.gcount());
     text.resize(scanned + got);
     if (got < kReadBytes) {
-      if (in_.bad()) throw std::runtime_error("read error");
+      if (in_.bad()) throw std::runtime_error(name_ + ": read error");
       eof_ = true;
     }
     cut = after_newline(text, scanned, lines_per_chunk_, seen);

@@ -34,13 +34,15 @@ void for_each_line(const LineChunk& chunk, F&& f) {
 
 class LineChunker {
  public:
-  /// Reads `in` from where it stands. `next_line` numbers its first line; `pending` is text
-  /// already taken from the stream that comes first (whole lines, each ending in '\n').
-  LineChunker(std::istream& in, std::size_t lines_per_chunk, int next_line,
+  /// Reads `in` (called `name` in messages) from where it stands. `next_line` numbers its first
+  /// line; `pending` is text already taken from the stream that comes first (whole lines, each
+  /// ending in '\n').
+  LineChunker(std::istream& in, std::string name, std::size_t lines_per_chunk, int next_line,
               std::string pending = {});
 
   /// Fills `chunk` with the next lines (up to lines_per_chunk); false at the end of the input.
-  /// `chunk.text`'s buffer is reused. Throws std::runtime_error on a read error.
+  /// `chunk.text`'s buffer is reused. Throws std::runtime_error ("name: read error") if the
+  /// stream fails.
   bool next(LineChunk& chunk);
 
   /// Bytes handed out in chunks so far.
@@ -48,6 +50,7 @@ class LineChunker {
 
  private:
   std::istream& in_;
+  std::string name_;
   std::size_t lines_per_chunk_;
   int next_line_;
   std::string carry_;  ///< read from the stream, not yet handed out

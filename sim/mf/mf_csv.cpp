@@ -264,7 +264,7 @@ MfCsvReport evaluate_csv(const MfParameters<double>& params, const MfOptions& op
     }
     break;
   }
-  host::LineChunker chunker(in, csv.chunk_lines, next_line, std::move(pending));
+  host::LineChunker chunker(in, in_name, csv.chunk_lines, next_line, std::move(pending));
 
   std::array<Tally, kLimitCount> outside{};
   std::uint64_t bytes = 0;

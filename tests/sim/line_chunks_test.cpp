@@ -22,7 +22,7 @@ struct Line {
 std::vector<Line> lines_of(const std::string& text, std::size_t per_chunk, int first_line,
                            const std::string& pending, std::size_t* chunks = nullptr) {
   std::istringstream in(text);
-  LineChunker chunker(in, per_chunk, first_line, pending);
+  LineChunker chunker(in, "in.csv", per_chunk, first_line, pending);
   LineChunk chunk;
   std::vector<Line> lines;
   std::size_t n = 0;
