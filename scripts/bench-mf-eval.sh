@@ -4,9 +4,9 @@
 # data/tyres/MagicFormula61_Parameters.tir (FZMIN…FZMAX, KPUMIN…KPUMAX, ALPMIN…ALPMAX,
 # CAMMIN…CAMMAX, PRESMIN…PRESMAX, Vx from VXLOW to 3 × LONGVL; 6 significant digits, as a rig
 # writes), then runs `tread mf eval` RUNS times with all columns and RUNS times with
-# `--columns Fx_N,Fy_N,Mz_Nm`, and prints the median wall time and rows/s of each, with the peak
-# RSS. Then the same with twice the rows, once each, to show that memory does not grow with the row
-# count.
+# `--columns Fx_N,Fy_N,Mz_Nm`, and prints the median wall time and rows/s of each, the median CPU
+# time per row (user + system, all threads) and the peak RSS. Then the same with twice the rows,
+# once each, to show that memory does not grow with the row count.
 # Usage: scripts/bench-mf-eval.sh [ROWS] [RUNS]   (default 1000000 rows, 5 runs)
 #        TREAD=path/to/tread scripts/bench-mf-eval.sh   (another build, e.g. an older one)
 set -euo pipefail
@@ -49,16 +49,17 @@ with open(path, "w") as f:
 EOF
 }
 
-# run_once INPUT [ARGS...]: prints "seconds peak_rss_kib" of one `tread mf eval`.
+# run_once INPUT [ARGS...]: prints "wall_s peak_rss_kib cpu_s" of one `tread mf eval` (cpu: user +
+# system, all threads: the part of the figure that another load on the machine does not change).
 run_once() {
   local input=$1
   shift
   local stats=$dir/time.txt
   rm -f "$dir/out.csv"  # not the previous run's file to unlink at the rename
   if [[ -x /usr/bin/time ]]; then
-    /usr/bin/time -f "%e %M" -o "$stats" "$TREAD" mf eval --tir "$tir" --input "$input" \
+    /usr/bin/time -f "%e %M %U %S" -o "$stats" "$TREAD" mf eval --tir "$tir" --input "$input" \
       --output "$dir/out.csv" "$@" 2>/dev/null
-    cat "$stats"
+    awk '{ print $1, $2, $3 + $4 }' "$stats"
   else
     /usr/bin/python3 - "$TREAD" "$tir" "$input" "$dir/out.csv" "$@" <<'EOF'
 import resource, subprocess, sys, time
@@ -66,7 +67,8 @@ tread, tir, inp, out, *extra = sys.argv[1:]
 t0 = time.monotonic()
 subprocess.run([tread, "mf", "eval", "--tir", tir, "--input", inp, "--output", out, *extra],
                check=True, stderr=subprocess.DEVNULL)
-print(f"{time.monotonic() - t0:.2f} {resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss}")
+usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+print(f"{time.monotonic() - t0:.2f} {usage.ru_maxrss} {usage.ru_utime + usage.ru_stime:.2f}")
 EOF
   fi
 }
@@ -82,9 +84,11 @@ import statistics, sys
 label, n = sys.argv[1], int(sys.argv[2])
 runs = [tuple(map(float, line.split())) for line in sys.stdin if line.strip()]
 t = statistics.median(r[0] for r in runs)
+cpu = statistics.median(r[2] for r in runs)
 rss = max(r[1] for r in runs) / 1024
 times = " ".join(f"{r[0]:.2f}" for r in runs)
-print(f"{label:<34} {n:>8} rows  median {t:6.2f} s  {n / t:>10,.0f} rows/s  peak RSS {rss:6.1f} MiB  (runs: {times} s)")
+print(f"{label:<28} {n:>8} rows  median {t:5.2f} s {n / t:>10,.0f} rows/s  "
+      f"CPU {cpu / n * 1e6:4.2f} us/row  peak RSS {rss:5.1f} MiB  (runs: {times} s)")
 ' "$label" "$n"
   rm -f "$dir/out.csv"
 }
