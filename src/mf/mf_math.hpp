@@ -188,48 +188,100 @@ void mf_cores(const Cores<T>& in, T (&out)[kMaxCores]) {
 
 namespace fast {
 
-// Four float lanes (GCC vector extension: SSE on x86-64, NEON on aarch64, scalar code where the
-// target has no vector unit, e.g. Cortex-M4F).
-using F4 = float __attribute__((vector_size(16)));
-using I4 = std::int32_t __attribute__((vector_size(16)));
+// Float lanes (GCC vector extensions): 4 (SSE on x86-64, NEON on aarch64, scalar code where the
+// target has no vector unit, e.g. Cortex-M4F), 8 (AVX2) and 16 (AVX-512) where a function is
+// compiled for them. Written out per width: GCC drops a vector_size that depends on a template
+// parameter.
+template <int N>
+struct VectorOf;
+template <>
+struct VectorOf<4> {
+  using F = float __attribute__((vector_size(16)));
+  using I = std::int32_t __attribute__((vector_size(16)));
+};
+template <>
+struct VectorOf<8> {
+  using F = float __attribute__((vector_size(32)));
+  using I = std::int32_t __attribute__((vector_size(32)));
+};
+template <>
+struct VectorOf<16> {
+  using F = float __attribute__((vector_size(64)));
+  using I = std::int32_t __attribute__((vector_size(64)));
+};
+using F4 = VectorOf<4>::F;
+using I4 = VectorOf<4>::I;
+/// The int32 vector of a float vector's width.
+template <typename V>
+struct IntVectorOf;
+template <>
+struct IntVectorOf<VectorOf<4>::F> {
+  using type = VectorOf<4>::I;
+};
+template <>
+struct IntVectorOf<VectorOf<8>::F> {
+  using type = VectorOf<8>::I;
+};
+template <>
+struct IntVectorOf<VectorOf<16>::F> {
+  using type = VectorOf<16>::I;
+};
+template <typename V>
+using IntOf = typename IntVectorOf<V>::type;
 
-/// fast::atan on four lanes (same reduction and polynomial, selects instead of branches).
+/// fast::atan on lanes (same reduction and polynomial, selects instead of branches).
+template <typename V>
+V atan_lanes(V x) {
+  using I = IntOf<V>;
+  const I sign_bit = I{} + static_cast<std::int32_t>(0x80000000u);
+  const I bits = std::bit_cast<I>(x);
+  const V a = std::bit_cast<V>(I(bits & ~sign_bit));
+  const I big = a > 2.41421356237f;
+  const I mid = a > 0.414213562373f;
+  const V one = V{} + 1.0f;
+  const V num = big ? -one : (mid ? a - 1.0f : a);
+  const V den = big ? a : (mid ? a + 1.0f : one);
+  const V base = big ? V{} + kHalfPi : (mid ? V{} + 0.785398163397f : V{});
+  const V t = num / den;
+  const V z = t * t;
+  const V z2 = z * z;
+  const V poly = (-3.33329491539e-1f + 1.99777106478e-1f * z) +
+                 z2 * (-1.38776856032e-1f + 8.05374449538e-2f * z);
+  const V r = base + (t + t * z * poly);
+  return std::bit_cast<V>(I(std::bit_cast<I>(r) | (bits & sign_bit)));
+}
+
+/// sin (quarter_turns 0) or cos (quarter_turns 1) of lanes with |y| ≤ kTrigMax: the reduction
+/// and polynomials of fast::tan, the quadrant advanced by a quarter turn for cos.
+template <typename V>
+V sin_cos_lanes(V y, IntOf<V> quarter_turns) {
+  using I = IntOf<V>;
+  const V k = quarter_turns_of(y);
+  const V r = reduce_by(y, k);
+  const I q = __builtin_convertvector(k, I) + quarter_turns;
+  const V v = (q & 1) != 0 ? cos_poly(r) : sin_poly(r);
+  return std::bit_cast<V>(I(std::bit_cast<I>(v) ^ ((q & 2) << 30)));  // −v in quadrants 2, 3
+}
+
+/// fast::tan on lanes with |y| ≤ kTrigMax (same reduction and polynomials).
+template <typename V>
+V tan_lanes(V y) {
+  const V k = quarter_turns_of(y);
+  const V r = reduce_by(y, k);
+  const V s = sin_poly(r);
+  const V c = cos_poly(r);
+  return (__builtin_convertvector(k, IntOf<V>) & 1) != 0 ? -c / s : s / c;
+}
+
+/// The four-lane forms (the scalar float path's mf_cores and the tests use them).
 inline F4 atan4(F4 x) {
-  const I4 sign_bit = I4{} + static_cast<std::int32_t>(0x80000000u);
-  const I4 bits = std::bit_cast<I4>(x);
-  const F4 a = std::bit_cast<F4>(I4(bits & ~sign_bit));
-  const I4 big = a > 2.41421356237f;
-  const I4 mid = a > 0.414213562373f;
-  const F4 one = F4{} + 1.0f;
-  const F4 num = big ? -one : (mid ? a - 1.0f : a);
-  const F4 den = big ? a : (mid ? a + 1.0f : one);
-  const F4 base = big ? F4{} + kHalfPi : (mid ? F4{} + 0.785398163397f : F4{});
-  const F4 t = num / den;
-  const F4 z = t * t;
-  const F4 z2 = z * z;
-  const F4 poly = (-3.33329491539e-1f + 1.99777106478e-1f * z) +
-                  z2 * (-1.38776856032e-1f + 8.05374449538e-2f * z);
-  const F4 r = base + (t + t * z * poly);
-  return std::bit_cast<F4>(I4(std::bit_cast<I4>(r) | (bits & sign_bit)));
+  return atan_lanes(x);
 }
-
-/// sin (quarter_turns 0) or cos (quarter_turns 1) of four lanes with |y| ≤ kTrigMax: the
-/// reduction and polynomials of fast::tan, the quadrant advanced by a quarter turn for cos.
 inline F4 sin_cos4(F4 y, I4 quarter_turns) {
-  const F4 k = quarter_turns_of(y);
-  const F4 r = reduce_by(y, k);
-  const I4 q = __builtin_convertvector(k, I4) + quarter_turns;
-  const F4 v = (q & 1) != 0 ? cos_poly(r) : sin_poly(r);
-  return std::bit_cast<F4>(I4(std::bit_cast<I4>(v) ^ ((q & 2) << 30)));  // −v in quadrants 2, 3
+  return sin_cos_lanes(y, quarter_turns);
 }
-
-/// fast::tan on four lanes with |y| ≤ kTrigMax (same reduction and polynomials).
 inline F4 tan4(F4 y) {
-  const F4 k = quarter_turns_of(y);
-  const F4 r = reduce_by(y, k);
-  const F4 s = sin_poly(r);
-  const F4 c = cos_poly(r);
-  return (__builtin_convertvector(k, I4) & 1) != 0 ? -c / s : s / c;
+  return tan_lanes(y);
 }
 
 }  // namespace fast
