@@ -837,6 +837,9 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
   if (any_lane(beyond)) {
     T rho_unused = T(0);
     beyond = beyond && fz62(c, c.romega, slope_romega, rho_unused, memo) > fz_target;
+    // Only those lanes keep the pow's memo (a lane's result must not depend on its neighbours).
+    memo.base = if_else(bound > fz_target, memo.base, T(0));
+    memo.value = if_else(bound > fz_target, memo.value, T(0));
   }
   const T lo_end = if_else(beyond, c.romega, T(0));
   const T hi_end = if_else(beyond, c.romega + c.width, c.romega);
