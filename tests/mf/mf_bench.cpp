@@ -7,10 +7,13 @@
 #include <benchmark/benchmark.h>
 
 #include <array>
+#include <cstdint>
 #include <random>
+#include <string>
 
 #include "golden_path.hpp"
 #include "mf/mf_evaluate.hpp"
+#include "mf/mf_evaluate_batch.hpp"
 #include "mf/mf_evaluate_four.hpp"
 #include "mf/mf_parameters_from_tir.hpp"
 
@@ -75,6 +78,24 @@ void bench_four(benchmark::State& state, const char* tir, bool combined, bool ex
   state.SetItemsProcessed(4 * state.iterations());
 }
 
+/// The 1024 inputs in one evaluate_batch_on call on `lanes` lanes (8: AVX2 where the CPU has it,
+/// 16: AVX-512 where it has it); items are wheels, so the reported time per item is per wheel.
+void bench_batch(benchmark::State& state, int lanes, const char* tir, bool extras) {
+  const MfParameters<float> p =
+      convert_parameters<float>(load_mf_parameters(testing::tyre_file(tir)).params);
+  MfOptions o = options_from_use_mode(111).value;
+  o.extras = extras;
+  const auto inputs = make_inputs<float>();
+  std::array<MfOutput<float>, kInputs> out{};
+  for (auto _ : state) {
+    evaluate_batch_on(lanes, p, inputs, o, out);
+    benchmark::DoNotOptimize(out);
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(kInputs) * state.iterations());
+  state.SetLabel(std::to_string(lanes == 16 && !sixteen_lanes_available() ? batch_lanes() : lanes) +
+                 " lanes");
+}
+
 constexpr const char* kMf61 = "MagicFormula61_Parameters.tir";
 constexpr const char* kMf52 = "MagicFormula52_Parameters.tir";
 constexpr const char* kMf62 = "MagicFormula62_Parameters.tir";  // the same tyre as kMf61
@@ -121,6 +142,18 @@ void BM_Mf61_FloatFour_Combined_Extras(benchmark::State& s) {
   bench_four(s, kMf61, true, true);
 }
 
+void BM_Mf61_FloatBatch_Combined_Extras(benchmark::State& s) {
+  bench_batch(s, batch_lanes(), "MagicFormula61_Parameters.tir", true);
+}
+void BM_Mf61_FloatBatch16_Combined_Extras(benchmark::State& s) {
+  bench_batch(s, 16, "MagicFormula61_Parameters.tir", true);
+}
+void BM_Mf62_FloatBatch_Combined_Extras(benchmark::State& s) {
+  bench_batch(s, batch_lanes(), "MagicFormula62_Parameters.tir", true);
+}
+BENCHMARK(BM_Mf61_FloatBatch_Combined_Extras);
+BENCHMARK(BM_Mf61_FloatBatch16_Combined_Extras);
+BENCHMARK(BM_Mf62_FloatBatch_Combined_Extras);
 BENCHMARK(BM_Mf61_Float_Combined);
 BENCHMARK(BM_Mf61_FloatFour_Combined);
 BENCHMARK(BM_Mf61_FloatFour_Combined_Extras);

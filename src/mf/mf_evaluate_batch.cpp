@@ -1,0 +1,153 @@
+// Batches on wide lanes: blocks of N wheels packed into MfInput<Lanes<N>>, evaluated once,
+// unpacked; the last, partial block padded with copies of its first wheel. On x86-64 the 16-lane
+// block is compiled for x86-64-v4 (AVX-512) and the 8-lane block twice, for x86-64-v3 (AVX2, FMA)
+// and the SSE2 baseline (GCC target_clones); the CPU's features choose at run time. As in
+// mf_evaluate_four.cpp, the v3/v4 code contracts a·b + c into FMAs the same way at every width, so
+// a wheel's results do not depend on the width or its lane.
+#include "mf/mf_evaluate_batch.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstring>
+#include <type_traits>
+
+#include "mf/mf_lanes.hpp"
+
+namespace tread::mf {
+
+namespace {
+
+constexpr std::size_t kInputFields = sizeof(MfInput<float>) / sizeof(float);
+constexpr std::size_t kOutputFields = offsetof(MfOutput<float>, status) / sizeof(float);
+static_assert(std::is_standard_layout_v<MfInput<float>> && kInputFields == 7);
+static_assert(offsetof(MfOutput<float>, kxk_n) == (kOutputFields - 1) * sizeof(float));
+
+/// N wheels: inputs packed field by field into lanes, evaluated, outputs unpacked.
+template <int N>
+[[gnu::always_inline]] inline void evaluate_block(const MfParameters<float>& params,
+                                                  const MfInput<float>* inputs,
+                                                  const MfOptions& options, bool mirror,
+                                                  MfOutput<float>* outputs) {
+  using L = lanes::Lanes<N>;
+  static_assert(std::is_standard_layout_v<MfOutput<L>> &&
+                offsetof(MfOutput<L>, status) == kOutputFields * sizeof(L));
+  std::array<lanes::FloatVec<N>, kInputFields> packed{};
+  for (int i = 0; i < N; ++i) {
+    float row[kInputFields];
+    std::memcpy(row, reinterpret_cast<const char*>(&inputs[i]), sizeof(row));
+    for (std::size_t f = 0; f < kInputFields; ++f) packed[f][i] = row[f];
+  }
+  MfInput<L> in;
+  in.fz_n = L(packed[0]);
+  in.kappa = L(packed[1]);
+  in.alpha_rad = L(packed[2]);
+  in.gamma_rad = L(packed[3]);
+  in.vx_mps = L(packed[4]);
+  in.phit_1pm = L(packed[5]);
+  in.p_pa = L(packed[6]);
+  lanes::Mask<N> flip;
+  if (mirror) flip = !flip;
+  MfOptions lane_options = options;
+  lane_options.side = MountedSide::as_measured;
+  MfOutput<L> out = evaluate(params, detail::mirror_input(in, flip), lane_options);
+  detail::mirror_output(out, flip);
+  std::array<lanes::FloatVec<N>, kOutputFields> fields;
+  std::memcpy(fields.data(), reinterpret_cast<const char*>(&out), sizeof(fields));
+  for (int i = 0; i < N; ++i) {
+    float row[kOutputFields];
+    for (std::size_t f = 0; f < kOutputFields; ++f) row[f] = fields[f][i];
+    std::memcpy(reinterpret_cast<char*>(&outputs[i]), row, sizeof(row));
+    outputs[i].status = out.status[i];
+  }
+}
+
+template <int N>
+[[gnu::always_inline]] inline void evaluate_blocks(const MfParameters<float>& params,
+                                                   std::span<const MfInput<float>> inputs,
+                                                   const MfOptions& options,
+                                                   std::span<MfOutput<float>> outputs) {
+  const bool mirror = mirrored(options.side, params.tyre_side);
+  const std::size_t n = std::min(inputs.size(), outputs.size());
+  std::size_t i = 0;
+  for (; i + N <= n; i += N) evaluate_block<N>(params, &inputs[i], options, mirror, &outputs[i]);
+  if (i < n) {
+    std::array<MfInput<float>, static_cast<std::size_t>(N)> tail_in;
+    std::array<MfOutput<float>, static_cast<std::size_t>(N)> tail_out;
+    tail_in.fill(inputs[i]);
+    std::copy(inputs.begin() + static_cast<std::ptrdiff_t>(i),
+              inputs.begin() + static_cast<std::ptrdiff_t>(n), tail_in.begin());
+    evaluate_block<N>(params, tail_in.data(), options, mirror, tail_out.data());
+    std::copy(tail_out.begin(), tail_out.begin() + static_cast<std::ptrdiff_t>(n - i),
+              outputs.begin() + static_cast<std::ptrdiff_t>(i));
+  }
+}
+
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define TREAD_WIDE_LANES 1
+__attribute__((flatten, target("arch=x86-64-v4"))) void evaluate_sixteen(
+    const MfParameters<float>& params, std::span<const MfInput<float>> inputs,
+    const MfOptions& options, std::span<MfOutput<float>> outputs) {
+  evaluate_blocks<16>(params, inputs, options, outputs);
+}
+__attribute__((flatten, target_clones("arch=x86-64-v3", "default"))) void evaluate_eight(
+    const MfParameters<float>& params, std::span<const MfInput<float>> inputs,
+    const MfOptions& options, std::span<MfOutput<float>> outputs) {
+  evaluate_blocks<8>(params, inputs, options, outputs);
+}
+bool has_avx512() {
+  __builtin_cpu_init();
+  return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+         __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512vl") &&
+         __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+}
+#else
+#define TREAD_WIDE_LANES 0
+__attribute__((flatten)) void evaluate_four_lanes(const MfParameters<float>& params,
+                                                  std::span<const MfInput<float>> inputs,
+                                                  const MfOptions& options,
+                                                  std::span<MfOutput<float>> outputs) {
+  evaluate_blocks<4>(params, inputs, options, outputs);
+}
+#endif
+
+}  // namespace
+
+int batch_lanes() noexcept {
+#if TREAD_WIDE_LANES
+  return 8;
+#else
+  return 4;
+#endif
+}
+
+bool sixteen_lanes_available() noexcept {
+#if TREAD_WIDE_LANES
+  static const bool wide = has_avx512();
+  return wide;
+#else
+  return false;
+#endif
+}
+
+void evaluate_batch_on(int lanes, const MfParameters<float>& params,
+                       std::span<const MfInput<float>> inputs, const MfOptions& options,
+                       std::span<MfOutput<float>> outputs) noexcept {
+#if TREAD_WIDE_LANES
+  if (lanes == 16 && sixteen_lanes_available()) {
+    evaluate_sixteen(params, inputs, options, outputs);
+  } else {
+    evaluate_eight(params, inputs, options, outputs);
+  }
+#else
+  static_cast<void>(lanes);
+  evaluate_four_lanes(params, inputs, options, outputs);
+#endif
+}
+
+void evaluate_batch(const MfParameters<float>& params, std::span<const MfInput<float>> inputs,
+                    const MfOptions& options, std::span<MfOutput<float>> outputs) noexcept {
+  evaluate_batch_on(batch_lanes(), params, inputs, options, outputs);
+}
+
+}  // namespace tread::mf

@@ -1,0 +1,35 @@
+#pragma once
+// Many wheels of one tyre at once, on wide float lanes: the Magic Formula (mf_evaluate.hpp)
+// instantiated on 8 lanes on x86-64 (AVX2 and FMA where the CPU has them, x86-64-v3; else SSE
+// pairs), 16 on request where the CPU has AVX-512 (x86-64-v4; the same bits, not faster on every
+// CPU: see mf_evaluate_batch.cpp); 4 (NEON) on aarch64 and plain code elsewhere. For offline work
+// over millions of operating points (maps, sweeps, `tread mf eval
+// --float`). Each wheel's results are those evaluate_four gives it on the same CPU, bit for bit
+// (the lanes compute the same operations; tests/mf/mf_evaluate_batch_test.cpp), whatever the
+// batch's length and the wheel's place in it.
+
+#include <cstddef>
+#include <span>
+
+#include "mf/mf_evaluate.hpp"
+
+namespace tread::mf {
+
+/// Evaluates inputs[i] into outputs[i] for every i (the spans have the same length) with the
+/// same parameters and options (options.side: the mounted side of every wheel). Never allocates,
+/// never throws; never returns NaN or inf (as evaluate).
+void evaluate_batch(const MfParameters<float>& params, std::span<const MfInput<float>> inputs,
+                    const MfOptions& options, std::span<MfOutput<float>> outputs) noexcept;
+
+/// The number of lanes evaluate_batch uses: 8 on x86-64, 4 elsewhere.
+int batch_lanes() noexcept;
+
+/// Whether evaluate_batch_on(16, …) runs 16 lanes (the CPU has AVX-512).
+bool sixteen_lanes_available() noexcept;
+
+/// evaluate_batch on `lanes` lanes: 16 where sixteen_lanes_available(), else batch_lanes().
+void evaluate_batch_on(int lanes, const MfParameters<float>& params,
+                       std::span<const MfInput<float>> inputs, const MfOptions& options,
+                       std::span<MfOutput<float>> outputs) noexcept;
+
+}  // namespace tread::mf

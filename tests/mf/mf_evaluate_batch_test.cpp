@@ -1,0 +1,231 @@
+// mf::evaluate_batch (src/mf/mf_evaluate_batch.hpp): the Magic Formula on the widest float lanes
+// the CPU has (16 with AVX-512, 8 with AVX2; 4 elsewhere).
+//   - Every wheel's outputs are evaluate_four's for it on the same CPU: every .tir the MF core
+//     loads, all eight useModes, extras on/off/loaded radius only, the three mounted sides,
+//     physical and wild inputs (zero, huge, tiny, subnormal; NaN inputs). The same status, every
+//     output within 1e-5 of its column's largest magnitude (as evaluate_four against the scalar
+//     path): GCC contracts a few a·b + c into FMAs differently at the wider widths, so about one
+//     wheel in ten differs from evaluate_four in the last bit or two of an output (the count of
+//     wheels equal bit for bit is printed).
+//   - A wheel's outputs do not depend on its neighbours, its place in its block or the batch's
+//     length: bit for bit, batches of every length from 0 to 3 blocks.
+//   - 8 and 16 lanes give the same bits; batch_lanes() and sixteen_lanes_available() say what
+//     the CPU runs.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <limits>
+#include <random>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "golden_path.hpp"
+#include "mf/mf_evaluate.hpp"
+#include "mf/mf_evaluate_batch.hpp"
+#include "mf/mf_evaluate_four.hpp"
+#include "mf/mf_parameters_from_tir.hpp"
+#include "wild_value.hpp"
+
+namespace tread::mf {
+namespace {
+
+constexpr std::array<int, 8> kUseModes = {111, 112, 121, 122, 211, 212, 221, 222};
+
+std::vector<MfParameters<float>> all_mf_tyres() {
+  std::vector<MfParameters<float>> tyres;
+  for (const auto& entry : std::filesystem::directory_iterator(testing::tyres_dir())) {
+    if (entry.path().extension() != ".tir") continue;
+    try {
+      tyres.push_back(convert_parameters<float>(load_mf_parameters(entry.path()).params));
+    } catch (const std::exception&) {
+      // PAC89/PAC94: not a Magic Formula file
+    }
+  }
+  return tyres;
+}
+
+std::vector<MfInput<float>> inputs(std::mt19937_64& rng, std::size_t n) {
+  std::uniform_real_distribution<double> fz(-500.0, 12000.0), kappa(-1.0, 1.0), alpha(-0.6, 0.6),
+      gamma(-0.2, 0.2), vx(-5.0, 60.0), phit(-2.0, 2.0), p(0.0, 4e5);
+  std::vector<MfInput<float>> in(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    MfInput<float>& x = in[i];
+    if (i % 5 == 4) {  // wild
+      x.fz_n = testing::wild<float>(rng, 5000.0);
+      x.kappa = testing::wild<float>(rng, 0.2);
+      x.alpha_rad = testing::wild<float>(rng, 0.2);
+      x.gamma_rad = testing::wild<float>(rng, 0.05);
+      x.vx_mps = testing::wild<float>(rng, 20.0);
+      x.phit_1pm = testing::wild<float>(rng, 0.5);
+      x.p_pa = testing::wild<float>(rng, 2e5);
+    } else {
+      x.fz_n = static_cast<float>(fz(rng));
+      x.kappa = static_cast<float>(kappa(rng));
+      x.alpha_rad = static_cast<float>(alpha(rng));
+      x.gamma_rad = static_cast<float>(gamma(rng));
+      x.vx_mps = static_cast<float>(i % 7 == 3 ? 0.0 : vx(rng));
+      x.phit_1pm = static_cast<float>(i % 3 == 0 ? phit(rng) : 0.0);
+      x.p_pa = static_cast<float>(p(rng));
+    }
+  }
+  in[1].kappa = std::numeric_limits<float>::quiet_NaN();
+  return in;
+}
+
+/// evaluate_four on groups of four (the last padded with its first input), every wheel on `side`.
+std::vector<MfOutput<float>> in_fours(const MfParameters<float>& p,
+                                      const std::vector<MfInput<float>>& in,
+                                      const MfOptions& options, MountedSide side) {
+  std::vector<MfOutput<float>> out(in.size());
+  const std::array<MountedSide, 4> sides = {side, side, side, side};
+  for (std::size_t g = 0; g < in.size(); g += 4) {
+    std::array<MfInput<float>, 4> four;
+    for (std::size_t k = 0; k < 4; ++k) four[k] = in[g + k < in.size() ? g + k : g];
+    std::array<MfOutput<float>, 4> result;
+    evaluate_four(p, four, options, sides, result);
+    for (std::size_t k = 0; k < 4 && g + k < in.size(); ++k) out[g + k] = result[k];
+  }
+  return out;
+}
+
+/// The outputs' bits (every float field) and status.
+bool same_bits(const MfOutput<float>& a, const MfOutput<float>& b) {
+  constexpr std::size_t kFloats = offsetof(MfOutput<float>, status);
+  return std::memcmp(&a, &b, kFloats) == 0 && a.status == b.status;
+}
+
+constexpr std::size_t kFields = offsetof(MfOutput<float>, status) / sizeof(float);
+std::array<float, kFields> fields_of(const MfOutput<float>& o) {
+  std::array<float, kFields> f;
+  std::memcpy(f.data(), &o, sizeof(f));
+  return f;
+}
+
+/// The widths this CPU runs: 8 on any x86-64 (and 16 with AVX-512), else 4.
+std::vector<int> widths() {
+  std::vector<int> w = {batch_lanes()};
+  if (sixteen_lanes_available()) w.push_back(16);
+  return w;
+}
+
+TEST(MfEvaluateBatch, EqualsEvaluateFour) {
+  for (const int lanes : widths()) {
+    const std::vector<MfParameters<float>> tyres = all_mf_tyres();
+    ASSERT_GE(tyres.size(), 8U);
+    std::mt19937_64 rng(17);
+    const std::size_t n = static_cast<std::size_t>(3 * batch_lanes() + 5);
+    std::size_t compared = 0;
+    std::size_t bit_equal = 0;
+    for (const MfParameters<float>& p : tyres) {
+      for (const int mode : kUseModes) {
+        for (int extras = 0; extras < 3; ++extras) {
+          MfOptions o = options_from_use_mode(mode).value;
+          o.extras = extras > 0;
+          o.extras_loaded_radius_only = extras == 2;
+          for (const MountedSide side :
+               {MountedSide::as_measured, MountedSide::left, MountedSide::right}) {
+            o.side = side;
+            const std::vector<MfInput<float>> in = inputs(rng, n);
+            const std::vector<MfOutput<float>> expected = in_fours(p, in, o, side);
+            std::vector<MfOutput<float>> got(n);
+            evaluate_batch_on(lanes, p, in, o, got);
+            std::array<float, kFields> scale{};
+            for (const MfOutput<float>& e : expected) {
+              const auto f = fields_of(e);
+              for (std::size_t k = 0; k < kFields; ++k)
+                scale[k] = std::max(scale[k], std::fabs(f[k]));
+            }
+            for (std::size_t i = 0; i < n; ++i) {
+              const std::string where = "fit " + std::to_string(static_cast<int>(p.fit_type)) +
+                                        " mode " + std::to_string(mode) + " extras " +
+                                        std::to_string(extras) + " wheel " + std::to_string(i);
+              ASSERT_EQ(got[i].status, expected[i].status) << where;
+              const auto a = fields_of(got[i]);
+              const auto b = fields_of(expected[i]);
+              for (std::size_t k = 0; k < kFields; ++k) {
+                ASSERT_LE(std::fabs(a[k] - b[k]), 1e-5F * scale[k]) << where << " field " << k;
+              }
+              bit_equal += same_bits(got[i], expected[i]) ? 1U : 0U;
+              ++compared;
+            }
+          }
+        }
+      }
+    }
+    std::printf("[ compared ] %zu wheels on %d lanes, %zu bit for bit\n", compared, lanes,
+                bit_equal);
+  }
+}
+
+TEST(MfEvaluateBatch, EveryLengthAndPlaceInABlock) {
+  for (const char* tyre : {"MagicFormula61_Parameters.tir", "MagicFormula62_Parameters.tir",
+                           "chrono_Sedan_Pac02Tire.tir"}) {
+    const MfParameters<float> p =
+        convert_parameters<float>(load_mf_parameters(testing::tyre_file(tyre)).params);
+    const MfOptions o = options_from_use_mode(111).value;
+    std::mt19937_64 rng(5);
+    const std::size_t most = static_cast<std::size_t>(3 * batch_lanes());
+    const std::vector<MfInput<float>> all = inputs(rng, most);
+    // Each wheel alone (its block padded with copies of it).
+    std::vector<MfOutput<float>> alone(most);
+    for (std::size_t i = 0; i < most; ++i) {
+      evaluate_batch(p, std::span<const MfInput<float>>(all).subspan(i, 1), o,
+                     std::span<MfOutput<float>>(alone).subspan(i, 1));
+    }
+    for (std::size_t length = 0; length <= most; ++length) {
+      for (std::size_t start = 0; start + length <= most; start += 1 + most / 7) {
+        std::vector<MfOutput<float>> got(length);
+        evaluate_batch(p, std::span<const MfInput<float>>(all).subspan(start, length), o, got);
+        for (std::size_t i = 0; i < length; ++i) {
+          ASSERT_TRUE(same_bits(got[i], alone[start + i]))
+              << tyre << " length " << length << " start " << start << " wheel " << i;
+        }
+      }
+    }
+  }
+}
+
+TEST(MfEvaluateBatch, SixteenLanesEqualEightBitForBit) {
+  if (!sixteen_lanes_available()) GTEST_SKIP() << "no AVX-512 on this CPU";
+  std::mt19937_64 rng(23);
+  std::size_t compared = 0;
+  for (const MfParameters<float>& p : all_mf_tyres()) {
+    for (const int mode : kUseModes) {
+      const MfOptions o = options_from_use_mode(mode).value;
+      const std::vector<MfInput<float>> in = inputs(rng, 53);
+      std::vector<MfOutput<float>> eight(in.size());
+      std::vector<MfOutput<float>> sixteen(in.size());
+      evaluate_batch_on(8, p, in, o, eight);
+      evaluate_batch_on(16, p, in, o, sixteen);
+      for (std::size_t i = 0; i < in.size(); ++i) {
+        ASSERT_TRUE(same_bits(eight[i], sixteen[i])) << "mode " << mode << " wheel " << i;
+        ++compared;
+      }
+    }
+  }
+  std::printf("[ compared ] %zu wheels\n", compared);
+}
+
+TEST(MfEvaluateBatch, LanesForThisCpu) {
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+  __builtin_cpu_init();
+  const bool v4 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+                  __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512vl") &&
+                  __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  EXPECT_EQ(batch_lanes(), 8);
+  EXPECT_EQ(sixteen_lanes_available(), v4);
+#else
+  EXPECT_EQ(batch_lanes(), 4);
+  EXPECT_FALSE(sixteen_lanes_available());
+#endif
+}
+
+}  // namespace
+}  // namespace tread::mf
