@@ -4,7 +4,8 @@
 # run).
 #   1. The Magic Formula with all outputs (forces, moments, Rl, Re, contact patch, relaxation),
 #      MF 6.1 and MF 6.2 (data/tyres/MagicFormula6{1,2}_Parameters.tir, the same tyre), useMode 111,
-#      1024 random operating points: ns per evaluation (per wheel for the lanes), × the double path,
+#      1024 random operating points: ns per evaluation (per wheel for the lanes and the batch), × the
+#      double path,
 #      and MF 6.2 / MF 6.1 in every path (medians of 5, CPU time).
 #   2. With --timing SECONDS: scripts/bench-timing.sh (cyclictest and the node in one run).
 #   3. With --cli: scripts/bench-mf-eval.sh (`tread mf eval` on 1 M rows), when present.
@@ -29,7 +30,7 @@ json=$(mktemp)
 trap 'rm -f "$json"' EXIT
 echo "== Magic Formula, all outputs (mf_bench, CPU medians of 5) on $(nproc) cores of" \
   "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(date -u +%F) =="
-build/host/tests/mf/mf_bench --benchmark_filter='Mf6[12]_(Double|Float|FloatFour)_Combined_Extras$' \
+build/host/tests/mf/mf_bench --benchmark_filter='Mf6[12]_(Double|Float|FloatFour|FloatBatch)_Combined_Extras$' \
   --benchmark_repetitions=5 --benchmark_report_aggregates_only=true --benchmark_format=json \
   >"$json" 2>/dev/null
 /usr/bin/python3 - "$json" <<'EOF'
@@ -42,8 +43,13 @@ for r in runs:
     name = r["run_name"].removeprefix("BM_")
     scale = {"ns": 1, "us": 1e3, "ms": 1e6}[r["time_unit"]]
     per_call = r["cpu_time"] * scale
-    ns[name] = per_call / 4 if "FloatFour" in name else per_call
-paths = [("tread double", "Double"), ("tread float", "Float"), ("tread four lanes, per wheel", "FloatFour")]
+    if "FloatFour" in name:
+        per_call /= 4
+    elif "FloatBatch" in name:
+        per_call /= 1024  # one call evaluates the 1024 operating points
+    ns[name] = per_call
+paths = [("tread double", "Double"), ("tread float", "Float"), ("tread four lanes, per wheel", "FloatFour"),
+         ("tread batch (evaluate_batch, 8 lanes on x86-64), per wheel", "FloatBatch")]
 print(f"| path | MF 6.1 ns/eval | × double | MF 6.2 ns/eval | × double | MF 6.2 / MF 6.1 |")
 print("|---|---|---|---|---|---|")
 base61 = ns["Mf61_Double_Combined_Extras"]
