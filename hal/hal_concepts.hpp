@@ -18,6 +18,14 @@ concept CanBus = requires(B bus, const proto::CanFrame& out, proto::CanFrame& in
   { bus.receive(in) } -> std::same_as<Status>;  // Status::would_block when nothing is queued
 };
 
+/// A CanBus that can also block until a frame is queued or an absolute CLOCK_MONOTONIC deadline
+/// passes (Status::ok: a frame is queued; Status::would_block: the deadline passed). An
+/// event-driven loop (sync mode) sleeps on it instead of polling.
+template <typename B>
+concept WaitableCanBus = CanBus<B> && requires(B bus, std::int64_t deadline_ns) {
+  { bus.wait_until_ns(deadline_ns) } -> std::same_as<Status>;
+};
+
 /// Monotonic time in nanoseconds and absolute sleeps.
 template <typename C>
 concept Clock = requires(C clock, std::int64_t deadline_ns) {

@@ -7,11 +7,14 @@
 //             burst).
 //   sync:     compute when the rig's cycle frame arrives; if none arrives for the input timeout,
 //   compute
-//             anyway so stale channels report zeros.
+//             anyway so stale channels report zeros. On a bus that can block until a frame arrives
+//             (hal::WaitableCanBus: SocketCAN, the thread link) the loop sleeps until then; on
+//             others it polls every sync_poll_ns.
 // The node sees the nominal cycle time (the deadline) in periodic mode and the wake time in sync
 // mode: in periodic mode a recorded run is therefore replayable bit for bit.
 // Header-only, templated on hal concepts; no heap.
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cstdint>
@@ -33,6 +36,9 @@ struct LoopConfig {
   std::int64_t period_ns{1'000'000};
   node::Schedule schedule{node::Schedule::periodic};
   std::int64_t sync_poll_ns{20'000};  ///< sync mode: sleep between polls of an empty bus
+  /// Sync mode on a bus that can block (hal::WaitableCanBus): the longest single sleep, so that
+  /// run() sees a stop request in this time even when the input timeout is long.
+  std::int64_t sync_wait_max_ns{50'000'000};
 };
 
 struct LoopStats {
@@ -50,6 +56,10 @@ class LoopRunner {
   LoopRunner(NodeT& node, Bus& bus, ClockT& clock, Pin& pin, const LoopConfig& config,
              Observer& observer) noexcept
       : node_(node), bus_(bus), clock_(clock), pin_(pin), config_(config), observer_(observer) {}
+
+  /// Periodic mode: the first deadline (CLOCK time). Without it the first deadline is one period
+  /// after the first cycle starts. For a rig that must know the node's grid (the threaded demo).
+  void set_first_deadline_ns(std::int64_t deadline_ns) noexcept { next_deadline_ns_ = deadline_ns; }
 
   /// Periodic mode: waits for the next deadline and runs one cycle.
   void run_periodic_cycle() noexcept {
@@ -92,7 +102,13 @@ class LoopRunner {
       last_compute_ns_ = now;
       return true;
     }
-    static_cast<void>(clock_.sleep_until_ns(now + config_.sync_poll_ns));
+    if constexpr (WaitableCanBus<Bus>) {
+      // Event-driven: sleep until a frame arrives (woken by it) or the input timeout is due.
+      const std::int64_t due = last_compute_ns_ + node_.config().input_timeout_ns + 1;
+      static_cast<void>(bus_.wait_until_ns(std::min(due, now + config_.sync_wait_max_ns)));
+    } else {
+      static_cast<void>(clock_.sleep_until_ns(now + config_.sync_poll_ns));
+    }
     return false;
   }
 

@@ -1,13 +1,43 @@
 #include "posix/realtime.hpp"
 
+#include <malloc.h>
 #include <pthread.h>
 #include <sched.h>
 #include <sys/mman.h>
 
+#include <array>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 
 namespace tread::hal {
+
+namespace {
+
+// Touches `bytes` below the current frame (the stack grows down): the pages become present.
+__attribute__((noinline)) void prefault_stack(std::size_t bytes) {
+  constexpr std::size_t kChunk = 16U * 1024U;
+  std::array<unsigned char, kChunk> chunk;
+  std::memset(chunk.data(), 0, chunk.size());
+  asm volatile("" : : "r"(chunk.data()) : "memory");  // the stores are not optimised away
+  if (bytes > kChunk) {
+    prefault_stack(bytes - kChunk);
+  }
+}
+
+// Grows the heap by `bytes`, touches it and frees it: with trimming off it stays with the process.
+void prefault_heap(std::size_t bytes) {
+  auto* block = static_cast<unsigned char*>(std::malloc(bytes));
+  if (block == nullptr) {
+    return;
+  }
+  for (std::size_t i = 0; i < bytes; i += 4096U) {
+    static_cast<volatile unsigned char*>(block)[i] = 0;
+  }
+  std::free(block);
+}
+
+}  // namespace
 
 RealtimeReport apply_realtime(const RealtimeRequest& request) {
   RealtimeReport report;
@@ -17,8 +47,17 @@ RealtimeReport apply_realtime(const RealtimeRequest& request) {
   };
 
   if (request.lock_memory) {
+    // Freed heap stays in the process (and locked): no trimming, no mmap'ed blocks.
+    static_cast<void>(::mallopt(M_TRIM_THRESHOLD, -1));
+    static_cast<void>(::mallopt(M_MMAP_MAX, 0));
     if (::mlockall(MCL_CURRENT | MCL_FUTURE) == 0) {
-      report.messages += "mlockall: memory locked\n";
+      report.messages += "mlockall: memory locked";
+      if (request.prefault_heap_bytes > 0U) {
+        prefault_heap(request.prefault_heap_bytes);
+        report.messages +=
+            ", " + std::to_string(request.prefault_heap_bytes >> 10U) + " KiB of heap reserved";
+      }
+      report.messages += "\n";
     } else {
       refuse("mlockall", errno,
              "Needs CAP_IPC_LOCK or a large enough RLIMIT_MEMLOCK (ulimit -l); running unlocked.");
@@ -49,7 +88,18 @@ RealtimeReport apply_realtime(const RealtimeRequest& request) {
           "Needs root or CAP_SYS_NICE (or an rtprio limit); running with the default scheduler.");
     }
   }
+  if (request.prefault_stack_bytes > 0U) {
+    prefault_stack(request.prefault_stack_bytes);
+    report.messages +=
+        "stack: " + std::to_string(request.prefault_stack_bytes >> 10U) + " KiB prefaulted\n";
+  }
   return report;
+}
+
+void leave_fifo() noexcept {
+  sched_param param{};
+  param.sched_priority = 0;
+  static_cast<void>(::pthread_setschedparam(::pthread_self(), SCHED_OTHER, &param));
 }
 
 }  // namespace tread::hal

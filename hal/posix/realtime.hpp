@@ -3,14 +3,22 @@
 // and reports a clear message when the system refuses it (no privilege, no such CPU,
 // RLIMIT_MEMLOCK).
 
+#include <cstddef>
 #include <string>
 
 namespace tread::hal {
 
 struct RealtimeRequest {
   int fifo_priority{0};  ///< 1..99 for SCHED_FIFO; 0 = leave the scheduler alone
+  /// mlockall(MCL_CURRENT | MCL_FUTURE), after telling malloc never to give memory back to the
+  /// system nor to serve large blocks by mmap (so freed and reused heap stays locked and mapped),
+  /// and with `prefault_heap_bytes` of heap touched and freed for later use.
   bool lock_memory{false};
   int cpu{-1};  ///< pin the calling thread to this CPU; -1 = leave affinity alone
+  /// Touch this much of the calling thread's stack, so that its pages are present (and, locked,
+  /// stay so) before the loop runs: no page fault on the first deep call.
+  std::size_t prefault_stack_bytes{0};
+  std::size_t prefault_heap_bytes{0};  ///< with lock_memory: heap reserve touched at set-up
 };
 
 struct RealtimeReport {
@@ -20,5 +28,9 @@ struct RealtimeReport {
 
 /// Applies the request to the calling thread/process. Never throws; failures are reported.
 RealtimeReport apply_realtime(const RealtimeRequest& request);
+
+/// Puts the calling thread back on the default scheduler (SCHED_OTHER); affinity and locked memory
+/// stay. For a thread that has real-time work and then ordinary work (writing files, plotting).
+void leave_fifo() noexcept;
 
 }  // namespace tread::hal

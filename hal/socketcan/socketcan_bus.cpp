@@ -5,6 +5,7 @@
 #include <linux/can/error.h>
 #include <linux/can/raw.h>
 #include <net/if.h>
+#include <poll.h>
 #include <sys/socket.h>
 #include <sys/uio.h>
 #include <unistd.h>
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <ctime>
 #include <string>
 #include <utility>
 
@@ -168,6 +170,33 @@ Status SocketCanBus::send(const proto::CanFrame& frame) {
     return Status::io_error;
   }
   return static_cast<std::size_t>(written) == size ? Status::ok : Status::io_error;
+}
+
+Status SocketCanBus::wait_until_ns(std::int64_t deadline_ns) {
+  if (fd_ < 0) {
+    return Status::io_error;
+  }
+  for (;;) {
+    timespec now{};
+    ::clock_gettime(CLOCK_MONOTONIC, &now);
+    const std::int64_t left_ns =
+        deadline_ns - (static_cast<std::int64_t>(now.tv_sec) * 1'000'000'000 + now.tv_nsec);
+    const std::int64_t wait_ns = left_ns > 0 ? left_ns : 0;
+    const timespec timeout{static_cast<time_t>(wait_ns / 1'000'000'000),
+                           static_cast<long>(wait_ns % 1'000'000'000)};
+    pollfd p{fd_, POLLIN, 0};
+    const int rc = ::ppoll(&p, 1, &timeout, nullptr);
+    if (rc > 0) {
+      return Status::ok;
+    }
+    if (rc == 0) {
+      return Status::would_block;
+    }
+    if (errno != EINTR) {
+      last_errno_ = errno;
+      return Status::io_error;
+    }
+  }
 }
 
 Status SocketCanBus::receive(proto::CanFrame& frame) {

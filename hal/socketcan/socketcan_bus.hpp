@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "core/status.hpp"
+#include "hal_concepts.hpp"
 #include "proto/can_frame.hpp"
 
 namespace tread::hal {
@@ -49,6 +50,13 @@ class SocketCanBus {
   /// @retval Status::would_block   nothing queued
   Status receive(proto::CanFrame& frame);
 
+  /// Blocks until a frame (or error frame) is queued or the absolute CLOCK_MONOTONIC
+  /// `deadline_ns` passes (ppoll). Satisfies hal::WaitableCanBus.
+  /// @retval Status::ok           something is queued
+  /// @retval Status::would_block  the deadline passed
+  /// @retval Status::io_error     the socket is not open, or ppoll failed (`last_errno()`)
+  Status wait_until_ns(std::int64_t deadline_ns);
+
   /// Sets SO_RCVBUF (bytes); small values make receive-overflow counting observable in tests.
   Status set_receive_buffer(int bytes);
   /// The receive buffer the kernel granted (SO_RCVBUF read back: twice the request, capped at
@@ -75,5 +83,7 @@ class SocketCanBus {
   std::uint64_t error_frames_{0};
   bool bus_off_{false};
 };
+
+static_assert(WaitableCanBus<SocketCanBus>);
 
 }  // namespace tread::hal

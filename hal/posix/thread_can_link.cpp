@@ -1,0 +1,80 @@
+#include "posix/thread_can_link.hpp"
+
+#include <linux/futex.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <ctime>
+
+namespace tread::hal {
+namespace {
+
+std::int64_t monotonic_ns() noexcept {
+  timespec ts{};
+  ::clock_gettime(CLOCK_MONOTONIC, &ts);
+  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec;
+}
+
+// FUTEX_WAIT_BITSET takes an absolute CLOCK_MONOTONIC timeout (FUTEX_WAIT's is relative).
+void futex_wait(std::atomic<std::uint32_t>& word, std::uint32_t expected,
+                std::int64_t deadline_ns) noexcept {
+  timespec ts{};
+  ts.tv_sec = static_cast<time_t>(deadline_ns / 1'000'000'000);
+  ts.tv_nsec = static_cast<long>(deadline_ns % 1'000'000'000);
+  // NOLINTNEXTLINE(cppcoreguidelines-pro-type-reinterpret-cast): the futex word is the atomic's
+  static_cast<void>(::syscall(SYS_futex, reinterpret_cast<std::uint32_t*>(&word),
+                              FUTEX_WAIT_BITSET | FUTEX_PRIVATE_FLAG, expected, &ts, nullptr,
+                              FUTEX_BITSET_MATCH_ANY));
+}
+
+void futex_wake(std::atomic<std::uint32_t>& word) noexcept {
+  // NOLINTNEXTLINE(cppcoreguidelines-pro-type-reinterpret-cast)
+  static_cast<void>(::syscall(SYS_futex, reinterpret_cast<std::uint32_t*>(&word),
+                              FUTEX_WAKE | FUTEX_PRIVATE_FLAG, 1, nullptr, nullptr, 0));
+}
+
+}  // namespace
+
+Status ThreadCanEndpoint::send(const proto::CanFrame& frame) noexcept {
+  proto::CanFrame stamped = frame;
+  stamped.timestamp_ns = monotonic_ns();
+  if (!out_.ring.push(stamped)) {
+    ++tx_dropped_;
+    return Status::would_block;
+  }
+  // Paired with the waiter's fence: either it sees the new write index before sleeping, or this
+  // sees its flag and wakes it. The flag is taken, so a burst of frames costs one wake-up call.
+  std::atomic_thread_fence(std::memory_order_seq_cst);
+  if (out_.waiting.load(std::memory_order_relaxed) != 0U &&
+      out_.waiting.exchange(0U, std::memory_order_relaxed) != 0U) {
+    futex_wake(out_.ring.write_index());
+  }
+  return Status::ok;
+}
+
+Status ThreadCanEndpoint::receive(proto::CanFrame& frame) noexcept {
+  return in_.ring.pop(frame) ? Status::ok : Status::would_block;
+}
+
+Status ThreadCanEndpoint::wait_until_ns(std::int64_t deadline_ns) noexcept {
+  std::atomic<std::uint32_t>& word = in_.ring.write_index();
+  for (;;) {
+    if (!in_.ring.empty()) {
+      return Status::ok;
+    }
+    if (monotonic_ns() >= deadline_ns) {
+      return Status::would_block;
+    }
+    const std::uint32_t seen = word.load(std::memory_order_acquire);
+    in_.waiting.store(1U, std::memory_order_relaxed);
+    std::atomic_thread_fence(std::memory_order_seq_cst);
+    if (in_.ring.empty()) {
+      // Sleeps only while the write index is still `seen`: a push in between returns at once.
+      futex_wait(word, seen, deadline_ns);
+    }
+    in_.waiting.store(0U, std::memory_order_relaxed);
+  }
+}
+
+}  // namespace tread::hal
