@@ -56,7 +56,13 @@ void add_demo_command(CLI::App& app) {
                    "SCHED_FIFO priority 1..99 (0: leave)")
       ->check(CLI::Range(0, 99));
   demo->add_flag("--mlock", settings.realtime.lock_memory, "lock all memory (mlockall)");
-  demo->add_option("--cpu", settings.realtime.cpu, "pin the loop to this CPU");
+  demo->add_option("--cpu", settings.realtime.cpu, "pin the node's thread to this CPU");
+  demo->add_option("--rig-cpu", settings.rig_cpu,
+                   "pin the rig's thread to this CPU (default: another CPU than --cpu's, if set)");
+  demo->add_option("--rig-priority", settings.rig_priority,
+                   "SCHED_FIFO priority of the rig's thread (default: --rt-priority minus 10, at "
+                   "least 1; 0: the default scheduler)")
+      ->check(CLI::Range(0, 99));
   demo->add_flag(
       "--no-plot", [](std::int64_t) { settings.plot = false; }, "write the trace but no plot");
   demo->add_option("--log", settings.log,

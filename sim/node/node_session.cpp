@@ -177,7 +177,12 @@ void print_report(std::ostream& out, const SessionReport& r, bool timing) {
           << static_cast<double>(h.max_ns()) / 1000.0 << " us\n";
       out.unsetf(std::ios::floatfield);
     };
-    row("wake latency     ", r.loop.wake_latency);
+    if (r.loop.wake_latency.count() > 0U) {
+      row("wake latency     ", r.loop.wake_latency);
+    } else {
+      out << "wake latency      - (sync mode: the node wakes on the rig's cycle frame, not on a "
+             "deadline)\n";
+    }
     row("cycle time       ", r.loop.cycle_time);
   }
   out << "frames received   " << c.rx_frames << " (accepted " << c.rx_accepted << ", ignored "

@@ -9,50 +9,21 @@
 
 #include "loop/loop_runner.hpp"
 #include "node/candump_log.hpp"
-#include "node/protocol_socket.hpp"
-#include "posix/posix_clock.hpp"
-#include "rig/scenario_catalogue.hpp"
-#include "socketcan/socketcan_bus.hpp"
+#include "rig/demo_rig.hpp"
+#include "rig/demo_threads.hpp"
 #include "stub/sim_clock.hpp"
 #include "stub/stub_can_bus.hpp"
 
 namespace tread::host {
 namespace {
 
-ScenarioContext context_of(const DemoSettings& s) {
-  ScenarioContext c;
-  c.tir = s.node.tir;
-  c.wheels = s.node.node.wheels;
-  c.wheelsets = s.node.node.wheelsets;
-  c.wheelset_forces = s.node.node.wheelset_forces;
-  c.friction = s.node.friction;
-  c.mu = s.node.mu;
-  c.materials = s.node.materials;
-  c.wheelset_profile = s.node.wheelset_profile;
-  c.wheelset_ymax_mm = s.node.wheelset_ymax_mm;
-  c.wheelset_step_mm = s.node.wheelset_step_mm;
-  c.sweep_duration_s = s.sweep_duration_s;
-  c.period_s = static_cast<double>(s.period_us) * 1e-6;
-  return c;
-}
-
-template <typename ClockT, typename NodeBus, typename RigBus>
-DemoResult co_simulate(const DemoSettings& s, NodeRuntime& runtime, ClockT& clock,
-                       NodeBus& node_bus, RigBus& rig_bus) {
-  const node::NodeConfig& cfg = runtime.config();
-  const ScenarioContext context = context_of(s);
-  const std::vector<std::unique_ptr<RigScenario>> scenarios = make_scenarios(s.scenarios, context);
-  contact::ContactTable contact_reference;
-  RigReference reference;
-  if (cfg.wheels > 0) {
-    reference.tyre = &runtime.tyre_parameters();
-    reference.options = runtime.tyre_options();
-  }
-  if (cfg.wheelsets > 0) {
-    contact_reference = reference_contact_table(context);
-    reference.contact = &contact_reference;
-  }
-
+/// The simulated clock: node and rig in one thread, cycle by cycle, on the in-process stub bus.
+DemoResult co_simulate(const DemoSettings& s, NodeRuntime& runtime) {
+  hal::SimClock clock(0);
+  hal::StubCanNetwork net(&hal::clock_now<hal::SimClock>, &clock);
+  hal::StubCanEndpoint& node_bus = net.endpoint(0);
+  hal::StubCanEndpoint& rig_bus = net.endpoint(1);
+  DemoRig rig(s, runtime);
   CandumpWriter writer;
   CandumpRecorder recorder;
   if (!s.log.empty()) {
@@ -64,45 +35,27 @@ DemoResult co_simulate(const DemoSettings& s, NodeRuntime& runtime, ClockT& cloc
   loop_config.period_ns = s.period_us * 1000;
   return runtime.visit([&](auto& node) {
     hal::LoopRunner loop(node, node_bus, clock, pin, loop_config, recorder);
-    proto::RigLink link(cfg.layout, cfg.wheels, cfg.wheelsets, cfg.wheelset_forces);
-    const double dt_s = static_cast<double>(s.period_us) * 1e-6;
-    std::filesystem::create_directories(s.out_dir);
-
     DemoResult result;
     std::uint32_t rig_cycle = 0;
-    // Outcomes (results, reference runs, traces, plots) after the last cycle, as `tread rig` does.
-    std::vector<std::unique_ptr<ScenarioRunner>> runners;
-    for (auto& scenario : scenarios) {
-      runners.push_back(std::make_unique<ScenarioRunner>(
-          *scenario, link, cfg.layout, cfg.wheels, cfg.wheelsets, reference, cfg.wheelset_forces));
-      ScenarioRunner& runner = *runners.back();
-      while (!runner.done()) {
-        for (const proto::CanFrame& f : runner.begin_cycle(runner.time_s(), rig_cycle++)) {
+    for (auto& runner : rig.runners()) {
+      while (!runner->done()) {
+        for (const proto::CanFrame& f : runner->begin_cycle(runner->time_s(), rig_cycle++)) {
           static_cast<void>(rig_bus.send(f));
         }
         loop.run_periodic_cycle();
-        // The node's answer of this cycle (SocketCAN delivers within microseconds; poll briefly).
         bool answered = false;
-        const std::int64_t give_up = clock.now_ns() + 200'000;
         proto::CanFrame f{};
-        do {
-          while (rig_bus.receive(f) == Status::ok) {
-            answered = runner.on_frame(f) || answered;
-          }
-        } while (!answered && clock.now_ns() < give_up && !std::is_same_v<ClockT, hal::SimClock>);
+        while (rig_bus.receive(f) == Status::ok) {
+          answered = runner->on_frame(f) || answered;
+        }
         result.unanswered_cycles += answered ? 0U : 1U;
-        runner.end_cycle(dt_s);
+        runner->end_cycle(rig.step_s(), answered);
       }
     }
-    for (auto& runner : runners) {
-      ScenarioOutcome o = finish_scenario(*runner, s.out_dir, s.plot);
-      result.answers.add(o.check);
-      result.scenarios.push_back(std::move(o));
-    }
+    // Outcomes (results, reference runs, traces, plots) after the last cycle, as `tread rig` does.
+    rig.finish(s, result);
     result.report.loop = loop.stats();
     result.report.counters = runtime.counters();
-    result.rig_frames_accepted = link.accepted();
-    result.rig_frames_rejected = link.rejected();
     result.report.log_error = writer.finish();
     return result;
   });
@@ -111,34 +64,13 @@ DemoResult co_simulate(const DemoSettings& s, NodeRuntime& runtime, ClockT& cloc
 }  // namespace
 
 DemoResult run_demo(const DemoSettings& s) {
-  NodeRuntime runtime(s.node);
-  const hal::RealtimeReport rt = hal::apply_realtime(s.realtime);
-  std::cerr << rt.messages << std::flush;  // at once, and again in the summary
-  DemoResult result;
-  if (s.can == "stub") {
-    if (s.sim_clock) {
-      hal::SimClock clock(0);
-      hal::StubCanNetwork net(&hal::clock_now<hal::SimClock>, &clock);
-      result = co_simulate(s, runtime, clock, net.endpoint(0), net.endpoint(1));
-    } else {
-      hal::PosixClock clock;
-      hal::StubCanNetwork net(&hal::clock_now<hal::PosixClock>, &clock);
-      result = co_simulate(s, runtime, clock, net.endpoint(0), net.endpoint(1));
-    }
-  } else {
-    if (s.sim_clock) {
-      throw std::runtime_error("--clock sim needs the in-process bus (--can stub)");
-    }
-    // Each end set up as `tread node` and `tread rig` set theirs up: only its incoming messages.
-    hal::SocketCanBus node_bus;
-    hal::SocketCanBus rig_bus;
-    open_protocol_socket(node_bus, s.can, s.node.node.layout, proto::Direction::rig_to_node);
-    open_protocol_socket(rig_bus, s.can, s.node.node.layout, proto::Direction::node_to_rig);
-    hal::PosixClock clock;
-    result = co_simulate(s, runtime, clock, node_bus, rig_bus);
+  if (s.sim_clock && s.can != "stub") {
+    throw std::runtime_error("--clock sim needs the in-process bus (--can stub)");
   }
-  result.report.notes =
-      rt.messages + (runtime.tir_warning().empty() ? "" : "note: " + runtime.tir_warning() + "\n");
+  NodeRuntime runtime(s.node);
+  DemoResult result = s.sim_clock ? co_simulate(s, runtime) : run_demo_threads(s, runtime);
+  result.report.notes +=
+      runtime.tir_warning().empty() ? "" : "note: " + runtime.tir_warning() + "\n";
   return result;
 }
 
@@ -159,6 +91,27 @@ void print_demo(std::ostream& out, const DemoSettings& s, const DemoResult& r) {
   print_report(out, r.report, !s.sim_clock);
   out << "rig frames        " << r.rig_frames_accepted << " accepted, " << r.rig_frames_rejected
       << " rejected; cycles without a complete answer " << r.unanswered_cycles << "\n";
+  if (r.threaded) {
+    const hal::LatencyHistogram& h = r.answer_latency;
+    const bool sync = s.node.node.schedule == node::Schedule::sync;
+    out << (sync ? "CAN-in -> CAN-out" : "deadline -> answer") << " p50 " << h.percentile_us(0.50)
+        << " us, p99 " << h.percentile_us(0.99) << " us, max " << std::fixed << std::setprecision(1)
+        << static_cast<double>(h.max_ns()) / 1000.0 << " us (" << h.count() << " answers; "
+        << (sync ? "the rig's cycle frame to the node's last answer frame"
+                 : "the node's deadline to its last answer frame")
+        << ")\n";
+    out.unsetf(std::ios::floatfield);
+    if (!sync) {
+      out << "late inputs       " << r.late_sends
+          << " cycles whose inputs the rig sent after the node's deadline (not checked)\n";
+    }
+    out << "stray answers     " << r.stray_answers
+        << " (outside a cycle's window, or begun before its inputs reached the node)\n";
+    if (!s.log.empty()) {
+      out << "log ring          " << r.log_records_dropped << " records dropped\n";
+    }
+    out << r.rig_notes;
+  }
   out << std::setprecision(4);
   out << "answers vs the reference (double, on the inputs the node decoded):\n";
   if (s.node.node.wheels > 0) {

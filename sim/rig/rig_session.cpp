@@ -110,7 +110,7 @@ RigReport run_rig(const RigSettings& s) {
         }
       }
       r.late_cycles += answered ? 0U : 1U;
-      runner.end_cycle(dt_s);
+      runner.end_cycle(dt_s, answered);
       deadline += period_ns;
       const std::int64_t now = clock.now_ns();
       if (deadline > now) {

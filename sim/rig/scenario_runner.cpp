@@ -15,6 +15,7 @@ namespace tread::host {
 void AnswerCheck::add(const AnswerCheck& other) {
   answers_checked += other.answers_checked;
   stale_answers += other.stale_answers;
+  unchecked_cycles += other.unchecked_cycles;
   max_force_error_n = std::max(max_force_error_n, other.max_force_error_n);
   max_moment_error_nm = std::max(max_moment_error_nm, other.max_moment_error_nm);
   max_delta_r_error_mm = std::max(max_delta_r_error_mm, other.max_delta_r_error_mm);
@@ -94,8 +95,9 @@ bool ScenarioRunner::on_frame(const proto::CanFrame& frame) {
   return (received_mask_ & expected_mask_) == expected_mask_;
 }
 
-void ScenarioRunner::end_cycle(double dt_s) {
-  for (std::size_t i = 0; i < wheels_ && reference_.tyre != nullptr; ++i) {
+void ScenarioRunner::end_cycle(double dt_s, bool answered) {
+  check_.unchecked_cycles += answered ? 0U : 1U;
+  for (std::size_t i = 0; i < wheels_ && answered && reference_.tyre != nullptr; ++i) {
     const proto::WheelOutput& w = answers_.wheels[i];
     if (w.status != 0U) {
       check_.stale_answers += (w.status & proto::kStatusStale) != 0U ? 1U : 0U;
@@ -111,7 +113,7 @@ void ScenarioRunner::end_cycle(double dt_s) {
         std::max(check_.max_moment_error_nm, std::abs(static_cast<double>(w.mz_nm) - ref.mz_nm));
     check_.max_force_n = std::max({check_.max_force_n, std::abs(ref.fx_n), std::abs(ref.fy_n)});
   }
-  for (std::size_t j = 0; j < wheelsets_ && reference_.contact != nullptr; ++j) {
+  for (std::size_t j = 0; j < wheelsets_ && answered && reference_.contact != nullptr; ++j) {
     const proto::WheelsetOutput& w = answers_.wheelsets[j];
     if (w.status != 0U) {
       check_.stale_answers += (w.status & proto::kStatusStale) != 0U ? 1U : 0U;
@@ -178,6 +180,9 @@ void print_scenario_outcome(std::ostream& out, const ScenarioOutcome& o) {
   out << "   " << o.cycles << " cycles; " << o.check.answers_checked
       << " answers checked against the reference";
   if (o.check.stale_answers > 0) out << " (" << o.check.stale_answers << " stale)";
+  if (o.check.unchecked_cycles > 0) {
+    out << "; " << o.check.unchecked_cycles << " cycles without an answer in time (not checked)";
+  }
   out << "\n";
   for (const ScenarioMetric& m : o.metrics) {
     out << "   " << std::left << std::setw(36) << m.name << std::right << std::setw(11)

@@ -29,6 +29,9 @@ struct RigReference {
 struct AnswerCheck {
   std::uint64_t answers_checked{0};  ///< wheel and wheelset answers compared
   std::uint64_t stale_answers{0};    ///< answers flagged stale (zeros), not compared
+  /// Cycles without this cycle's answer (none came in time, or the inputs reached the node after
+  /// its deadline, so that its answer is of older inputs): not compared.
+  std::uint64_t unchecked_cycles{0};
   double max_force_error_n{0.0};
   double max_moment_error_nm{0.0};
   double max_delta_r_error_mm{0.0};
@@ -52,8 +55,10 @@ class ScenarioRunner {
   /// every output message the node sends for the configured channels has arrived since the last
   /// NodeStatus (which the node sends first) after begin_cycle().
   bool on_frame(const proto::CanFrame& frame);
-  /// Checks the answers, advances the scenario by `dt_s` and appends the trace row.
-  void end_cycle(double dt_s);
+  /// Checks the answers (when `answered`: this cycle's answer came, computed on this cycle's
+  /// inputs; else the cycle is counted as unchecked), advances the scenario by `dt_s` with the
+  /// last answers the rig has and appends the trace row.
+  void end_cycle(double dt_s, bool answered = true);
 
   [[nodiscard]] bool done() const {
     return t_s_ >= scenario_.duration_s() - 1e-9 || scenario_.finished();
