@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "core/status.hpp"
+#include "hal_concepts.hpp"
 
 struct gpiod_chip;
 struct gpiod_line;
@@ -38,5 +39,7 @@ class GpiodPin {
   gpiod_line* line_{nullptr};
   std::string error_;
 };
+
+static_assert(OutputPin<GpiodPin>);
 
 }  // namespace tread::hal

@@ -4,6 +4,7 @@
 #include <cstdint>
 
 #include "core/status.hpp"
+#include "hal_concepts.hpp"
 
 namespace tread::hal {
 
@@ -14,5 +15,7 @@ class PosixClock {
   /// @retval Status::io_error  clock_nanosleep failed otherwise
   Status sleep_until_ns(std::int64_t deadline_ns) noexcept;
 };
+
+static_assert(Clock<PosixClock>);
 
 }  // namespace tread::hal

@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "core/status.hpp"
+#include "hal_concepts.hpp"
 
 namespace tread::hal {
 
@@ -43,5 +44,13 @@ class FakeGpio {
   std::size_t count_{0};
   bool level_{false};
 };
+
+namespace detail {
+struct FakeGpioCheckClock {
+  std::int64_t now_ns() const noexcept { return 0; }
+  Status sleep_until_ns(std::int64_t /*deadline_ns*/) noexcept { return Status::ok; }
+};
+}  // namespace detail
+static_assert(OutputPin<FakeGpio<detail::FakeGpioCheckClock>>);
 
 }  // namespace tread::hal

@@ -4,6 +4,7 @@
 #include <cstdint>
 
 #include "core/status.hpp"
+#include "hal_concepts.hpp"
 
 namespace tread::hal {
 
@@ -29,5 +30,7 @@ class SimClock {
   std::int64_t now_ns_;
   std::int64_t wake_latency_ns_{0};
 };
+
+static_assert(Clock<SimClock>);
 
 }  // namespace tread::hal

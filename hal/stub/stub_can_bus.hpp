@@ -9,6 +9,7 @@
 #include <cstdint>
 
 #include "core/status.hpp"
+#include "hal_concepts.hpp"
 #include "proto/can_frame.hpp"
 
 namespace tread::hal {
@@ -104,5 +105,7 @@ template <typename ClockT>
 std::int64_t clock_now(const void* clock) {
   return static_cast<const ClockT*>(clock)->now_ns();
 }
+
+static_assert(CanBus<StubCanEndpoint>);
 
 }  // namespace tread::hal

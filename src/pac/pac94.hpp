@@ -76,4 +76,10 @@ PacOutput<T> pac94_eval(const PacParams<T>& p, const PacInput<T>& in, Slip slip)
   return detail::evaluate<Pac94>(p, in, slip);
 }
 
+// float and double are compiled once, in the core (pac.cpp), with the core's flags: every program
+// runs those, whatever its own build.
+extern template PacOutput<float> pac94_eval(const PacParams<float>&, const PacInput<float>&, Slip);
+extern template PacOutput<double> pac94_eval(const PacParams<double>&, const PacInput<double>&,
+                                             Slip);
+
 }  // namespace tread::pac
