@@ -14,7 +14,7 @@
 #include "mf/input_table.hpp"
 #include "plot/gnuplot.hpp"
 #include "tir/pac_coefficients.hpp"
-#include "tir/pac_csv.hpp"
+#include "mf/pac_csv.hpp"
 #include "tir/pac_plot.hpp"
 #include "tir/tir_file.hpp"
 #include "tir/tir_model.hpp"

@@ -1,5 +1,7 @@
 #include "contact/contact_setup.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -40,6 +42,61 @@ double parse_cant_rad(const std::string& text) {
   }
   throw std::invalid_argument("--cant '" + text +
                               "': expected 1:N with N of 5 or more (e.g. 1:40), none or 0");
+}
+
+namespace {
+
+/// The keys of a wheelset-profile spec and what each sets: one table for the parser and its
+/// messages.
+struct SpecKey {
+  const char* key;
+  void (*set)(ContactSetup& setup, const std::string& value);
+};
+
+constexpr std::array kSpecKeys{
+    SpecKey{"wheel", [](ContactSetup& c, const std::string& v) { c.wheel_spec = v; }},
+    SpecKey{"wheel-file", [](ContactSetup& c, const std::string& v) { c.wheel_file = v; }},
+    SpecKey{"wheel-right-file",
+            [](ContactSetup& c, const std::string& v) { c.wheel_right_file = v; }},
+    SpecKey{"rail", [](ContactSetup& c, const std::string& v) { c.rail_spec = v; }},
+    SpecKey{"rail-file", [](ContactSetup& c, const std::string& v) { c.rail_file = v; }},
+    SpecKey{"rail-frame", [](ContactSetup& c, const std::string& v) { c.rail_frame = v; }},
+    SpecKey{"cant", [](ContactSetup& c, const std::string& v) { c.cant = v; }},
+    SpecKey{"gauge",
+            [](ContactSetup& c, const std::string& v) { c.gauge_mm = profile::finite_number(v); }},
+    SpecKey{"b2b", [](ContactSetup& c,
+                      const std::string& v) { c.back_to_back_mm = profile::finite_number(v); }},
+    SpecKey{"r0",
+            [](ContactSetup& c, const std::string& v) { c.r0_mm = profile::finite_number(v); }},
+    SpecKey{"r0-right", [](ContactSetup& c, const std::string& v) {
+              c.r0_right_mm = profile::finite_number(v);
+            }}};
+
+}  // namespace
+
+ContactSetup parse_wheelset_profile(const std::string& spec) {
+  ContactSetup setup;
+  std::stringstream items(spec);
+  std::string item;
+  while (std::getline(items, item, ',')) {
+    const auto eq = item.find('=');
+    if (eq == std::string::npos) {
+      throw std::invalid_argument("--wheelset-profile: '" + item + "' is not key=value");
+    }
+    const std::string key = item.substr(0, eq);
+    const std::string value = item.substr(eq + 1);
+    const auto* k = std::find_if(kSpecKeys.begin(), kSpecKeys.end(),
+                                 [&key](const SpecKey& s) { return key == s.key; });
+    try {
+      if (k == kSpecKeys.end()) {
+        throw std::invalid_argument("unknown key");
+      }
+      k->set(setup, value);
+    } catch (const std::logic_error& e) {
+      throw std::invalid_argument("--wheelset-profile: bad '" + item + "' (" + e.what() + ")");
+    }
+  }
+  return setup;
 }
 
 profile::WheelParameters parse_wheel_spec(const std::string& spec) {

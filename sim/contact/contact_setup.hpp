@@ -33,6 +33,12 @@ struct ContactSetup {
   double smooth_half_window_mm = 0.0;  ///< local quadratic smoothing of the profiles (0 = off)
 };
 
+/// Parses a wheel/rail pair given as one "key=value,..." spec (the node's and the demo's
+/// --wheelset-profile, the LUT generator's pairs) into a ContactSetup. The keys are those of the
+/// `tread contact` options: wheel, wheel-file, wheel-right-file, rail, rail-file, rail-frame, cant,
+/// gauge, b2b, r0, r0-right. Throws std::invalid_argument naming the item.
+ContactSetup parse_wheelset_profile(const std::string& spec);
+
 /// A built-in wheel: "S1002", "EPS" or "1/40", optionally ":h=28,e=32.5,slope=1:15,width=140,
 /// chamfer=1". Throws std::invalid_argument naming the bad part.
 profile::WheelParameters parse_wheel_spec(const std::string& spec);

@@ -6,7 +6,6 @@
 #include <stdexcept>
 
 #include "contact/contact_setup.hpp"
-#include "node/node_runtime.hpp"
 #include "profile/wheel_profile.hpp"
 
 namespace tread::host {
@@ -92,7 +91,8 @@ RadiusTableData make_radius_table(const std::string& wheel_spec, double max_erro
 }
 
 ContactTableData make_contact_table(const std::string& pair_spec, double ymax_mm, double step_mm) {
-  const contact::RigidContact contact = contact::build_contact(parse_wheelset_profile(pair_spec));
+  const contact::RigidContact contact =
+      contact::build_contact(contact::parse_wheelset_profile(pair_spec));
   return {pair_spec, contact.table(-ymax_mm, ymax_mm, step_mm)};
 }
 

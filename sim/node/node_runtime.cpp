@@ -1,58 +1,12 @@
 #include "node/node_runtime.hpp"
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
 #include "mf/mf_fixed.hpp"
 #include "mf/mf_parameters_from_tir.hpp"
-#include "profile/text_line.hpp"
 
 namespace tread::host {
-
-contact::ContactSetup parse_wheelset_profile(const std::string& spec) {
-  contact::ContactSetup setup;
-  std::stringstream items(spec);
-  std::string item;
-  while (std::getline(items, item, ',')) {
-    const auto eq = item.find('=');
-    if (eq == std::string::npos) {
-      throw std::invalid_argument("--wheelset-profile: '" + item + "' is not key=value");
-    }
-    const std::string key = item.substr(0, eq);
-    const std::string value = item.substr(eq + 1);
-    try {
-      if (key == "wheel") {
-        setup.wheel_spec = value;
-      } else if (key == "wheel-file") {
-        setup.wheel_file = value;
-      } else if (key == "wheel-right-file") {
-        setup.wheel_right_file = value;
-      } else if (key == "rail") {
-        setup.rail_spec = value;
-      } else if (key == "rail-file") {
-        setup.rail_file = value;
-      } else if (key == "rail-frame") {
-        setup.rail_frame = value;
-      } else if (key == "cant") {
-        setup.cant = value;
-      } else if (key == "gauge") {
-        setup.gauge_mm = profile::finite_number(value);
-      } else if (key == "b2b") {
-        setup.back_to_back_mm = profile::finite_number(value);
-      } else if (key == "r0") {
-        setup.r0_mm = profile::finite_number(value);
-      } else if (key == "r0-right") {
-        setup.r0_right_mm = profile::finite_number(value);
-      } else {
-        throw std::invalid_argument("unknown key");
-      }
-    } catch (const std::logic_error& e) {
-      throw std::invalid_argument("--wheelset-profile: bad '" + item + "' (" + e.what() + ")");
-    }
-  }
-  return setup;
-}
 
 void NodeRuntime::build_forces(const contact::RigidContact& contact, const NodeSettings& settings,
                                double y_first_mm, double y_last_mm, double step_mm) {

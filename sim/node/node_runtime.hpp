@@ -46,9 +46,7 @@ struct NodeSettings {
   contact::ContactMaterials materials{};
 };
 
-/// Parses a --wheelset-profile spec into a ContactSetup; throws std::invalid_argument naming the
-/// key.
-contact::ContactSetup parse_wheelset_profile(const std::string& spec);
+using contact::parse_wheelset_profile;  // the --wheelset-profile spec (contact/contact_setup.hpp)
 
 using RuntimeNode =
     node::Node<node::MfTyreChannel, node::ContactTableChannel, node::RailForceTableChannel>;

@@ -8,7 +8,6 @@
 #include "contact/contact_setup.hpp"
 #include "contact/equivalent_conicity.hpp"
 #include "contact/klingel.hpp"
-#include "node/node_runtime.hpp"
 #include "plot/gnuplot.hpp"
 
 namespace tread::host {
@@ -18,7 +17,7 @@ HuntingScenario::HuntingScenario(const HuntingSettings& settings) : settings_(se
     throw std::runtime_error("hunting: needs 1.." + std::to_string(proto::kMaxWheelsets) +
                              " wheelsets");
   }
-  const contact::ContactSetup setup = parse_wheelset_profile(settings_.wheelset_profile);
+  const contact::ContactSetup setup = contact::parse_wheelset_profile(settings_.wheelset_profile);
   reference_ =
       contact::build_contact(setup).table(-settings_.ymax_mm, settings_.ymax_mm, settings_.step_mm);
   WheelsetHuntingParams p;

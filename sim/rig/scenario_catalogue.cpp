@@ -3,7 +3,6 @@
 #include <stdexcept>
 
 #include "contact/contact_setup.hpp"
-#include "node/node_runtime.hpp"
 #include "rig/curving_scenario.hpp"
 #include "rig/dynamic_hunting_scenario.hpp"
 #include "rig/hunting_scenario.hpp"
@@ -99,7 +98,7 @@ std::vector<std::unique_ptr<RigScenario>> make_scenarios(const std::vector<std::
 }
 
 contact::ContactTable reference_contact_table(const ScenarioContext& context) {
-  return contact::build_contact(parse_wheelset_profile(context.wheelset_profile))
+  return contact::build_contact(contact::parse_wheelset_profile(context.wheelset_profile))
       .table(-context.wheelset_ymax_mm, context.wheelset_ymax_mm, context.wheelset_step_mm);
 }
 

@@ -6,7 +6,6 @@
 #include <numbers>
 
 #include "contact/contact_setup.hpp"
-#include "node/node_runtime.hpp"
 
 namespace tread::host {
 
@@ -25,7 +24,7 @@ WheelsetContactModel::WheelsetContactModel(const contact::RigidContact& contact,
       flange_(flange) {}
 
 contact::RigidContact build_wheelset_contact(const WheelsetForceSetup& setup) {
-  return contact::build_contact(parse_wheelset_profile(setup.wheelset_profile));
+  return contact::build_contact(contact::parse_wheelset_profile(setup.wheelset_profile));
 }
 
 rail::Vector2<double> generalised_force(const proto::RailWheelOutput& left,

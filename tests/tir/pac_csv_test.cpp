@@ -1,6 +1,6 @@
 // CSV evaluation of PAC89/PAC94: values equal direct calls (double, float, ISO-W), extra columns
 // ignored, and input errors name file and line.
-#include "tir/pac_csv.hpp"
+#include "mf/pac_csv.hpp"
 
 #include <gtest/gtest.h>
 

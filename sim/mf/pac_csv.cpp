@@ -1,4 +1,4 @@
-#include "tir/pac_csv.hpp"
+#include "mf/pac_csv.hpp"
 
 #include <array>
 #include <cmath>

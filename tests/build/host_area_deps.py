@@ -1,0 +1,71 @@
+#!/usr/bin/env python3
+"""host_area_deps.py SIM_DIR AREA:DEP,DEP ... — the sim/ areas include only what they declare.
+
+Each argument names an area (a folder of sim/) and the areas it declares in sim/*/CMakeLists.txt
+(tread_host_area(... DEPS ...)). Fails, naming file and line, when a file of an area includes a
+header of another area that its area does not declare; when the declared graph has a cycle; or
+when a folder of sim/ with sources is not a declared area.
+"""
+import pathlib
+import re
+import sys
+
+INCLUDE = re.compile(r'^\s*#\s*include\s+"([a-z_0-9]+)/[^"]+"')
+
+
+def main() -> int:
+    sim = pathlib.Path(sys.argv[1])
+    declared = {}
+    for arg in sys.argv[2:]:
+        name, _, deps = arg.partition(":")
+        declared[name] = {d for d in deps.split(",") if d}
+    problems = []
+
+    for folder in sorted(p for p in sim.iterdir() if p.is_dir()):
+        if any(folder.glob("*.cpp")) and folder.name not in declared:
+            problems.append(f"sim/{folder.name}: sources, but not a declared area")
+
+    for area, deps in sorted(declared.items()):
+        for dep in sorted(deps):
+            if dep not in declared:
+                problems.append(f"sim/{area}: declares '{dep}', which is not an area")
+        for path in sorted((sim / area).glob("*.[ch]pp")):
+            for number, line in enumerate(path.read_text().splitlines(), 1):
+                m = INCLUDE.match(line)
+                if not m:
+                    continue
+                other = m.group(1)
+                header = line.split('"')[1]
+                if other == area or other not in declared or not (sim / header).is_file():
+                    continue  # its own area, or a core/HAL header (src/, hal/)
+                if other not in deps:
+                    problems.append(
+                        f"sim/{area}/{path.name}:{number}: includes {header}, but {area} does not "
+                        f"depend on {other} (declared: {', '.join(sorted(deps)) or 'none'})")
+
+    # Cycles in the declared graph (depth-first search, grey/black colouring).
+    state = {}
+
+    def visit(node, trail):
+        state[node] = "grey"
+        for nxt in sorted(declared.get(node, ())):
+            if state.get(nxt) == "grey":
+                cycle = trail[trail.index(nxt):] + [nxt] if nxt in trail else [node, nxt]
+                problems.append("cycle between areas: " + " -> ".join(cycle))
+            elif nxt not in state:
+                visit(nxt, trail + [nxt])
+        state[node] = "black"
+
+    for node in sorted(declared):
+        if node not in state:
+            visit(node, [node])
+
+    for p in problems:
+        print(p)
+    print(f"{len(declared)} areas, {sum(len(d) for d in declared.values())} declared dependencies: "
+          f"{'ok' if not problems else f'{len(problems)} problem(s)'}")
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
