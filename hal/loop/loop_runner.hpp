@@ -1,15 +1,13 @@
 #pragma once
 // Drives a node::Node over the HAL: per cycle drain RX → node.receive → node.compute → TX → cycle
 // pin.
-//   periodic: own schedule on absolute deadlines (start + k·period; no drift). A cycle that ends
-//   past
-//             the next deadline is an overrun: counted, the missed deadlines are skipped (no
-//             burst).
-//   sync:     compute when the rig's cycle frame arrives; if none arrives for the input timeout,
-//   compute
-//             anyway so stale channels report zeros. On a bus that can block until a frame arrives
-//             (hal::WaitableCanBus: SocketCAN, the thread link) the loop sleeps until then; on
-//             others it polls every sync_poll_ns.
+//   periodic: own schedule on absolute deadlines (start + k·period; no drift). A cycle that
+//             ends past the next deadline is an overrun: counted, the missed deadlines are
+//             skipped (no burst).
+//   sync:     compute when the rig's cycle frame arrives; if none arrives for the input
+//             timeout, compute anyway so stale channels report zeros. On a bus that can block
+//             until a frame arrives (hal::WaitableCanBus: SocketCAN, the thread link) the loop
+//             sleeps until then; on others it polls every sync_poll_ns.
 // The node sees the nominal cycle time (the deadline) in periodic mode and the wake time in sync
 // mode: in periodic mode a recorded run is therefore replayable bit for bit.
 // Header-only, templated on hal concepts; no heap.

@@ -3,11 +3,9 @@
 // without a file system. The generated header needs only <cstddef> and <string_view> (usable in a
 // freestanding, no-heap build) and contains:
 //
-//   namespace tread::tir {                          // defined once (guarded by
-//   TREAD_TIR_TABLE_TYPES) struct TirEntry { std::string_view section, key; bool is_number; double
-//   number;
-//                     std::string_view text; };     // text = quoted content or the token as
-//                     written
+//   namespace tread::tir {      // defined once (guarded by TREAD_TIR_TABLE_TYPES)
+//   struct TirEntry { std::string_view section, key; bool is_number; double number;
+//                     std::string_view text; };     // text: quoted content or token as written
 //   struct TirTableRow { std::string_view section; std::string_view row; };
 //   constexpr const TirEntry* find_entry(entries, section, key);   // ASCII case-insensitive
 //   constexpr double number_or(entries, section, key, fallback);

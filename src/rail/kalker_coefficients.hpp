@@ -3,8 +3,9 @@
 // area (Kalker 1967; table E.3 of Kalker, "Three-dimensional elastic bodies in rolling contact",
 // 1990). With c = sqrt(a b) and G the combined shear modulus, the linear creep forces on the wheel
 // are
-//     Fx = -G c^2 C11 xi,   Fy = -G c^2 C22 eta - G c^3 C23 phi,   Mz = G c^3 C23 eta - G c^4 C33
-//     phi
+//     Fx = -G c^2 C11 xi
+//     Fy = -G c^2 C22 eta - G c^3 C23 phi
+//     Mz =  G c^3 C23 eta - G c^4 C33 phi
 // (xi, eta: longitudinal and lateral creepage; phi: spin creepage in 1/length).
 //
 // The table gives C11, C22, C23, C33 at a/b = 0.1 ... 1 and b/a = 0.1 ... 1 in steps of 0.1, each
