@@ -4,8 +4,8 @@
 //
 // Grammar accepted by read_tir()/parse_tir():
 //   - `[NAME]` starts a section (optionally followed by a comment). Sections may come in any
-//     order and the same name may appear more than once (Chrono's FEDA file repeats [DEFLECTION_LOAD_CURVE]);
-//     lookups search every section of that name in file order.
+//     order and the same name may appear more than once (Chrono's FEDA file repeats
+//     [DEFLECTION_LOAD_CURVE]); lookups search every section of that name in file order.
 //   - `KEY = value` with KEY = [A-Za-z_][A-Za-z0-9_]*; value is a quoted string ('...' or "...", no
 //     escapes) or an unquoted token (number, or bare word) up to the comment/end of line.
 //   - Comments start with `$` or `!` (whole line or trailing, outside quotes).
