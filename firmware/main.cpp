@@ -152,8 +152,14 @@ int main() {
     c = firmware::ContactChannel(firmware::contact_table());
   }
   const node::NodeConfig config{
-      options.fd ? proto::Layout::fd : proto::Layout::classic,        4,    2, 10'000'000,
-      options.sync ? node::Schedule::sync : node::Schedule::periodic, true, 3};
+      .layout = options.fd ? proto::Layout::fd : proto::Layout::classic,
+      .wheels = 4,
+      .wheelsets = 2,
+      .input_timeout_ns = 10'000'000,
+      .schedule = options.sync ? node::Schedule::sync : node::Schedule::periodic,
+      .start_enabled = true,
+      .e2e_max_delta = 3,
+  };
   static node::Node<firmware::TyreChannel, firmware::ContactChannel> node(config, tyres, contacts);
   hal::SysTickCounter counter;
   counter.start();

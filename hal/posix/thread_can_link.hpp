@@ -58,6 +58,7 @@ class ThreadCanLink {
 
   /// 0 or 1: what one end sends, the other receives.
   [[nodiscard]] ThreadCanEndpoint& endpoint(std::size_t index) noexcept {
+    TREAD_ASSERT(index < 2U);
     return index == 0U ? a_ : b_;
   }
 

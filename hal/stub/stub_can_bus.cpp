@@ -46,6 +46,7 @@ StubCanNetwork::StubCanNetwork(NowFn now, const void* context) noexcept
 }
 
 StubCanEndpoint& StubCanNetwork::endpoint(std::size_t index) noexcept {
+  TREAD_ASSERT(index < kStubEndpoints);
   return endpoints_[index < kStubEndpoints ? index : kStubEndpoints - 1U];
 }
 

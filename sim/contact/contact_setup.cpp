@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "contact/profile_function.hpp"
+#include "io/text_line.hpp"
 #include "profile/profile_file.hpp"
 #include "profile/rail_profile.hpp"
-#include "profile/text_line.hpp"
 #include "profile/wheel_profile.hpp"
 
 namespace tread::contact {
@@ -62,14 +62,14 @@ constexpr std::array kSpecKeys{
     SpecKey{"rail-file", [](ContactSetup& c, const std::string& v) { c.rail_file = v; }},
     SpecKey{"rail-frame", [](ContactSetup& c, const std::string& v) { c.rail_frame = v; }},
     SpecKey{"cant", [](ContactSetup& c, const std::string& v) { c.cant = v; }},
-    SpecKey{"gauge",
-            [](ContactSetup& c, const std::string& v) { c.gauge_mm = profile::finite_number(v); }},
+    SpecKey{"gauge", [](ContactSetup& c,
+                        const std::string& v) { c.gauge_mm = host::text::finite_number(v); }},
     SpecKey{"b2b", [](ContactSetup& c,
-                      const std::string& v) { c.back_to_back_mm = profile::finite_number(v); }},
+                      const std::string& v) { c.back_to_back_mm = host::text::finite_number(v); }},
     SpecKey{"r0",
-            [](ContactSetup& c, const std::string& v) { c.r0_mm = profile::finite_number(v); }},
+            [](ContactSetup& c, const std::string& v) { c.r0_mm = host::text::finite_number(v); }},
     SpecKey{"r0-right", [](ContactSetup& c, const std::string& v) {
-              c.r0_right_mm = profile::finite_number(v);
+              c.r0_right_mm = host::text::finite_number(v);
             }}};
 
 }  // namespace
@@ -115,13 +115,13 @@ profile::WheelParameters parse_wheel_spec(const std::string& spec) {
       const std::string value = item.substr(eq + 1);
       try {
         if (key == "h") {
-          p.flange_height_mm = profile::finite_number(value);
+          p.flange_height_mm = host::text::finite_number(value);
         } else if (key == "e") {
-          p.flange_thickness_mm = profile::finite_number(value);
+          p.flange_thickness_mm = host::text::finite_number(value);
         } else if (key == "slope") {
           p.outer_slope = profile::parse_outer_slope(value);
         } else if (key == "width") {
-          p.width_mm = profile::finite_number(value);
+          p.width_mm = host::text::finite_number(value);
         } else if (key == "chamfer") {
           p.chamfer = value != "0" && value != "no" && value != "false";
         } else {

@@ -13,18 +13,13 @@
 #include <stdexcept>
 #include <utility>
 
+#include "io/text_line.hpp"
+
 namespace tread::fit {
 namespace {
 
-[[noreturn]] void fail(const std::string& name, std::size_t line, const std::string& message) {
-  throw std::runtime_error(name + ":" + std::to_string(line) + ": " + message);
-}
-
 std::string trim(const std::string& s) {
-  std::size_t b = 0, e = s.size();
-  while (b < e && std::isspace(static_cast<unsigned char>(s[b])) != 0) ++b;
-  while (e > b && std::isspace(static_cast<unsigned char>(s[e - 1])) != 0) --e;
-  return s.substr(b, e - b);
+  return std::string(host::text::trim_blanks(s));
 }
 
 std::string upper(std::string s) {
@@ -100,7 +95,7 @@ bool is_output(Field f) {
 void check_has_output(const std::map<Field, std::size_t>& columns, const std::string& name,
                       std::size_t line, const char* what) {
   if (columns.count(Field::fx) + columns.count(Field::fy) + columns.count(Field::mz) == 0) {
-    fail(name, line, std::string("no measured ") + what);
+    host::text::fail_at(name, line, std::string("no measured ") + what);
   }
 }
 
@@ -172,20 +167,22 @@ MeasurementSet read_measurement_csv(std::istream& in, const std::string& name,
         const std::optional<CsvColumn> c = csv_column(cells[i], convention);
         if (!c) continue;
         if (!columns.emplace(c->field, i).second) {
-          fail(name, line, "repeated column '" + trim(cells[i]) + "'");
+          host::text::fail_at(name, line, "repeated column '" + trim(cells[i]) + "'");
         }
         factors[c->field] = c->factor;
       }
-      if (columns.count(Field::fz) == 0) fail(name, line, "missing column 'Fz_N'");
-      if (columns.count(Field::kappa) == 0) fail(name, line, "missing column 'kappa'");
-      if (columns.count(Field::alpha) == 0) fail(name, line, "missing column 'alpha_rad'");
+      if (columns.count(Field::fz) == 0) host::text::fail_at(name, line, "missing column 'Fz_N'");
+      if (columns.count(Field::kappa) == 0)
+        host::text::fail_at(name, line, "missing column 'kappa'");
+      if (columns.count(Field::alpha) == 0)
+        host::text::fail_at(name, line, "missing column 'alpha_rad'");
       check_has_output(columns, name, line, "column (Fx_N, Fy_N or Mz_Nm)");
       continue;
     }
     if (cells.size() != header_cells) {
-      fail(name, line,
-           "expected " + std::to_string(header_cells) + " cells, found " +
-               std::to_string(cells.size()));
+      host::text::fail_at(name, line,
+                          "expected " + std::to_string(header_cells) + " cells, found " +
+                              std::to_string(cells.size()));
     }
     MeasurementPoint p;
     p.line = line;
@@ -194,19 +191,20 @@ MeasurementSet read_measurement_csv(std::istream& in, const std::string& name,
       if (is_output(field) && trim(cell).empty()) continue;  // not measured here
       const std::optional<double> v = parse_number(cell);
       if (!v)
-        fail(name, line,
-             "cell " + std::to_string(index + 1) + " '" + trim(cell) + "' is not a finite number");
+        host::text::fail_at(
+            name, line,
+            "cell " + std::to_string(index + 1) + " '" + trim(cell) + "' is not a finite number");
       const double si = *v * factors[field];
       if (!std::isfinite(si)) {
-        fail(name, line,
-             "cell " + std::to_string(index + 1) + " '" + trim(cell) +
-                 "' is out of range once converted to SI units");
+        host::text::fail_at(name, line,
+                            "cell " + std::to_string(index + 1) + " '" + trim(cell) +
+                                "' is out of range once converted to SI units");
       }
       set_field(p, field, si);
     }
     set.points.push_back(p);
   }
-  if (!have_header) fail(name, line, "no header row");
+  if (!have_header) host::text::fail_at(name, line, "no header row");
   return set;
 }
 
@@ -242,8 +240,10 @@ MeasurementSet read_tydex(std::istream& in, const std::string& name) {
       } else if (key == "**MEASURDATA") {
         section = Section::data;
         seen_data = true;
-        if (channels.empty()) fail(name, line, "**MEASURDATA before any **MEASURCHANNELS");
-        if (columns.count(Field::fz) == 0) fail(name, channels_line, "missing channel FZW");
+        if (channels.empty())
+          host::text::fail_at(name, line, "**MEASURDATA before any **MEASURCHANNELS");
+        if (columns.count(Field::fz) == 0)
+          host::text::fail_at(name, channels_line, "missing channel FZW");
         check_has_output(columns, name, channels_line, "channel (FXW, FYW or MZW)");
       } else {
         section = Section::other;
@@ -255,15 +255,16 @@ MeasurementSet read_tydex(std::istream& in, const std::string& name) {
     if (section == Section::channels) {
       // name, description (may hold spaces), unit, factor, measurement offset, physical offset
       if (tokens.size() < 5)
-        fail(name, line,
-             "channel line needs name, description, unit, factor, "
-             "offsets");
+        host::text::fail_at(name, line,
+                            "channel line needs name, description, unit, factor, "
+                            "offsets");
       Channel c;
       const std::size_t n = tokens.size();
       const auto f = parse_number(tokens[n - 3]);
       const auto mo = parse_number(tokens[n - 2]);
       const auto po = parse_number(tokens[n - 1]);
-      if (!f || !mo || !po) fail(name, line, "channel factor/offsets are not numbers");
+      if (!f || !mo || !po)
+        host::text::fail_at(name, line, "channel factor/offsets are not numbers");
       c.factor = *f;
       c.meas_offset = *mo;
       c.phys_offset = *po;
@@ -283,19 +284,19 @@ MeasurementSet read_tydex(std::istream& in, const std::string& name) {
         } else if (u == "RAD" || u == "N" || u == "NM" || u == "M/S" || u == "-" || u == "1") {
           c.scale = 1.0;
         } else {
-          fail(name, line, "unknown unit '" + unit + "' of channel " + channel);
+          host::text::fail_at(name, line, "unknown unit '" + unit + "' of channel " + channel);
         }
         c.field = it->second;
         if (!columns.emplace(it->second, channels.size()).second) {
-          fail(name, line, "repeated channel " + channel);
+          host::text::fail_at(name, line, "repeated channel " + channel);
         }
       }
       channels.push_back(c);
     } else if (section == Section::data) {
       if (tokens.size() != channels.size()) {
-        fail(name, line,
-             "expected " + std::to_string(channels.size()) + " values, found " +
-                 std::to_string(tokens.size()));
+        host::text::fail_at(name, line,
+                            "expected " + std::to_string(channels.size()) + " values, found " +
+                                std::to_string(tokens.size()));
       }
       MeasurementPoint p;
       p.line = line;
@@ -304,20 +305,22 @@ MeasurementSet read_tydex(std::istream& in, const std::string& name) {
         if (!c.field) continue;
         const std::optional<double> v = parse_number(tokens[i]);
         if (!v)
-          fail(name, line,
-               "value " + std::to_string(i + 1) + " '" + tokens[i] + "' is not a finite number");
+          host::text::fail_at(
+              name, line,
+              "value " + std::to_string(i + 1) + " '" + tokens[i] + "' is not a finite number");
         const double si = ((*v - c.meas_offset) * c.factor + c.phys_offset) * c.scale;
         if (!std::isfinite(si)) {
-          fail(name, line,
-               "value " + std::to_string(i + 1) + " '" + tokens[i] +
-                   "' is out of range once the channel's factor, offsets and unit are applied");
+          host::text::fail_at(
+              name, line,
+              "value " + std::to_string(i + 1) + " '" + tokens[i] +
+                  "' is out of range once the channel's factor, offsets and unit are applied");
         }
         set_field(p, *c.field, si);
       }
       set.points.push_back(p);
     }
   }
-  if (!seen_data) fail(name, line, "no **MEASURDATA section");
+  if (!seen_data) host::text::fail_at(name, line, "no **MEASURDATA section");
   return set;
 }
 

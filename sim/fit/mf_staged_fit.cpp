@@ -17,18 +17,14 @@
 #include "fit/mf_combined_fit.hpp"
 #include "fit/mf_lateral_fit.hpp"
 #include "fit/mf_longitudinal_fit.hpp"
+#include "io/text_line.hpp"
 #include "plot/gnuplot.hpp"
 #include "tir/tir_units.hpp"
 
 namespace tread::fit {
 namespace {
 
-std::string number(double v, int digits = 6) {
-  if (!std::isfinite(v)) return "n/a";
-  std::ostringstream s;
-  s << std::setprecision(digits) << v;
-  return s.str();
-}
+using host::text::format_significant;
 
 const char* model_name(MfFitModel m) {
   return m == MfFitModel::mf61 ? "mf61" : "pac2002";
@@ -86,7 +82,8 @@ StagedFit fit_mf_staged(const MeasurementSet& data, const mf::MfParameters<doubl
       if (progress) {
         progress(s.name + ": " + std::to_string(s.points) + " points, " +
                  std::to_string(s.iterations) + " iterations" +
-                 (s.converged ? "" : " (iteration limit)") + ", " + number(s.seconds, 3) + " s");
+                 (s.converged ? "" : " (iteration limit)") + ", " +
+                 format_significant(s.seconds, 3) + " s");
       }
       fit.stages.push_back(std::move(s));
     }
@@ -128,8 +125,8 @@ std::vector<ChannelLoadStats> final_stats(const StagedFit& fit, const Measuremen
 void write_staged_report(const StagedFit& fit, const MeasurementSet& data, std::ostream& out) {
   out << "# tread fit --model " << model_name(fit.model) << " (staged)\n\nInput: `" << data.source
       << "`, " << data.points.size() << " points; load levels (N):";
-  for (double fz : fit.levels) out << ' ' << number(fz, 6);
-  out << ". Whole staged fit: " << number(fit.seconds, 3)
+  for (double fz : fit.levels) out << ' ' << format_significant(fz, 6);
+  out << ". Whole staged fit: " << format_significant(fit.seconds, 3)
       << " s. Each stage is a separate Ceres problem through the templated core (combined slip, "
          "limits on); standard deviations from the Ceres covariance (pseudo-inverse: a "
          "coefficient without effect on the stage's points gets 0) scaled by the residual "
@@ -138,17 +135,19 @@ void write_staged_report(const StagedFit& fit, const MeasurementSet& data, std::
     out << "\n## " << s.name << "\n\n"
         << s.points << " points, " << s.iterations << " iterations ("
         << (s.converged ? "converged" : "stopped at the iteration limit") << "), "
-        << number(s.seconds, 3) << " s.\n\n| coefficient | start | fitted | standard deviation |\n"
+        << format_significant(s.seconds, 3)
+        << " s.\n\n| coefficient | start | fitted | standard deviation |\n"
         << "|---|---|---|---|\n";
     for (std::size_t i = 0; i < s.keys.size(); ++i) {
-      out << "| " << s.keys[i] << " | " << number(s.start[i]) << " | " << number(s.values[i])
-          << " | " << number(s.stddev[i], 3) << " |\n";
+      out << "| " << s.keys[i] << " | " << format_significant(s.start[i]) << " | "
+          << format_significant(s.values[i]) << " | " << format_significant(s.stddev[i], 3)
+          << " |\n";
     }
     out << "\n| channel | Fz (N) | points | RMS | R² |\n|---|---|---|---|---|\n";
     for (const auto& st : s.stats) {
-      out << "| " << fit_channel_name(st.channel) << " | " << number(st.fz_n, 6) << " | "
-          << st.points << " | " << number(st.rms, 4) << ' ' << fit_channel_unit(st.channel) << " | "
-          << number(st.r2, 6) << " |\n";
+      out << "| " << fit_channel_name(st.channel) << " | " << format_significant(st.fz_n, 6)
+          << " | " << st.points << " | " << format_significant(st.rms, 4) << ' '
+          << fit_channel_unit(st.channel) << " | " << format_significant(st.r2, 6) << " |\n";
     }
   }
   out << "\n## Characteristics of the fitted set (gamma = 0, Vx of the data)\n\n"
@@ -174,15 +173,16 @@ void write_staged_report(const StagedFit& fit, const MeasurementSet& data, std::
       fx_peak = std::max(fx_peak, std::fabs(at(FitChannel::fx, i * 1e-3, 0)));
       fy_peak = std::max(fy_peak, std::fabs(at(FitChannel::fy, 0, i * 1e-3)));
     }
-    out << "| " << number(fz, 6) << " | " << number(kx) << " | " << number(ky) << " | "
-        << number(fx_peak / fz, 4) << " | " << number(fy_peak / fz, 4) << " |\n";
+    out << "| " << format_significant(fz, 6) << " | " << format_significant(kx) << " | "
+        << format_significant(ky) << " | " << format_significant(fx_peak / fz, 4) << " | "
+        << format_significant(fy_peak / fz, 4) << " |\n";
   }
   out << "\n## Final coefficient set on every point\n\n| channel | Fz (N) | points | RMS | R² |\n"
       << "|---|---|---|---|---|\n";
   for (const auto& st : final_stats(fit, data)) {
-    out << "| " << fit_channel_name(st.channel) << " | " << number(st.fz_n, 6) << " | " << st.points
-        << " | " << number(st.rms, 4) << ' ' << fit_channel_unit(st.channel) << " | "
-        << number(st.r2, 6) << " |\n";
+    out << "| " << fit_channel_name(st.channel) << " | " << format_significant(st.fz_n, 6) << " | "
+        << st.points << " | " << format_significant(st.rms, 4) << ' '
+        << fit_channel_unit(st.channel) << " | " << format_significant(st.r2, 6) << " |\n";
   }
 }
 
@@ -226,7 +226,8 @@ void plot_staged_fit(const StagedFit& fit, const MeasurementSet& data, const std
             d << x << ' ' << model_value(fit.params, q) << '\n';
           }
           d << "\n\n";
-          const std::string g = "gamma " + number(static_cast<double>(mrad) / 1000.0, 3);
+          const std::string g =
+              "gamma " + format_significant(static_cast<double>(mrad) / 1000.0, 3);
           if (index > 0) plot += ", ";
           plot += host::format_script(
               "%s index %d with points pt 7 ps 0.4 lc %d title '%s measured', '' index %d with "
@@ -244,7 +245,7 @@ void plot_staged_fit(const StagedFit& fit, const MeasurementSet& data, const std
       script +=
           "set title " +
           host::gnuplot_quote(std::string(fit_channel_name(c)) + (fx ? "(kappa)" : "(alpha)") +
-                              " at Fz = " + number(fit.levels[level], 5) +
+                              " at Fz = " + format_significant(fit.levels[level], 5) +
                               " N: measured and fitted (" + model_name(fit.model) + ")") +
           "\n";
       script += std::string("set xlabel ") + (fx ? "'kappa (-)'" : "'alpha (rad)'") + "\n";

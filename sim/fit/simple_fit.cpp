@@ -13,11 +13,14 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "io/text_line.hpp"
 #include "pac/pac_math.hpp"
 #include "plot/gnuplot.hpp"
 
 namespace tread::fit {
 namespace {
+
+using host::text::format_significant;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kCMin = 1.0 + 1e-6, kCMax = 3.0 - 1e-6;  // the seed's 1 < C < 3
@@ -206,13 +209,6 @@ std::size_t nearest(const std::vector<double>& loads, double fz) {
   return best;
 }
 
-std::string number(double v, int digits = 6) {
-  if (!std::isfinite(v)) return "n/a";
-  std::ostringstream s;
-  s << std::setprecision(digits) << v;
-  return s.str();
-}
-
 }  // namespace
 
 const char* channel_name(Channel c) {
@@ -274,9 +270,9 @@ SimpleFit fit_simple(const MeasurementSet& data, const SimpleFitSettings& settin
                                         settings.asymmetric_e));
       const ChannelFit& f = result.fits.back();
       if (progress) {
-        progress(std::string(channel_name(channel)) + " at Fz " + number(f.fz_n, 5) +
-                 " N: " + std::to_string(count) + " points, RMS " + number(f.rms, 4) + ", R2 " +
-                 number(f.r2, 6));
+        progress(std::string(channel_name(channel)) + " at Fz " + format_significant(f.fz_n, 5) +
+                 " N: " + std::to_string(count) + " points, RMS " + format_significant(f.rms, 4) +
+                 ", R2 " + format_significant(f.r2, 6));
       }
     }
   }
@@ -336,7 +332,7 @@ void write_simple_fit_report(const SimpleFit& fit, const std::string& source, st
       << "Input: `" << source << "`. Basic Magic Formula y = D sin(C atan(B x - E (B x - atan(B "
       << "x)))) + SV, x = X + SH, per load; 1 < C < 3, E < 1. Standard deviations from the Ceres "
       << "covariance scaled by the residual variance.\n\nLoad levels (N):";
-  for (double fz : fit.loads_n) out << ' ' << number(fz, 6);
+  for (double fz : fit.loads_n) out << ' ' << format_significant(fz, 6);
   out << "\n";
   for (Channel channel : kChannels) {
     bool any = false;
@@ -350,12 +346,12 @@ void write_simple_fit_report(const SimpleFit& fit, const std::string& source, st
       }
       const std::array<double, 7> k = {f.constants.b,  f.constants.c,  f.constants.d, f.constants.e,
                                        f.constants.sh, f.constants.sv, f.constants.ea};
-      out << "| " << number(f.fz_n, 6) << " | " << f.points;
+      out << "| " << format_significant(f.fz_n, 6) << " | " << f.points;
       for (std::size_t i = 0; i < 7; ++i) {
-        out << " | " << number(k[i], 5) << " ± " << number(f.stddev[i], 2);
+        out << " | " << format_significant(k[i], 5) << " ± " << format_significant(f.stddev[i], 2);
       }
-      out << " | " << number(slope_at_origin(f.constants), 6) << " | " << number(f.rms, 4) << " | "
-          << number(f.r2, 6) << " |\n";
+      out << " | " << format_significant(slope_at_origin(f.constants), 6) << " | "
+          << format_significant(f.rms, 4) << " | " << format_significant(f.r2, 6) << " |\n";
     }
   }
 }
@@ -383,11 +379,11 @@ void plot_simple_fit(const SimpleFit& fit, const std::string& dir) {
     std::string script = host::gnuplot_terminal(png.string(), 900, 650);
     script += "set output " + host::gnuplot_quote(png.string()) + "\n";
     script += "set termoption noenhanced\nset grid\nset key outside bottom center horizontal\n";
-    script +=
-        "set title " +
-        host::gnuplot_quote(std::string(channel_name(f.channel)) + " at Fz = " + number(f.fz_n, 5) +
-                            " N (RMS " + number(f.rms, 3) + ")") +
-        "\n";
+    script += "set title " +
+              host::gnuplot_quote(std::string(channel_name(f.channel)) +
+                                  " at Fz = " + format_significant(f.fz_n, 5) + " N (RMS " +
+                                  format_significant(f.rms, 3) + ")") +
+              "\n";
     script += std::string("set xlabel ") + (fx ? "'kappa (-)'" : "'alpha (rad)'") + "\n";
     script += std::string("set ylabel ") +
               (fx ? "'Fx (N)'" : (f.channel == Channel::fy_alpha ? "'Fy (N)'" : "'Mz (Nm)'")) +

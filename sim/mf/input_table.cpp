@@ -4,6 +4,7 @@
 #include <istream>
 
 #include "io/csv_number.hpp"
+#include "io/text_line.hpp"
 #include "tir/tir_file.hpp"
 
 namespace tread::mf {
@@ -105,18 +106,8 @@ std::string lower(std::string_view s) {
   return out;
 }
 
-std::string_view trim_view(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r')) {
-    s.remove_prefix(1);
-  }
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) {
-    s.remove_suffix(1);
-  }
-  return s;
-}
-
 std::string trim(std::string_view s) {
-  return std::string(trim_view(s));
+  return std::string(host::text::trim_blanks(s));
 }
 
 std::size_t index(InputQuantity q) {
@@ -313,7 +304,7 @@ std::optional<InputRow> InputTable::next() {
   std::string line;
   while (std::getline(in_, line)) {
     ++line_;
-    const std::string_view t = trim_view(line);
+    const std::string_view t = host::text::trim_blanks(line);
     if (t.empty() || t.front() == '#') continue;
     if (!seen_row_) {
       seen_row_ = true;
@@ -327,7 +318,7 @@ std::optional<InputRow> InputTable::next() {
 }
 
 bool InputTable::take_units_row(std::string_view line, int line_no) {
-  const std::vector<std::string> cells = split(trim_view(line));
+  const std::vector<std::string> cells = split(host::text::trim_blanks(line));
   if (cells.size() != cells_) wrong_cell_count(cells.size(), line_no);
   return apply_units_row(cells, line_no);
 }
@@ -339,7 +330,7 @@ void InputTable::wrong_cell_count(std::size_t found, int line_no) const {
 }
 
 bool InputTable::parse_row(std::string_view line, int line_no, InputRow& row) const {
-  const std::string_view t = trim_view(line);
+  const std::string_view t = host::text::trim_blanks(line);
   if (t.empty() || t.front() == '#') return false;
   row.value.fill(0.0);
   row.line = line_no;
@@ -352,7 +343,7 @@ bool InputTable::parse_row(std::string_view line, int line_no, InputRow& row) co
     const std::size_t end = t.find(separator_, start);
     if (cell < cells_ && quantity_of_cell_[cell] >= 0) {
       const auto q = static_cast<std::size_t>(quantity_of_cell_[cell]);
-      const std::string_view text = trim_view(
+      const std::string_view text = host::text::trim_blanks(
           t.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start));
       // With ';' or tab separators a cell without a '.' may have a decimal comma.
       double v = 0.0;

@@ -4,17 +4,14 @@
 #include <cmath>
 #include <cstdio>
 
+#include "io/text_line.hpp"
 #include "mf/mf_evaluate.hpp"
 
 namespace tread::mf {
 
 namespace {
 
-std::string number(double v, int digits) {
-  char buffer[48];
-  std::snprintf(buffer, sizeof buffer, "%.*g", digits, v);
-  return buffer;
-}
+using host::text::format_significant;
 
 struct Pure {
   double kx = 0.0;       // dFx/dκ at κ = 0, N
@@ -73,49 +70,49 @@ std::vector<std::string> curve_warnings(const MfParameters<double>& p, const MfO
   for (std::size_t i = 0; i < loads.size(); ++i) {
     const double fz = loads[i];
     const Pure r = pure_at(p, o, fz, vx_mps);
-    const std::string where = at + number(fz, 6) + " N";
+    const std::string where = at + format_significant(fz, 6) + " N";
     if (!kx_bad && !(r.kx > 0.0)) {
       kx_bad = true;
-      warnings.push_back("Fx(kappa): slip stiffness dFx/dkappa = " + number(r.kx, 4) + " N" +
-                         where + " (expected > 0)");
+      warnings.push_back("Fx(kappa): slip stiffness dFx/dkappa = " + format_significant(r.kx, 4) +
+                         " N" + where + " (expected > 0)");
     }
     if (!drive_bad && !(r.drive > 0.0)) {
       drive_bad = true;
       warnings.push_back("Fx peak changes sign below FZMAX: max Fx(0 < kappa <= 1) = " +
-                         number(r.drive, 4) + " N" + where);
+                         format_significant(r.drive, 4) + " N" + where);
     }
     if (!brake_bad && !(r.brake < 0.0)) {
       brake_bad = true;
       warnings.push_back("Fx peak changes sign below FZMAX: min Fx(-1 <= kappa < 0) = " +
-                         number(r.brake, 4) + " N" + where);
+                         format_significant(r.brake, 4) + " N" + where);
     }
     if (!ky_bad && !(r.ky < 0.0)) {
       ky_bad = true;
-      warnings.push_back(
-          "Fy(alpha) has the wrong sign of cornering stiffness: dFy/dalpha = " + number(r.ky, 4) +
-          " N/rad" + where + " (ISO-W: alpha > 0 gives Fy < 0, so expected < 0)");
+      warnings.push_back("Fy(alpha) has the wrong sign of cornering stiffness: dFy/dalpha = " +
+                         format_significant(r.ky, 4) + " N/rad" + where +
+                         " (ISO-W: alpha > 0 gives Fy < 0, so expected < 0)");
     }
     const double mux = std::max(std::fabs(r.drive), std::fabs(r.brake)) / fz;
     const double muy = r.fy_peak / fz;
     if (!mu_big && (mux > 3.0 || muy > 3.0)) {
       mu_big = true;
-      warnings.push_back("friction beyond reason: mux = " + number(mux, 3) +
-                         ", muy = " + number(muy, 3) + where);
+      warnings.push_back("friction beyond reason: mux = " + format_significant(mux, 3) +
+                         ", muy = " + format_significant(muy, 3) + where);
     }
     if (i == 0) {
       mux_first = mux;
       muy_first = muy;
     }
     if (i + 1 == loads.size() && loads.size() > 1) {
-      const std::string span =
-          " from Fz = " + number(loads.front(), 6) + " N to " + number(fz, 6) + " N";
+      const std::string span = " from Fz = " + format_significant(loads.front(), 6) + " N to " +
+                               format_significant(fz, 6) + " N";
       if (mux > 1.1 * mux_first && mux_first > 0.0) {
-        warnings.push_back("mux rises with load: " + number(mux_first, 3) + " → " + number(mux, 3) +
-                           span);
+        warnings.push_back("mux rises with load: " + format_significant(mux_first, 3) + " → " +
+                           format_significant(mux, 3) + span);
       }
       if (muy > 1.1 * muy_first && muy_first > 0.0) {
-        warnings.push_back("muy rises with load: " + number(muy_first, 3) + " → " + number(muy, 3) +
-                           span);
+        warnings.push_back("muy rises with load: " + format_significant(muy_first, 3) + " → " +
+                           format_significant(muy, 3) + span);
       }
     }
   }

@@ -1,5 +1,7 @@
 #include "mf/mf_eval_columns.hpp"
 
+#include "io/text_line.hpp"
+
 namespace tread::mf {
 
 namespace {
@@ -45,12 +47,6 @@ constexpr std::array<EvalColumn, kEvalColumnCount> kColumns = {{
 
 constexpr std::size_t kMainOutputs = 6;  // Fx_N … Mz_Nm
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-  return s;
-}
-
 std::string valid_names() {
   std::string names = "all";
   for (const EvalColumn& c : kColumns) names += ", " + std::string(c.name);
@@ -71,7 +67,7 @@ std::vector<std::size_t> default_eval_columns() {
 
 EvalColumnSelection select_eval_columns(std::string_view list) {
   EvalColumnSelection selection;
-  if (trim(list) == "all") {
+  if (host::text::trim_blanks(list) == "all") {
     for (std::size_t i = 0; i < kEvalColumnCount; ++i) selection.columns.push_back(i);
     return selection;
   }
@@ -79,7 +75,7 @@ EvalColumnSelection select_eval_columns(std::string_view list) {
   std::size_t start = 0;
   while (true) {
     const std::size_t comma = list.find(',', start);
-    const std::string_view name = trim(list.substr(start, comma - start));
+    const std::string_view name = host::text::trim_blanks(list.substr(start, comma - start));
     if (name.empty()) {
       selection.error =
           "--columns: an empty name in '" + std::string(list) + "'; valid names: " + valid_names();

@@ -1,6 +1,6 @@
 #include "profile/miniprof_profile.hpp"
 
-#include "profile/text_line.hpp"
+#include "io/text_line.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -28,9 +28,9 @@ bool is_comment_marker(char c) {
 }
 
 bool starts_with_number(std::string_view text) {
-  const auto fields = split_fields(text);
+  const auto fields = host::text::split_fields(text);
   double v = 0.0;
-  return !fields.empty() && parse_number_text(fields.front(), v);
+  return !fields.empty() && host::text::parse_number_text(fields.front(), v);
 }
 
 }  // namespace
@@ -47,8 +47,8 @@ MiniProfFile read_miniprof(std::istream& in, const std::string& source_name) {
   std::size_t line_no = 0;
   while (std::getline(in, line)) {
     ++line_no;
-    strip_utf8_bom(line, line_no);
-    const std::string_view text = trim_blanks(line);
+    host::text::strip_utf8_bom(line, line_no);
+    const std::string_view text = host::text::trim_blanks(line);
     if (!text.empty() && is_comment_marker(text.front())) {
       continue;
     }
@@ -64,8 +64,8 @@ MiniProfFile read_miniprof(std::istream& in, const std::string& source_name) {
           out.header.emplace_back(std::string(text), std::string());
           continue;
         }
-        const std::string key(trim_blanks(text.substr(0, eq)));
-        const std::string value(trim_blanks(text.substr(eq + 1)));
+        const std::string key(host::text::trim_blanks(text.substr(0, eq)));
+        const std::string value(host::text::trim_blanks(text.substr(eq + 1)));
         out.header.emplace_back(key, value);
         const std::string k = lower(key);
         if (k == "xoffset" || k == "yoffset") {
@@ -74,13 +74,14 @@ MiniProfFile read_miniprof(std::istream& in, const std::string& source_name) {
           if (number.find('.') == std::string::npos) {
             std::replace(number.begin(), number.end(), ',', '.');
           }
-          if (!parse_number_text(number, offset_mm) || !std::isfinite(offset_mm)) {
-            fail_at(source_name, line_no, key + " '" + value + "' is not a number (mm)");
+          if (!host::text::parse_number_text(number, offset_mm) || !std::isfinite(offset_mm)) {
+            host::text::fail_at(source_name, line_no,
+                                key + " '" + value + "' is not a number (mm)");
           }
           (k == "xoffset" ? out.x_offset_mm : out.y_offset_mm) = offset_mm;
           (k == "xoffset" ? out.x_offset_line : out.y_offset_line) = line_no;
         } else if (k == "columndef") {
-          const auto names = split_fields(value);
+          const auto names = host::text::split_fields(value);
           std::size_t found = 0;
           for (std::size_t i = 0; i < names.size(); ++i) {
             const std::string n = lower(names[i]);
@@ -93,12 +94,13 @@ MiniProfFile read_miniprof(std::istream& in, const std::string& source_name) {
             }
           }
           if (found != 3U) {
-            fail_at(source_name, line_no,
-                    "ColumnDef '" + value + "' does not name the columns X and Y");
+            host::text::fail_at(source_name, line_no,
+                                "ColumnDef '" + value + "' does not name the columns X and Y");
           }
         } else if (k == "points" || k == "xypoints") {
           double n = 0.0;
-          if (parse_number_text(value, n) && n >= 0.0 && !(std::abs(n - std::round(n)) > 0.0)) {
+          if (host::text::parse_number_text(value, n) && n >= 0.0 &&
+              !(std::abs(n - std::round(n)) > 0.0)) {
             declared = static_cast<std::size_t>(n);
             declared_line = line_no;
           }
@@ -110,37 +112,39 @@ MiniProfFile read_miniprof(std::istream& in, const std::string& source_name) {
     if (text.empty()) {
       continue;
     }
-    const std::string data = with_decimal_points(text);
-    const auto fields = split_fields(data);
+    const std::string data = host::text::with_decimal_points(text);
+    const auto fields = host::text::split_fields(data);
     if (text.find('=') != std::string_view::npos) {
-      fail_at(source_name, line_no,
-              "header line '" + std::string(text) +
-                  "' after the points (the header ends at the "
-                  "first blank line)");
+      host::text::fail_at(source_name, line_no,
+                          "header line '" + std::string(text) +
+                              "' after the points (the header ends at the "
+                              "first blank line)");
     }
     const std::size_t need = std::max(x_col, y_col) + 1;
     if (fields.size() < need) {
-      fail_at(source_name, line_no,
-              "expected at least " + std::to_string(need) + " columns, got " +
-                  std::to_string(fields.size()));
+      host::text::fail_at(source_name, line_no,
+                          "expected at least " + std::to_string(need) + " columns, got " +
+                              std::to_string(fields.size()));
     }
     double x = 0.0;
     double y = 0.0;
-    if (!parse_number_text(fields[x_col], x) || !parse_number_text(fields[y_col], y) ||
-        !std::isfinite(x) || !std::isfinite(y)) {
-      fail_at(source_name, line_no, "expected a point 'X Y', got '" + std::string(text) + "'");
+    if (!host::text::parse_number_text(fields[x_col], x) ||
+        !host::text::parse_number_text(fields[y_col], y) || !std::isfinite(x) ||
+        !std::isfinite(y)) {
+      host::text::fail_at(source_name, line_no,
+                          "expected a point 'X Y', got '" + std::string(text) + "'");
     }
     out.points.y_mm.push_back(x + out.x_offset_mm);
     out.points.z_mm.push_back(y + out.y_offset_mm);
     out.points.line.push_back(line_no);
   }
   if (out.points.y_mm.size() < 2) {
-    fail_at(source_name, line_no, "fewer than 2 points after the header");
+    host::text::fail_at(source_name, line_no, "fewer than 2 points after the header");
   }
   if (declared_line > 0 && declared != out.points.y_mm.size()) {
-    fail_at(source_name, declared_line,
-            "the header declares " + std::to_string(declared) + " points, the file has " +
-                std::to_string(out.points.y_mm.size()));
+    host::text::fail_at(source_name, declared_line,
+                        "the header declares " + std::to_string(declared) +
+                            " points, the file has " + std::to_string(out.points.y_mm.size()));
   }
   return out;
 }

@@ -1,5 +1,5 @@
 #include "profile/nominal_wheel.hpp"
-#include "profile/text_line.hpp"
+#include "io/text_line.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -56,13 +56,13 @@ NominalChoice choose_nominal(const std::string& spec, const SampledProfile& meas
         const std::string value = item.substr(eq + 1);
         try {
           if (key == "h") {
-            p.flange_height_mm = finite_number(value);
+            p.flange_height_mm = host::text::finite_number(value);
           } else if (key == "e") {
-            p.flange_thickness_mm = finite_number(value);
+            p.flange_thickness_mm = host::text::finite_number(value);
           } else if (key == "slope") {
             p.outer_slope = parse_outer_slope(value);
           } else if (key == "width") {
-            p.width_mm = finite_number(value);
+            p.width_mm = host::text::finite_number(value);
           } else if (key == "chamfer") {
             p.chamfer = truthy(value);
           } else {

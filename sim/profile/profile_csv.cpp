@@ -1,6 +1,6 @@
 #include "profile/profile_csv.hpp"
 
-#include "profile/text_line.hpp"
+#include "io/text_line.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -25,10 +25,10 @@ std::vector<std::string_view> split_commas(std::string_view line) {
   while (true) {
     const std::size_t comma = line.find(',', start);
     if (comma == std::string_view::npos) {
-      fields.push_back(trim_blanks(line.substr(start)));
+      fields.push_back(host::text::trim_blanks(line.substr(start)));
       return fields;
     }
-    fields.push_back(trim_blanks(line.substr(start, comma - start)));
+    fields.push_back(host::text::trim_blanks(line.substr(start, comma - start)));
     start = comma + 1;
   }
 }
@@ -36,19 +36,20 @@ std::vector<std::string_view> split_commas(std::string_view line) {
 double parse_number(std::string_view text, const std::string& source, std::size_t line,
                     const char* column) {
   double value = 0.0;
-  if (!parse_number_text(text, value)) {
-    fail_at(source, line,
-            std::string("column ") + column + ": '" + std::string(text) + "' is not a number");
+  if (!host::text::parse_number_text(text, value)) {
+    host::text::fail_at(
+        source, line,
+        std::string("column ") + column + ": '" + std::string(text) + "' is not a number");
   }
   if (!std::isfinite(value)) {
-    fail_at(source, line, std::string("column ") + column + ": value is not finite");
+    host::text::fail_at(source, line, std::string("column ") + column + ": value is not finite");
   }
   return value;
 }
 
 bool is_number_text(std::string_view text) {
   double value = 0.0;
-  return parse_number_text(text, value);
+  return host::text::parse_number_text(text, value);
 }
 
 }  // namespace
@@ -67,15 +68,15 @@ ProfilePoints read_profile_csv_points(std::istream& in, const std::string& sourc
   bool data_started = false;
   while (std::getline(in, line)) {
     ++line_no;
-    strip_utf8_bom(line, line_no);
+    host::text::strip_utf8_bom(line, line_no);
     if (tolerant) {
-      line = with_decimal_points(line);
+      line = host::text::with_decimal_points(line);
     }
-    const std::string_view text = trim_blanks(line);
+    const std::string_view text = host::text::trim_blanks(line);
     if (text.empty() || text.front() == '#') {
       continue;
     }
-    const auto fields = tolerant ? split_fields(text) : split_commas(text);
+    const auto fields = tolerant ? host::text::split_fields(text) : split_commas(text);
     if (!have_header && !data_started) {
       const auto y_it = std::find(fields.begin(), fields.end(), "y_mm");
       const auto z_it = std::find(fields.begin(), fields.end(), "z_mm");
@@ -87,7 +88,7 @@ ProfilePoints read_profile_csv_points(std::istream& in, const std::string& sourc
         continue;
       }
       if (!tolerant) {
-        fail_at(
+        host::text::fail_at(
             source_name, line_no,
             "expected a header naming the columns y_mm and z_mm, got '" + std::string(text) + "'");
       }
@@ -99,23 +100,23 @@ ProfilePoints read_profile_csv_points(std::istream& in, const std::string& sourc
     data_started = true;
     if (!tolerant || n_cols > 0) {
       if (tolerant ? fields.size() < n_cols : fields.size() != n_cols) {
-        fail_at(source_name, line_no,
-                "expected " + std::to_string(n_cols) + " columns, got " +
-                    std::to_string(fields.size()));
+        host::text::fail_at(source_name, line_no,
+                            "expected " + std::to_string(n_cols) + " columns, got " +
+                                std::to_string(fields.size()));
       }
     } else if (fields.size() < 2) {
-      fail_at(source_name, line_no,
-              "expected two numbers 'y_mm,z_mm', got '" + std::string(text) + "'");
+      host::text::fail_at(source_name, line_no,
+                          "expected two numbers 'y_mm,z_mm', got '" + std::string(text) + "'");
     }
     points.y_mm.push_back(parse_number(fields[y_col], source_name, line_no, "y_mm"));
     points.z_mm.push_back(parse_number(fields[z_col], source_name, line_no, "z_mm"));
     points.line.push_back(line_no);
   }
   if (!have_header && !tolerant) {
-    fail_at(source_name, line_no, "no header line (y_mm,z_mm) found");
+    host::text::fail_at(source_name, line_no, "no header line (y_mm,z_mm) found");
   }
   if (points.y_mm.size() < 2) {
-    fail_at(source_name, line_no, "fewer than 2 points");
+    host::text::fail_at(source_name, line_no, "fewer than 2 points");
   }
   return points;
 }
@@ -132,9 +133,10 @@ SampledProfile read_profile_csv(std::istream& in, const std::string& source_name
   for (std::size_t i = 1; i < profile.y_mm.size(); ++i) {
     const double dy = profile.y_mm[i] - profile.y_mm[i - 1];
     if (decreasing ? !(dy < 0.0) : !(dy > 0.0)) {
-      fail_at(source_name, lines[i],
-              std::string("y_mm is not strictly ") + (decreasing ? "decreasing" : "increasing") +
-                  " (previous point at line " + std::to_string(lines[i - 1]) + ")");
+      host::text::fail_at(source_name, lines[i],
+                          std::string("y_mm is not strictly ") +
+                              (decreasing ? "decreasing" : "increasing") +
+                              " (previous point at line " + std::to_string(lines[i - 1]) + ")");
     }
   }
   if (decreasing) {

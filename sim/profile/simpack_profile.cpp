@@ -12,8 +12,8 @@
 #include <string_view>
 #include <vector>
 
+#include "io/text_line.hpp"
 #include "profile/profile_csv.hpp"
-#include "profile/text_line.hpp"
 
 namespace tread::profile {
 
@@ -34,7 +34,8 @@ std::string_view strip_comment(std::string_view s) {
 
 /// A finite number filling the whole (trimmed) field.
 bool parse_double(std::string_view text, double& value) {
-  return parse_number_text(trim_blanks(text), value) && std::isfinite(value);
+  return host::text::parse_number_text(host::text::trim_blanks(text), value) &&
+         std::isfinite(value);
 }
 
 struct Setting {
@@ -59,8 +60,8 @@ SimpackPoints read_simpack_points(std::istream& in, const std::string& source_na
   std::size_t line_no = 0;
   while (std::getline(in, line)) {
     ++line_no;
-    strip_utf8_bom(line, line_no);
-    const std::string_view text = trim_blanks(strip_comment(line));
+    host::text::strip_utf8_bom(line, line_no);
+    const std::string_view text = host::text::trim_blanks(strip_comment(line));
     if (text.empty()) {
       continue;
     }
@@ -71,7 +72,7 @@ SimpackPoints read_simpack_points(std::istream& in, const std::string& source_na
     }
     if (text == "point.begin") {
       if (block != "spline") {
-        fail_at(source_name, line_no, "point.begin outside a spline block");
+        host::text::fail_at(source_name, line_no, "point.begin outside a spline block");
       }
       block = "point";
       saw_points = true;
@@ -94,27 +95,28 @@ SimpackPoints read_simpack_points(std::istream& in, const std::string& source_na
       double y = 0.0;
       double z = 0.0;
       if (!parse_double(a, y) || !parse_double(b, z)) {
-        fail_at(source_name, line_no,
-                "expected a point 'y z [weight]', got '" + std::string(text) + "'");
+        host::text::fail_at(source_name, line_no,
+                            "expected a point 'y z [weight]', got '" + std::string(text) + "'");
       }
       points.push_back({y, z, line_no});
       continue;
     }
     const std::size_t eq = text.find('=');
     if (eq == std::string_view::npos || block.empty()) {
-      fail_at(source_name, line_no, "unexpected line '" + std::string(text) + "'");
+      host::text::fail_at(source_name, line_no, "unexpected line '" + std::string(text) + "'");
     }
-    std::string value(trim_blanks(text.substr(eq + 1)));
+    std::string value(host::text::trim_blanks(text.substr(eq + 1)));
     if (value.size() >= 2 && value.front() == '\'' && value.back() == '\'') {
       value = value.substr(1, value.size() - 2);
     }
-    settings[block + "." + std::string(trim_blanks(text.substr(0, eq)))] = {value, line_no};
+    settings[block + "." + std::string(host::text::trim_blanks(text.substr(0, eq)))] = {value,
+                                                                                        line_no};
   }
   if (!saw_header) {
-    fail_at(source_name, line_no, "no header.begin … header.end block");
+    host::text::fail_at(source_name, line_no, "no header.begin … header.end block");
   }
   if (!saw_points || points.size() < 2) {
-    fail_at(source_name, line_no, "no point block with at least 2 points");
+    host::text::fail_at(source_name, line_no, "no point block with at least 2 points");
   }
 
   const auto number = [&](const std::string& key, double fallback) {
@@ -124,7 +126,8 @@ SimpackPoints read_simpack_points(std::istream& in, const std::string& source_na
     }
     double v = 0.0;
     if (!parse_double(it->second.value, v)) {
-      fail_at(source_name, it->second.line, key + ": '" + it->second.value + "' is not a number");
+      host::text::fail_at(source_name, it->second.line,
+                          key + ": '" + it->second.value + "' is not a number");
     }
     return v;
   };
@@ -132,14 +135,15 @@ SimpackPoints read_simpack_points(std::istream& in, const std::string& source_na
   SimpackPoints result;
   const double type = number("header.type", -1.0);
   if (type < -0.5) {
-    fail_at(source_name, line_no, "header.type is missing (0 = rail, 1 = wheel)");
+    host::text::fail_at(source_name, line_no, "header.type is missing (0 = rail, 1 = wheel)");
   }
   if (std::fabs(type - 1.0) < 0.5) {
     result.type = SimpackProfileType::kWheel;
   } else if (std::fabs(type) < 0.5) {
     result.type = SimpackProfileType::kRail;
   } else {
-    fail_at(source_name, settings["header.type"].line, "header.type must be 0 (rail) or 1 (wheel)");
+    host::text::fail_at(source_name, settings["header.type"].line,
+                        "header.type must be 0 (rail) or 1 (wheel)");
   }
   if (const auto it = settings.find("spline.comment"); it != settings.end()) {
     result.comment = it->second.value;
@@ -147,7 +151,8 @@ SimpackPoints read_simpack_points(std::istream& in, const std::string& source_na
   const double len_f = number("spline.units.len.f", 1000.0);
   const double ang_f = number("spline.units.ang.f", 1.0);
   if (!(len_f > 0.0) || !(ang_f > 0.0)) {
-    fail_at(source_name, settings["spline.units.len.f"].line, "unit factors must be positive");
+    host::text::fail_at(source_name, settings["spline.units.len.f"].line,
+                        "unit factors must be positive");
   }
   const double to_mm = 1000.0 / len_f;
   const double shift_y = number("spline.shift.y", 0.0) * to_mm;
@@ -188,7 +193,7 @@ SimpackPoints read_simpack_points(std::istream& in, const std::string& source_na
     kept.push_back({y, z, p.line});
   }
   if (kept.size() < 2) {
-    fail_at(source_name, line_no, "fewer than 2 points left after the bounds");
+    host::text::fail_at(source_name, line_no, "fewer than 2 points left after the bounds");
   }
   result.points.name = source_name;
   for (const RawPoint& p : kept) {
@@ -217,9 +222,9 @@ SimpackProfile read_simpack_profile(std::istream& in, const std::string& source_
   for (std::size_t i = 1; i < kept.size(); ++i) {
     const double dy = kept[i].y - kept[i - 1].y;
     if (decreasing ? !(dy < 0.0) : !(dy > 0.0)) {
-      fail_at(source_name, kept[i].line,
-              "y is not strictly monotonic after processing (previous point at line " +
-                  std::to_string(kept[i - 1].line) + ")");
+      host::text::fail_at(source_name, kept[i].line,
+                          "y is not strictly monotonic after processing (previous point at line " +
+                              std::to_string(kept[i - 1].line) + ")");
     }
   }
   if (decreasing) {

@@ -9,9 +9,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "io/text_line.hpp"
 #include "profile/eps_table_d1.hpp"
 #include "profile/s1002_uic.hpp"
-#include "profile/text_line.hpp"
 
 namespace tread::profile {
 
@@ -111,7 +111,7 @@ OuterSlope parse_outer_slope(const std::string& text) {
   }
   if ((text.rfind("1:", 0) == 0 || text.rfind("1/", 0) == 0) && plain_decimal(text.substr(2))) {
     double n = 0.0;
-    if (!parse_number_text(text.substr(2), n) || !(n > 0.0) || !std::isfinite(n)) {
+    if (!host::text::parse_number_text(text.substr(2), n) || !(n > 0.0) || !std::isfinite(n)) {
       throw std::invalid_argument("outer slope '" + text + "': " + range);
     }
     if (std::fabs(n - 15.0) < 1e-12) {
@@ -120,7 +120,8 @@ OuterSlope parse_outer_slope(const std::string& text) {
     gradient = 1.0 / n;
   } else if (plain_decimal(number)) {
     // The decimal as written, scaled by 10^-2 in the conversion itself: "6.7" -> 0.067 exactly.
-    if (!parse_number_text(number + "e-2", gradient)) {  // beyond double: out of range below
+    if (!host::text::parse_number_text(number + "e-2",
+                                       gradient)) {  // beyond double: out of range below
       gradient = std::numeric_limits<double>::infinity();
     }
   } else {

@@ -9,6 +9,8 @@
 #include <system_error>
 #include <utility>
 
+#include "io/text_line.hpp"
+
 namespace tread::tir {
 
 namespace {
@@ -30,19 +32,13 @@ bool is_key_char(char c) noexcept {
   return is_key_start(c) || (c >= '0' && c <= '9');
 }
 
-std::string_view trim(std::string_view s) noexcept {
-  while (!s.empty() && is_space(s.front())) s.remove_prefix(1);
-  while (!s.empty() && is_space(s.back())) s.remove_suffix(1);
-  return s;
-}
-
 [[noreturn]] void fail(const std::string& origin, int line, const std::string& what) {
   throw TirError(origin, line, what);
 }
 
 // Parses the part after '=' of an entry line into entry.value/quote/comment.
 void parse_value(std::string_view rest, Entry& entry, const std::string& origin, int line) {
-  rest = trim(rest);
+  rest = host::text::trim_blanks(rest);
   if (rest.empty() || is_comment_start(rest.front())) {
     fail(origin, line, "missing value after '=' for key '" + entry.key + "'");
   }
@@ -55,7 +51,7 @@ void parse_value(std::string_view rest, Entry& entry, const std::string& origin,
     }
     entry.quote = q;
     entry.value = std::string(rest.substr(1, close - 1));
-    const std::string_view after = trim(rest.substr(close + 1));
+    const std::string_view after = host::text::trim_blanks(rest.substr(close + 1));
     if (!after.empty() && !is_comment_start(after.front())) {
       fail(origin, line,
            "unexpected text after closing quote in value of '" + entry.key + "': '" +
@@ -66,8 +62,8 @@ void parse_value(std::string_view rest, Entry& entry, const std::string& origin,
   }
   std::size_t end = 0;
   while (end < rest.size() && !is_comment_start(rest[end])) ++end;
-  entry.value = std::string(trim(rest.substr(0, end)));
-  entry.comment = std::string(trim(rest.substr(end)));
+  entry.value = std::string(host::text::trim_blanks(rest.substr(0, end)));
+  entry.comment = std::string(host::text::trim_blanks(rest.substr(end)));
   if (entry.value.find_first_of("'\"") != std::string::npos) {
     fail(origin, line, "stray quote in value of '" + entry.key + "'");
   }
@@ -116,7 +112,7 @@ bool is_block_body(std::string_view t) noexcept {
   if (t.front() == '\'' || t.front() == '"') {
     const std::size_t close = t.find(t.front(), 1);
     if (close == std::string_view::npos) return false;
-    const std::string_view after = trim(t.substr(close + 1));
+    const std::string_view after = host::text::trim_blanks(t.substr(close + 1));
     return after.empty() || is_comment_start(after.front());
   }
   return false;
@@ -124,7 +120,7 @@ bool is_block_body(std::string_view t) noexcept {
 
 // `KEY =` with nothing (or only a comment) after the '='.
 bool has_empty_value(std::string_view t) noexcept {
-  const std::string_view rest = trim(t.substr(t.find('=') + 1));
+  const std::string_view rest = host::text::trim_blanks(t.substr(t.find('=') + 1));
   return rest.empty() || is_comment_start(rest.front());
 }
 
@@ -159,7 +155,7 @@ bool iequals(std::string_view a, std::string_view b) noexcept {
 }
 
 std::optional<double> parse_number(std::string_view token) noexcept {
-  token = trim(token);
+  token = host::text::trim_blanks(token);
   if (!token.empty() && token.front() == '+') token.remove_prefix(1);
   if (token.empty() || token.size() > 64) return std::nullopt;
   // from_chars accepts "inf"/"nan" and hex-less decimal; we allow only digits, sign, '.', exponent.
@@ -381,7 +377,7 @@ TirFile parse_tir(std::string_view text, const std::string& origin) {
     pos = eol + 1;
     ++line_no;
     while (!raw.empty() && raw.back() == '\r') raw.remove_suffix(1);  // CRLF (and stray CRs)
-    const std::string_view t = trim(raw);
+    const std::string_view t = host::text::trim_blanks(raw);
 
     const std::size_t klen = match_key(t);
     Line l;
@@ -394,8 +390,8 @@ TirFile parse_tir(std::string_view text, const std::string& origin) {
     } else if (t.front() == '[') {
       const std::size_t close = t.find(']');
       if (close == std::string_view::npos) fail(origin, line_no, "section header without ']'");
-      const std::string_view name = trim(t.substr(1, close - 1));
-      const std::string_view after = trim(t.substr(close + 1));
+      const std::string_view name = host::text::trim_blanks(t.substr(1, close - 1));
+      const std::string_view after = host::text::trim_blanks(t.substr(close + 1));
       if (name.empty()) fail(origin, line_no, "empty section name");
       if (!std::all_of(name.begin(), name.end(),
                        [](char c) { return is_key_char(c) || c == '-'; })) {

@@ -3,24 +3,18 @@
 #include <cstddef>
 #include <string_view>
 
+#include "io/text_line.hpp"
+
 namespace tread::tir {
 
 namespace {
 
 constexpr std::size_t kKeyWidth = 25;  // "KEY" padded so the '=' line up, as TNO files do
 
-std::string_view trim(std::string_view s) noexcept {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) {
-    s.remove_suffix(1);
-  }
-  return s;
-}
-
 // A table row without its trailing `$`/`!` comment.
 std::string_view row_without_comment(std::string_view row) noexcept {
   const std::size_t c = row.find_first_of("$!");
-  return trim(c == std::string_view::npos ? row : row.substr(0, c));
+  return host::text::trim_blanks(c == std::string_view::npos ? row : row.substr(0, c));
 }
 
 }  // namespace

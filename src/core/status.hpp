@@ -33,7 +33,9 @@ struct Result {
 
 }  // namespace tread
 
-/// Programming-bug check; compiled out with NDEBUG. Never used for bad input.
+/// Programming-bug check of a precondition the caller controls (an index into a fixed set, an output
+/// buffer's size); compiled out with NDEBUG, traps otherwise. Never used for bad input, which is
+/// an error value.
 #ifdef NDEBUG
 #define TREAD_ASSERT(cond) static_cast<void>(0)
 #else

@@ -14,8 +14,8 @@ struct NodeConfig {
   proto::Layout layout{proto::Layout::classic};
   std::uint8_t wheels{4};     ///< road wheels 0..4
   std::uint8_t wheelsets{0};  ///< rail wheelsets 0..2
-  std::int64_t input_timeout_ns{
-      10'000'000};  ///< a channel without a valid frame this long is stale
+  /// A channel without a valid frame this long is stale.
+  std::int64_t input_timeout_ns{10'000'000};
   Schedule schedule{Schedule::periodic};
   bool start_enabled{true};       ///< compute from the start (else wait for Command.Enable = 1)
   std::uint8_t e2e_max_delta{3};  ///< largest accepted counter step

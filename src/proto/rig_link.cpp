@@ -42,6 +42,7 @@ bool RigLink::wanted(const MessageSpec& m) const noexcept {
 }
 
 std::size_t RigLink::encode_cycle(const RigData& data, std::span<CanFrame> out) noexcept {
+  TREAD_ASSERT(out.size() >= kMaxRigFrames);  // room for every frame: the cycle frame comes last
   const auto all = messages(layout_);
   std::size_t n = 0;
   // Channel frames first, the cycle frame last.

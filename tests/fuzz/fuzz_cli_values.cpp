@@ -16,10 +16,10 @@
 
 #include "contact/contact_setup.hpp"
 #include "fuzz_support.hpp"
+#include "io/text_line.hpp"
 #include "mf/input_table.hpp"
 #include "profile/profile_file.hpp"
 #include "profile/rail_profile.hpp"
-#include "profile/text_line.hpp"
 #include "profile/wheel_profile.hpp"
 #include "tir/tir_file.hpp"
 
@@ -94,7 +94,7 @@ void number_token(std::string_view text) {
                "format_number's text does not read back exactly");
     double plain = 0.0;
     if (text.find_first_of("dD") == std::string_view::npos &&
-        profile::parse_number_text(text, plain)) {
+        host::text::parse_number_text(text, plain)) {
       fuzz_check(std::bit_cast<std::uint64_t>(plain) == std::bit_cast<std::uint64_t>(*v),
                  "the .tir and profile number parsers disagree on '" + std::string(text) + "'");
     }

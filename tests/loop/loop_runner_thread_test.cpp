@@ -24,8 +24,11 @@ using testing::LinearTyre;
 TEST(LoopRunnerThread, SyncModeOnAWaitableBusAnswersEveryCycleFrameOfAnotherThread) {
   constexpr std::uint32_t kCycles = 500;
   // An input timeout far longer than the test: the node computes only on the rig's cycle frames.
-  const node::NodeConfig config{proto::Layout::classic, 4,    2, 60'000'000'000,
-                                node::Schedule::sync,   true, 3};
+  const node::NodeConfig config{.layout = proto::Layout::classic,
+                                .wheels = 4,
+                                .wheelsets = 2,
+                                .input_timeout_ns = 60'000'000'000,
+                                .schedule = node::Schedule::sync};
   std::array<LinearTyre, 4> tyres{};
   std::array<LinearContact, 2> contacts{};
   node::Node<LinearTyre, LinearContact> node(config, tyres, contacts);

@@ -1,19 +1,21 @@
 #pragma once
-// The line and field handling shared by the profile readers (CSV, MiniProf, SIMPACK): one
-// definition of trimming, splitting, number parsing, the "file:line: message" error and the
-// clean-ups of what spreadsheets write.
+// The line and field handling of the host's text readers and writers (profiles, measurements,
+// .tir files, column lists, reports): one definition of trimming, splitting, number parsing and
+// formatting, the "file:line: message" error and the clean-ups of what spreadsheets write.
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstddef>
+#include <iomanip>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <system_error>
 #include <vector>
 
-namespace tread::profile {
+namespace tread::host::text {
 
 /// Throws std::runtime_error "source:line: message".
 [[noreturn]] inline void fail_at(const std::string& source, std::size_t line,
@@ -21,9 +23,12 @@ namespace tread::profile {
   throw std::runtime_error(source + ":" + std::to_string(line) + ": " + message);
 }
 
-/// Without leading and trailing blanks (space, tab, CR, LF).
+/// Without leading and trailing white space (space, tab, CR, LF, form feed, vertical tab: what
+/// std::isspace counts in the C locale).
 inline std::string_view trim_blanks(std::string_view s) {
-  const auto is_space = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; };
+  const auto is_space = [](char c) {
+    return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v';
+  };
   while (!s.empty() && is_space(s.front())) {
     s.remove_prefix(1);
   }
@@ -99,4 +104,14 @@ inline std::string with_decimal_points(std::string_view text) {
   return out;
 }
 
-}  // namespace tread::profile
+/// `value` with `digits` significant digits (as %g), "n/a" when it is not finite: for reports.
+inline std::string format_significant(double value, int digits = 6) {
+  if (!std::isfinite(value)) {
+    return "n/a";
+  }
+  std::ostringstream s;
+  s << std::setprecision(digits) << value;
+  return s.str();
+}
+
+}  // namespace tread::host::text
