@@ -7,13 +7,16 @@
 # `--columns Fx_N,Fy_N,Mz_Nm`, and prints the median wall time and rows/s of each, the median CPU
 # time per row (user + system, all threads) and the peak RSS. Then the same with twice the rows,
 # once each, to show that memory does not grow with the row count.
-# Usage: scripts/bench-mf-eval.sh [ROWS] [RUNS]   (default 1000000 rows, 5 runs)
+# Usage: scripts/bench-mf-eval.sh [ROWS] [RUNS] [ARGS...]   (default 1000000 rows, 5 runs; ARGS
+#        are passed to every run, e.g. --float or --batch)
 #        TREAD=path/to/tread scripts/bench-mf-eval.sh   (another build, e.g. an older one)
 set -euo pipefail
 # Debian's python3 (python3-numpy from scripts/install-deps.sh), whatever python3 is first on PATH.
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 rows=${1:-1000000}
 runs=${2:-5}
+shift $(($# < 2 ? $# : 2))
+extra=("$@")
 tir=data/tyres/MagicFormula61_Parameters.tir
 if [[ -z ${TREAD:-} ]]; then
   cmake --preset host >/dev/null
@@ -93,15 +96,15 @@ print(f"{label:<28} {n:>8} rows  median {t:5.2f} s {n / t:>10,.0f} rows/s  "
   rm -f "$dir/out.csv"
 }
 
-echo "== tread mf eval: $("$TREAD" --version 2>/dev/null | head -1), $(nproc) cores, $tir =="
+echo "== tread mf eval ${extra[*]}: $("$TREAD" --version 2>/dev/null | head -1), $(nproc) cores, $tir =="
 input=$dir/in_${rows}.csv
 [[ -f $input ]] || make_input "$rows" "$input"
-bench "all columns" "$rows" "$runs" "$input" --columns all
-bench "--columns Fx_N,Fy_N,Mz_Nm" "$rows" "$runs" "$input" --columns Fx_N,Fy_N,Mz_Nm
-bench "default columns" "$rows" 1 "$input"
+bench "all columns" "$rows" "$runs" "$input" --columns all "${extra[@]}"
+bench "--columns Fx_N,Fy_N,Mz_Nm" "$rows" "$runs" "$input" --columns Fx_N,Fy_N,Mz_Nm "${extra[@]}"
+bench "default columns" "$rows" 1 "$input" "${extra[@]}"
 
 echo "== memory with twice the rows =="
 input2=$dir/in_$((2 * rows)).csv
 [[ -f $input2 ]] || make_input $((2 * rows)) "$input2"
-bench "all columns" $((2 * rows)) 1 "$input2" --columns all
-bench "--columns Fx_N,Fy_N,Mz_Nm" $((2 * rows)) 1 "$input2" --columns Fx_N,Fy_N,Mz_Nm
+bench "all columns" $((2 * rows)) 1 "$input2" --columns all "${extra[@]}"
+bench "--columns Fx_N,Fy_N,Mz_Nm" $((2 * rows)) 1 "$input2" --columns Fx_N,Fy_N,Mz_Nm "${extra[@]}"

@@ -41,6 +41,7 @@ struct MfEvalArgs {
   std::string tir;
   int mode = 111;
   bool use_float = false;
+  bool use_batch = false;
   bool use_fixed = false;
   std::string side = "as-measured";
   std::string input;
@@ -77,6 +78,7 @@ void run_mf_eval(const MfEvalArgs& args) {
   if (args.side == "right") o.side = mf::MountedSide::right;
   mf::MfCsvOptions csv;
   csv.use_float = args.use_float;
+  csv.use_batch = args.use_batch;
   csv.use_fixed = args.use_fixed;
   csv.strict = args.strict;
   csv.tyre_name = args.tir;
@@ -170,12 +172,20 @@ void add_mf_command(CLI::App& app) {
                "output is written whole or not at all.");
   eval->add_option("--tir", args.tir, "Tyre property file (.tir)")->required();
   eval->add_option("--mode", args.mode, "MFeval useMode: 111 (default) … 222");
-  CLI::Option* as_float = eval->add_flag("--float", args.use_float,
-                                         "Evaluate in float (as on the ECU) instead of double");
+  CLI::Option* as_float = eval->add_flag(
+      "--float", args.use_float,
+      "Evaluate in float instead of double, row by row: the ECU's scalar float path, bit for bit");
+  CLI::Option* as_batch = eval->add_flag(
+      "--batch", args.use_batch,
+      "Evaluate in float instead of double, many rows at once on wide SIMD lanes (8 with AVX2): "
+      "faster than --float, with its status and its values within 2e-5 of each column's largest "
+      "magnitude (float rounding), not bit for bit");
+  as_batch->excludes(as_float);
   eval->add_flag("--fixed", args.use_fixed,
                  "Evaluate in fixed point (Q31.32 integer arithmetic, bit for bit as on an "
                  "FPU-less ECU) instead of double")
-      ->excludes(as_float);
+      ->excludes(as_float)
+      ->excludes(as_batch);
   eval->add_option("--side", args.side,
                    "Mounted side: as-measured (default, like MFeval), left, right")
       ->check(CLI::IsMember({"as-measured", "left", "right"}));

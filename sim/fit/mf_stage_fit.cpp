@@ -37,6 +37,12 @@ T channel_value(const mf::MfOutput<T>& out, FitChannel c) {
 }
 
 /// All samples of a stage in one cost function: one Jet pass through the core per sample.
+/// Not on mf::evaluate_batch's float lanes: the Jacobian needs ceres::Jet (the lanes are float
+/// only), and the cost-only evaluations (T = double, one per trial step) take little of a fit
+/// (the staged MF 6.1 fit of `tread fit --synthesize` data, 2026-11-26: 171 of them 0.17 s, the
+/// 431 Jacobian evaluations 5.0 s), while their value decides whether Ceres takes a step and when
+/// it stops (function_tolerance 1e-7, relative): float residuals, ~1e-7 relative at best and up
+/// to 1e-5 of a channel's scale, would put noise above those tolerances near the optimum.
 struct StageResidual {
   const mf::MfParameters<double>* base;
   const std::vector<StageSample>* samples;

@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <ostream>
+#include <span>
 #include <stdexcept>
 #include <string_view>
 #include <type_traits>
@@ -19,6 +20,7 @@
 #include "io/ordered_pipeline.hpp"
 #include "io/shortest_number.hpp"
 #include "mf/mf_evaluate.hpp"
+#include "mf/mf_evaluate_batch.hpp"
 #include "mf/mf_fixed.hpp"
 #include "tir/tir_file.hpp"
 
@@ -95,6 +97,17 @@ struct Tally {
   int first_line = 0;
 };
 
+// Rows evaluated together by --batch: 32 blocks of 8 lanes, their rows, inputs and outputs
+// (≈ 60 KiB) staying in the core's cache between parsing, evaluating and formatting.
+constexpr std::size_t kBatchRows = 256;
+
+// A batch's rows as read, their inputs and their outputs.
+struct BatchScratch {
+  std::vector<InputRow> rows;
+  std::vector<MfInput<float>> inputs;
+  std::vector<MfOutput<float>> outputs;
+};
+
 // One chunk of the stream: its lines in, its formatted rows out. Reused from chunk to chunk.
 struct Chunk {
   host::LineChunk lines;
@@ -103,6 +116,7 @@ struct Chunk {
   std::size_t used = 0;
   std::size_t rows = 0;
   std::array<Tally, kLimitCount> outside{};
+  BatchScratch batch;  ///< --batch only (allocated on the chunk's first use)
 };
 
 // What every chunk of one evaluation shares (read only).
@@ -136,9 +150,8 @@ void check_range(const EvalSetup& setup, const InputRow& row, std::array<Tally, 
   }
 }
 
-// Parses, checks, evaluates (in T) and formats every row of `chunk`.
-template <typename T>
-void evaluate_chunk(const EvalSetup& setup, const MfParameters<T>& params, Chunk& chunk) {
+// Makes room in `chunk` for its formatted rows and clears what the last use left.
+void start_chunk(const EvalSetup& setup, Chunk& chunk) {
   const std::size_t needed = chunk.lines.lines * setup.row_bytes;
   if (chunk.capacity < needed) {
     chunk.text = std::make_unique_for_overwrite<char[]>(needed);
@@ -147,68 +160,125 @@ void evaluate_chunk(const EvalSetup& setup, const MfParameters<T>& params, Chunk
   chunk.used = 0;
   chunk.rows = 0;
   chunk.outside = {};
+}
+
+// A row's inputs in the evaluation's scalar.
+template <typename T>
+MfInput<T> input_of(const InputRow& row) {
+  MfInput<T> in;
+  in.fz_n = scalar_of<T>(row.value[0]);
+  in.kappa = scalar_of<T>(row.value[1]);
+  in.alpha_rad = scalar_of<T>(row.value[2]);
+  in.gamma_rad = scalar_of<T>(row.value[3]);
+  in.vx_mps = scalar_of<T>(row.value[4]);
+  in.phit_1pm = scalar_of<T>(row.value[5]);
+  in.p_pa = scalar_of<T>(row.value[6]);
+  return in;
+}
+
+// Writes the selected columns of `row` and its `result`, then the status, at `p`; returns the end.
+// Throws tir::TirError for a non-finite value under status ok.
+template <typename T>
+char* format_row(const EvalSetup& setup, const InputRow& row, const MfOutput<T>& result, char* p) {
   constexpr auto members = eval_output_members<T>();
   const std::array<EvalColumn, kEvalColumnCount>& columns = eval_columns();
-  char* p = chunk.text.get();
-  InputRow row;
-  // The text of each input written in the current row: an output that repeats it to the bit
-  // (kappa_1 and in_kappa, ...) copies it instead of formatting it again.
+  const bool ok = result.status == Status::ok;
+  // The text of each input written in this row: an output that repeats it to the bit (kappa_1
+  // and in_kappa, ...) copies it instead of formatting it again.
   std::array<const char*, kEvalInputColumns> input_text{};
   std::array<std::size_t, kEvalInputColumns> input_length{};
+  for (const std::size_t c : setup.columns) {
+    if (c < kEvalInputColumns) {
+      input_text[c] = p;
+      p = host::write_shortest(p, row.value[c]);
+      input_length[c] = static_cast<std::size_t>(p - input_text[c]);
+      *p++ = ',';
+      continue;
+    }
+    const double v = as_double(result.*(members[c - kEvalInputColumns]));
+    const int echoes = columns[c].echoes;
+    if (echoes >= 0 && input_text[static_cast<std::size_t>(echoes)] != nullptr &&
+        std::bit_cast<std::uint64_t>(v) ==
+            std::bit_cast<std::uint64_t>(row.value[static_cast<std::size_t>(echoes)])) {
+      const auto e = static_cast<std::size_t>(echoes);
+      std::memcpy(p, input_text[e], input_length[e]);
+      p += input_length[e];
+      *p++ = ',';
+      continue;
+    }
+    if (ok && !std::isfinite(v)) {
+      // Never a NaN or Inf under status ok. The core already writes a non-finite output as 0
+      // with Status::non_finite; this is the last check where numbers leave the program.
+      char number[host::kShortestNumberMaxChars];
+      char* end = host::write_shortest(number, v);
+      throw tir::TirError(setup.in_name, row.line,
+                          std::string(columns[c].name) + " = " + std::string(number, end) +
+                              " under status ok: the tyre's parameters give no finite "
+                              "result for this row (check the .tir for zero or missing "
+                              "stiffnesses and radii)");
+    }
+    p = host::write_shortest(p, v);
+    *p++ = ',';
+  }
+  const char* status = to_string(result.status);
+  const std::size_t n = std::strlen(status);
+  std::memcpy(p, status, n);
+  p += n;
+  *p++ = '\n';
+  return p;
+}
+
+// Parses, checks, evaluates (in T, row by row) and formats every row of `chunk`.
+template <typename T>
+void evaluate_chunk(const EvalSetup& setup, const MfParameters<T>& params, Chunk& chunk) {
+  start_chunk(setup, chunk);
+  char* p = chunk.text.get();
+  InputRow row;
   host::for_each_line(chunk.lines, [&](std::string_view line, int line_no) {
     if (!setup.table.parse_row(line, line_no, row)) return;
     check_range(setup, row, chunk.outside);
-    MfInput<T> in;
-    in.fz_n = scalar_of<T>(row.value[0]);
-    in.kappa = scalar_of<T>(row.value[1]);
-    in.alpha_rad = scalar_of<T>(row.value[2]);
-    in.gamma_rad = scalar_of<T>(row.value[3]);
-    in.vx_mps = scalar_of<T>(row.value[4]);
-    in.phit_1pm = scalar_of<T>(row.value[5]);
-    in.p_pa = scalar_of<T>(row.value[6]);
-    const MfOutput<T> result = evaluate(params, in, setup.options);
-    const bool ok = result.status == Status::ok;
-    input_text.fill(nullptr);
-    for (const std::size_t c : setup.columns) {
-      if (c < kEvalInputColumns) {
-        input_text[c] = p;
-        p = host::write_shortest(p, row.value[c]);
-        input_length[c] = static_cast<std::size_t>(p - input_text[c]);
-        *p++ = ',';
-        continue;
-      }
-      const double v = as_double(result.*(members[c - kEvalInputColumns]));
-      const int echoes = columns[c].echoes;
-      if (echoes >= 0 && input_text[static_cast<std::size_t>(echoes)] != nullptr &&
-          std::bit_cast<std::uint64_t>(v) ==
-              std::bit_cast<std::uint64_t>(row.value[static_cast<std::size_t>(echoes)])) {
-        const auto e = static_cast<std::size_t>(echoes);
-        std::memcpy(p, input_text[e], input_length[e]);
-        p += input_length[e];
-        *p++ = ',';
-        continue;
-      }
-      if (ok && !std::isfinite(v)) {
-        // Never a NaN or Inf under status ok. The core already writes a non-finite output as 0
-        // with Status::non_finite; this is the last check where numbers leave the program.
-        char number[host::kShortestNumberMaxChars];
-        char* end = host::write_shortest(number, v);
-        throw tir::TirError(setup.in_name, row.line,
-                            std::string(columns[c].name) + " = " + std::string(number, end) +
-                                " under status ok: the tyre's parameters give no finite "
-                                "result for this row (check the .tir for zero or missing "
-                                "stiffnesses and radii)");
-      }
-      p = host::write_shortest(p, v);
-      *p++ = ',';
-    }
-    const char* status = to_string(result.status);
-    const std::size_t n = std::strlen(status);
-    std::memcpy(p, status, n);
-    p += n;
-    *p++ = '\n';
+    p = format_row(setup, row, evaluate(params, input_of<T>(row), setup.options), p);
     ++chunk.rows;
   });
+  chunk.used = static_cast<std::size_t>(p - chunk.text.get());
+}
+
+// The same in float on mf::evaluate_batch's lanes, kBatchRows rows at a time: the rows are parsed
+// and checked, evaluated together, then formatted. A row that cannot be read (or, with --strict,
+// is out of range) is an error only after the rows before it are evaluated and formatted, so
+// that an error among those (a non-finite output under status ok) comes first, as row by row.
+void evaluate_chunk_batch(const EvalSetup& setup, const MfParameters<float>& params, Chunk& chunk) {
+  start_chunk(setup, chunk);
+  BatchScratch& batch = chunk.batch;
+  if (batch.rows.size() < kBatchRows) {
+    batch.rows.resize(kBatchRows);
+    batch.inputs.resize(kBatchRows);
+    batch.outputs.resize(kBatchRows);
+  }
+  char* p = chunk.text.get();
+  std::size_t pending = 0;
+  const auto flush = [&] {
+    evaluate_batch(params, std::span<const MfInput<float>>(batch.inputs).first(pending),
+                   setup.options, std::span<MfOutput<float>>(batch.outputs).first(pending));
+    for (std::size_t i = 0; i < pending; ++i) {
+      p = format_row(setup, batch.rows[i], batch.outputs[i], p);
+      ++chunk.rows;
+    }
+    pending = 0;
+  };
+  host::for_each_line(chunk.lines, [&](std::string_view line, int line_no) {
+    InputRow& row = batch.rows[pending];
+    try {
+      if (!setup.table.parse_row(line, line_no, row)) return;
+      check_range(setup, row, chunk.outside);
+    } catch (...) {
+      flush();  // may throw an earlier row's error instead
+      throw;
+    }
+    batch.inputs[pending] = input_of<float>(row);
+    if (++pending == kBatchRows) flush();
+  });
+  flush();
   chunk.used = static_cast<std::size_t>(p - chunk.text.get());
 }
 
@@ -275,6 +345,8 @@ MfCsvReport evaluate_csv(const MfParameters<double>& params, const MfOptions& op
       [&](Chunk& chunk) {
         if (csv.use_fixed) {
           evaluate_chunk(setup, params_q, chunk);
+        } else if (csv.use_batch) {
+          evaluate_chunk_batch(setup, params_f, chunk);
         } else if (csv.use_float) {
           evaluate_chunk(setup, params_f, chunk);
         } else {

@@ -13,7 +13,7 @@
 // (sim/mf/mf_eval_columns.hpp: the inputs as evaluated, in SI and ISO-W, in_Fz_N, in_kappa, ...,
 // and MfOutput values under MFeval's column names, Fx_N, Fy_N, ..., Rl_m, Re_m, kappa_1, ...),
 // then status. Numbers are written as the shortest text that reads back to the same double
-// (std::to_chars); --float results are the float values as doubles.
+// (std::to_chars); --float and --batch results are the float values as doubles.
 //
 // A stream: the input is read in chunks of lines, each chunk parsed, evaluated and formatted on a
 // worker thread (one per core), the chunks written in input order; memory is bounded by the
@@ -37,6 +37,10 @@ namespace tread::mf {
 
 struct MfCsvOptions {
   bool use_float = false;  ///< evaluate in float (parameters converted once), as on the ECU
+  /// Evaluate in float many rows at once on wide lanes (mf::evaluate_batch: 8 with AVX2): the
+  /// status of use_float and its values within 1e-5 of each column's scale, not bit for bit
+  /// (use_float is the ECU's scalar path). Before use_float; use_fixed before it.
+  bool use_batch = false;
   /// Evaluate in fixed point (fixed::Fixed64, Q31.32): the exact integer arithmetic of an
   /// FPU-less target; inputs and parameters rounded to Q31.32.
   bool use_fixed = false;

@@ -817,6 +817,11 @@ struct LoadedRadius62 {
 /// and lateral terms, in 1: the start is their root) to the least-deflection root, the one a tyre
 /// reaches when loaded from Romega. Should a lane still be unconverged after kNewtonSteps,
 /// bisection of its remaining bracket finishes it (lanes: a converged lane keeps its value).
+/// Outside the envelope, where 1 + PFZ1·dpi < 0 (a tyre of negative stiffness: PFZ1 > 1 at a low
+/// pressure with the limits off), Fz62 below Romega is positive only on a hump near Romega
+/// (where Fcy² > 1 + speed − Fx²); where the hump reaches Fz, a step that leaves the bracket
+/// evaluates Rl = 0, finds Fz62 below Fz there and answers 0, not the hump's root
+/// (Mf62LoadedRadius.PressureFactorAtOrBelowZero counts these points).
 template <typename T, typename P>
 LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) {
   constexpr int kNewtonSteps = 16;
@@ -825,21 +830,25 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
   // radius, 2.3e-10 m, is float's).
   const T tolerance = c.r0 * T(coarse ? 6.4e-6 : 1.8e-12);
   const T settle = c.r0 * T(coarse ? 1.2e-7 : 2.2e-16);  // ε·R0: the error aimed at
-  // Fz62(Romega) is at most (1 + speed − Fx²)(1 + PFZ1·dpi)·stiffness(ρz): only where that bound
-  // exceeds Fz (light, cambered wheels) is it evaluated.
+  // Fz62(Romega) = (1 + speed − Fx² − Fcy²)(1 + PFZ1·dpi)·stiffness(ρz) is at most the pow-free
+  // bound (1 + speed − Fx²)(1 + PFZ1·dpi)·stiffness(ρz) where 1 + PFZ1·dpi > 0: it is evaluated
+  // only where that bound exceeds Fz (light, cambered wheels) or where the pressure factor is not
+  // positive (PFZ1 > 1 at a low pressure with the limits off, or a pressure below 0), where
+  // Fz62(Romega) may exceed Fz with the bound below it.
   Fz62PowMemo<T> memo;
   T slope_romega = T(0);
   const T rho_romega = fz62_deflection(c, c.romega, slope_romega);
   const T rho_romega_r0 = rho_romega / c.r0;
   const T bound = c.base * c.pressure *
                   (c.q_fz1 * rho_romega_r0 + c.q_fz2 * rho_romega_r0 * rho_romega_r0) * c.fz0;
-  auto beyond = bound > fz_target;
-  if (any_lane(beyond)) {
+  const auto evaluated = bound > fz_target || !(c.pressure > T(0));
+  auto beyond = T(0) > T(0);  // no lane
+  if (any_lane(evaluated)) {
     T rho_unused = T(0);
-    beyond = beyond && fz62(c, c.romega, slope_romega, rho_unused, memo) > fz_target;
+    beyond = evaluated && fz62(c, c.romega, slope_romega, rho_unused, memo) > fz_target;
     // Only those lanes keep the pow's memo (a lane's result must not depend on its neighbours).
-    memo.base = if_else(bound > fz_target, memo.base, T(0));
-    memo.value = if_else(bound > fz_target, memo.value, T(0));
+    memo.base = if_else(evaluated, memo.base, T(0));
+    memo.value = if_else(evaluated, memo.value, T(0));
   }
   const T lo_end = if_else(beyond, c.romega, T(0));
   const T hi_end = if_else(beyond, c.romega + c.width, c.romega);

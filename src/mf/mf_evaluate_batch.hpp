@@ -3,10 +3,11 @@
 // instantiated on 8 lanes on x86-64 (AVX2 and FMA where the CPU has them, x86-64-v3; else SSE
 // pairs), 16 on request where the CPU has AVX-512 (x86-64-v4; the same bits, not faster on every
 // CPU: see mf_evaluate_batch.cpp); 4 (NEON) on aarch64 and plain code elsewhere. For offline work
-// over millions of operating points (maps, sweeps, `tread mf eval
-// --float`). Each wheel's results are those evaluate_four gives it on the same CPU, bit for bit
-// (the lanes compute the same operations; tests/mf/mf_evaluate_batch_test.cpp), whatever the
-// batch's length and the wheel's place in it.
+// over millions of operating points (`tread mf eval --batch`, sweeps). Each wheel's results are
+// those evaluate_four gives it on the same CPU within 1e-5 of each output's scale, with the same
+// status (about 9 wheels in 10 bit for bit: GCC contracts a few a·b + c into FMAs differently at
+// the wider widths; tests/mf/mf_evaluate_batch_test.cpp), and do not depend on the batch's length
+// or the wheel's place in it (bit for bit).
 
 #include <cstddef>
 #include <span>

@@ -334,5 +334,117 @@ TEST(Mf62LoadedRadius, NewtonConvergesWithinItsBudgetOverTheEnvelope) {
   }
 }
 
+// Where the pressure factor of Fz62, 1 + PFZ1·dpi, is ≤ 0 (a file with PFZ1 > 1 at a low pressure,
+// with the limits off: the pressure is not held at PRESMIN), the pow-free bound on Fz62(Romega)
+// that decides whether Fz62(Romega) is evaluated, (1 + speed − Fx²)(1 + PFZ1·dpi)·stiffness(ρz),
+// is no bound: it is ≤ 0 while Fz62(Romega) = (1 + speed − Fx² − Fcy²)(1 + PFZ1·dpi)·stiffness(ρz)
+// exceeds Fz where Fcy² > 1 + speed − Fx² (large Fy, cambered). Deciding the branch from that
+// bound put Rl at Romega (the end of the wrong branch) instead of the least-deflection root above
+// it. Counts of one scan over loads, cambers, slips and pressures, limits off: points with a
+// pressure factor ≤ 0, of those the points with the root above Romega, and the humps missed
+// (below).
+struct BoundScan {
+  int factor_not_positive = 0;
+  int beyond_romega = 0;
+  int hump_missed = 0;
+  double worst_float = 0.0;
+};
+
+// Rl within 1e-10 m (double) and 2e-5 m (float) of the reference wherever the pressure factor is
+// positive and wherever the root lies above Romega. Known and left alone: below Romega with a
+// pressure factor < 0 the tyre has a negative stiffness — Fz62 is negative at large deflections
+// and positive only on a hump near Romega, where Fcy² is large — and where the hump reaches Fz the
+// solver may answer Rl = 0 (its far end, evaluated when a Newton step leaves the bracket, is on
+// the same side of Fz: "no root on this branch") instead of the hump's least-deflection root.
+// Those points are counted, not compared.
+BoundScan scan_bound(const MfParameters<double>& p, const std::vector<double>& pressures) {
+  const MfParameters<float> pf = convert_parameters<float>(p);
+  const MfOptions o = options_from_use_mode(211).value;  // limits off: the pressure as given
+  const std::array<double, 6> loads = {100.0,      1000.0,         3000.0,
+                                       p.fnomin_n, 2 * p.fnomin_n, p.fzmax_n};
+  const std::array<double, 8> gammas = {-1.0, -0.5, -0.1, 0.0, 0.05, 0.1, 0.5, 1.0};
+  const std::array<std::array<double, 2>, 5> slips = {
+      {{0.0, 0.0}, {0.1, 0.2}, {-0.1, -0.2}, {0.0, 0.5}, {0.05, -0.5}}};
+  const double r0 = p.unloaded_radius_m;
+  BoundScan scan;
+  for (const double fz : loads) {
+    for (const double gamma : gammas) {
+      for (const auto& slip : slips) {
+        for (const double ratio : pressures) {
+          const EnvelopePoint e{fz, slip[0], slip[1], gamma, 16.7, ratio};
+          const MfOutput<double> out = evaluate(p, input_at<double>(p, e), o);
+          const MfOutput<float> outf = evaluate(pf, input_at<float>(p, e), o);
+          const double dpi = (out.p_pa - p.nompres_pa) / p.nompres_pa;
+          const double expected = rl_least_deflection(p, out, dpi, fz);
+          const double factor = 1.0 + p.pfz1 * dpi;
+          const std::string where =
+              "Fz " + std::to_string(fz) + " kappa " + std::to_string(slip[0]) + " alpha " +
+              std::to_string(slip[1]) + " gamma " + std::to_string(gamma) + " p " +
+              std::to_string(ratio) + " (1 + PFZ1·dpi = " + std::to_string(factor) + ")";
+          bool beyond = false;
+          const bool fails = !(factor > 0.0);
+          if (fails) {
+            ++scan.factor_not_positive;
+            const double w = out.omega_radps * r0 / p.longvl_mps;
+            const double romega = r0 * (p.q_re0 + p.q_v1 * w * w);
+            beyond = fz62_reference(p, out.gamma_rad, out.omega_radps, dpi, out.fx_n, out.fy_n,
+                                    romega) > fz;
+            if (beyond) ++scan.beyond_romega;
+            if (!beyond && !(out.rl_m > 0.0) && expected > 0.0) {
+              ++scan.hump_missed;
+              continue;
+            }
+          }
+          EXPECT_NEAR(out.rl_m, expected, 1e-10) << where;
+          if (fails && !beyond && !(outf.rl_m > 0.0F)) continue;  // as above, in float
+          EXPECT_NEAR(outf.rl_m, expected, 2e-5) << "float " << where;
+          scan.worst_float = std::max(scan.worst_float, std::fabs(double(outf.rl_m) - expected));
+        }
+      }
+    }
+  }
+  return scan;
+}
+
+// A file with PFZ1 > 1 at a low pressure: MF 6.2 sample file with PFZ1 = 1.5, pressures down to
+// 5 % of NOMPRES (1 + PFZ1·dpi down to −0.425).
+TEST(Mf62LoadedRadius, PressureFactorAtOrBelowZero) {
+  MfParameters<double> p = load("MagicFormula62_Parameters.tir");
+  ASSERT_EQ(p.fit_type, FitType::mf62);
+  p.pfz1 = 1.5;
+  const BoundScan scan = scan_bound(p, {0.05, 0.2, 1.0 / 3.0, 0.3, 0.6});  // × NOMPRES
+  // The test reaches the region: a pressure factor ≤ 0, and there Fz62(Romega) > Fz.
+  EXPECT_GT(scan.factor_not_positive, 100);
+  EXPECT_GT(scan.beyond_romega, 10);
+  std::printf(
+      "1 + PFZ1·dpi <= 0 at %d points: the root above Romega at %d, the hump below Romega "
+      "missed (Rl = 0) at %d; |Rl - reference| float %.1e m\n",
+      scan.factor_not_positive, scan.beyond_romega, scan.hump_missed, scan.worst_float);
+
+  const MfParameters<float> pf = convert_parameters<float>(p);
+  const MfOptions o = options_from_use_mode(211).value;
+  // Four lanes: a wheel whose pressure factor is ≤ 0 beside wheels where it is positive; each
+  // wheel's Rl is what it gets alone (its block filled with copies of it), bit for bit.
+  for (const double fz : {100.0, 1000.0, 3000.0, p.fnomin_n, 2 * p.fnomin_n, p.fzmax_n}) {
+    for (const double gamma : {-0.5, 0.1, 1.0}) {
+      std::array<MfInput<float>, 4> mixed;
+      for (std::size_t k = 0; k < 4; ++k) {
+        mixed[k] = input_at<float>(p, {fz, 0.05, 0.2, gamma, 16.7, k % 2 == 0 ? 0.05 : 1.0});
+      }
+      const std::array<MountedSide, 4> sides{};
+      std::array<MfOutput<float>, 4> together;
+      evaluate_four(pf, mixed, o, sides, together);
+      for (std::size_t k = 0; k < 4; ++k) {
+        std::array<MfInput<float>, 4> same;
+        same.fill(mixed[k]);
+        std::array<MfOutput<float>, 4> alone;
+        evaluate_four(pf, same, o, sides, alone);
+        EXPECT_EQ(together[k].rl_m, alone[0].rl_m) << "Fz " << fz << " gamma " << gamma << ' ' << k;
+        EXPECT_NEAR(together[k].rl_m, evaluate(pf, mixed[k], o).rl_m, 2e-5);
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace tread::mf

@@ -55,10 +55,11 @@ TEST(MfCommand, EvalMatchesMfevalGrid) {
          << ref.at(r, "in_Vx_mps") << ",0\n";
     }
   }
-  // double; float (as on an ECU with an FPU); fixed point (Q31.32, as on an FPU-less ECU: within
-  // 0.001 % of each output's scale, the issue asks 0.1 % of the peak).
-  for (const std::string arithmetic : {"", "--float", "--fixed"}) {
-    const bool use_float = arithmetic == "--float";
+  // double; float (as on an ECU with an FPU); float on wide lanes, many rows at once; fixed point
+  // (Q31.32, as on an FPU-less ECU: within 0.001 % of each output's scale, the issue asks 0.1 % of
+  // the peak).
+  for (const std::string arithmetic : {"", "--float", "--batch", "--fixed"}) {
+    const bool use_float = arithmetic == "--float" || arithmetic == "--batch";
     const bool use_fixed = arithmetic == "--fixed";
     const auto out_csv =
         dir / ("out" + (arithmetic.empty() ? std::string() : arithmetic.substr(1)) + ".csv");
@@ -126,6 +127,45 @@ TEST(MfCommand, BadInputNamesFileAndLine) {
 }
 
 void write(const std::filesystem::path& path, const std::string& text);
+
+// --batch is float: with --float or --fixed it is refused, and it names a bad cell's line as
+// --float does.
+TEST(MfCommand, BatchExcludesFloatAndFixedAndNamesABadLine) {
+  const auto tir = tread::testing::tyre_file("MagicFormula62_Parameters.tir");
+  const auto dir = tmp_dir();
+  const auto in = dir / "batch.csv";
+  std::string text = "Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps\n";
+  for (int i = 0; i < 300; ++i) text += "4000,0.01,0.02,0.01,16\n";
+  write(in, text);
+  const auto out = dir / "batch_out.csv";
+  for (const char* other : {"--float", "--fixed"}) {
+    EXPECT_NE(run("mf eval --batch " + std::string(other) + " --tir " + tir.string() + " --input " +
+                      in.string() + " --output " + out.string(),
+                  dir / "excl.txt"),
+              0)
+        << other;
+    EXPECT_NE(slurp(dir / "excl.txt").find("excludes"), std::string::npos)
+        << slurp(dir / "excl.txt");
+    EXPECT_FALSE(std::filesystem::exists(out));
+  }
+  ASSERT_EQ(run("mf eval --batch --columns all --tir " + tir.string() + " --input " + in.string() +
+                    " --output " + out.string(),
+                dir / "ok.txt"),
+            0)
+      << slurp(dir / "ok.txt");
+  EXPECT_NE(slurp(dir / "ok.txt").find("300 rows"), std::string::npos) << slurp(dir / "ok.txt");
+  std::filesystem::remove(out);
+  text += "4000,0.01,nan,0.01,16\n";
+  for (int i = 0; i < 20; ++i) text += "4000,0.01,0.02,0.01,16\n";
+  write(in, text);
+  EXPECT_NE(run("mf eval --batch --tir " + tir.string() + " --input " + in.string() + " --output " +
+                    out.string(),
+                dir / "bad.txt"),
+            0);
+  EXPECT_NE(slurp(dir / "bad.txt").find("batch.csv:302: alpha_rad"), std::string::npos)
+      << slurp(dir / "bad.txt");
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
 
 std::string first_line_after_comment(const std::filesystem::path& csv) {
   std::ifstream in(csv);

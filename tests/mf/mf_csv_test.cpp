@@ -1,7 +1,8 @@
 // mf::evaluate_csv (sim/mf/mf_csv.hpp) as a stream: the output does not depend on the chunk size
 // or the number of worker threads, rows keep their order, numbers are the scalar mf::evaluate's to
 // the bit, errors name the line of the first bad row in input order, and skipping the extras for
-// a selection without them changes no selected output. Also mf::select_eval_columns.
+// a selection without them changes no selected output. Also mf::select_eval_columns, and --batch
+// (float on mf::evaluate_batch's lanes) against the scalar float path.
 #include "mf/mf_csv.hpp"
 
 #include <gtest/gtest.h>
@@ -9,9 +10,12 @@
 #include <algorithm>
 #include <bit>
 #include <charconv>
+#include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <limits>
 #include <random>
 #include <sstream>
 #include <string>
@@ -81,13 +85,19 @@ MfCsvOptions stream_options(std::size_t chunk_lines, unsigned threads) {
   return csv;
 }
 
-std::string evaluate(const std::string& input, const MfCsvOptions& csv,
-                     MfCsvReport* report = nullptr, const MfOptions& options = {}) {
+std::string evaluate_with(const MfParameters<double>& params, const std::string& input,
+                          const MfCsvOptions& csv, MfCsvReport* report = nullptr,
+                          const MfOptions& options = {}) {
   std::istringstream in(input);
   std::ostringstream out;
-  const MfCsvReport r = tread::mf::evaluate_csv(mf61(), options, csv, in, "in.csv", out);
+  const MfCsvReport r = tread::mf::evaluate_csv(params, options, csv, in, "in.csv", out);
   if (report != nullptr) *report = r;
   return out.str();
+}
+
+std::string evaluate(const std::string& input, const MfCsvOptions& csv,
+                     MfCsvReport* report = nullptr, const MfOptions& options = {}) {
+  return evaluate_with(mf61(), input, csv, report, options);
 }
 
 std::vector<std::string> split(const std::string& line, char sep = ',') {
@@ -423,6 +433,294 @@ TEST(MfCsvStream, TheFirstBadRowInInputOrderIsTheError) {
   csv.strict = true;
   const std::string s = error_of(strict, csv);
   EXPECT_NE(s.find("in.csv:3001: alpha_rad = 5 outside the model's range"), std::string::npos) << s;
+}
+
+// --batch: the rows of a chunk evaluated in float on mf::evaluate_batch's lanes (256 rows at a
+// time, 8 lanes on x86-64) instead of row by row. Against --float (the scalar float path) over
+// every shipped Magic Formula tyre, modes with and without limits, α* and turn slip, all columns:
+// the same rows, inputs as read, the same status and every output within 2e-5 of its column's
+// largest magnitude. The batch equals evaluate_four within 1e-5 of that scale
+// (tests/mf/mf_evaluate_batch_test.cpp), evaluate_four the scalar path within float rounding
+// (the lanes' elementary functions are not libm's; mf_evaluate_four_test.cpp), so the two add
+// up: on these inputs every column is within 1e-5 except the residual moment Mzr_Nm, a
+// difference of larger terms, at two rows of MF 6.1 / MF 6.2 at large slip (κ 0.85, α 0.59 rad
+// at 0.58 m/s, limits off; κ −0.72 at Fz 22.6 kN): 1.6e-5 and 1.3e-5 of its scale, where the two
+// are 0.45e-5 / 1.15e-5 and 0.8e-5 / 0.45e-5 of it from double (--float / --batch): float
+// rounding either way, not a lane's error. The worst is printed. The
+// row count is no multiple of the lanes or the batch, and chunks of 333 lines end mid-block, so
+// that partial blocks (padded by evaluate_batch) are everywhere; blank and comment lines shift
+// the rows against the blocks.
+
+// Operating points inside and well outside the usual ranges, with a phit column.
+std::string wide_input(std::size_t n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> fz(-500.0, 25000.0), kappa(-1.2, 1.2), alpha(-0.8, 0.8),
+      gamma(-0.25, 0.25), vx(-5.0, 60.0), phit(-0.5, 0.5), p(0.0, 450000.0);
+  std::string s = "Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps,phit_1pm,P_Pa\n";
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i % 97 == 13) s += "\n";
+    if (i % 151 == 40) s += "# a comment between rows\n";
+    s += text(fz(rng)) + ',' + text(kappa(rng)) + ',' + text(alpha(rng)) + ',' + text(gamma(rng)) +
+         ',' + text(i % 41 == 7 ? 0.0 : vx(rng)) + ',' + text(i % 3 == 0 ? phit(rng) : 0.0) + ',' +
+         text(i % 5 == 0 ? 0.0 : p(rng)) + '\n';
+  }
+  return s;
+}
+
+// Rows that are numbers to the reader but not sensible inputs: beyond float's range (inf in
+// float), subnormal, zero load and speed, negative pressure.
+const std::vector<std::string>& wild_rows() {
+  static const std::vector<std::string> rows = {"1e39,0.1,0.05,0,16,0,0",
+                                                "4000,-1e39,0,0,16,0,0",
+                                                "4000,0,1e39,0.01,16,0,0",
+                                                "4000,0.05,0.05,-1e39,16,0,0",
+                                                "4000,0.05,0.05,0,1e39,0,0",
+                                                "4000,0.05,0.05,0,16,1e39,0",
+                                                "4000,0.05,0.05,0,16,0,1e39",
+                                                "1e-45,1e-45,1e-45,1e-45,1e-45,1e-45,1e-45",
+                                                "0,0,0,0,0,0,0",
+                                                "-3e38,3e38,-3e38,3e38,-3e38,3e38,-3e38",
+                                                "4000,0.1,0.1,0.05,16,0,-2e5",
+                                                "1e30,0.1,0.1,0.05,16,0.2,2e5"};
+  return rows;
+}
+
+struct Cells {
+  std::vector<double> value;
+  std::string status;
+};
+
+std::vector<Cells> table_of(const std::string& output) {
+  std::vector<Cells> rows;
+  for (const std::string& line : data_lines(output)) {
+    std::vector<std::string> cells = split(line);
+    Cells c;
+    c.status = cells.back();
+    cells.pop_back();
+    for (const std::string& cell : cells) c.value.push_back(number(cell));
+    rows.push_back(std::move(c));
+  }
+  return rows;
+}
+
+// The largest |--batch − --float| relative to the column's scale, and where.
+struct Worst {
+  double ratio = 0.0;
+  std::string where;
+  std::size_t rows = 0;       // rows compared
+  std::size_t bit_equal = 0;  // rows with every value the same to the bit
+};
+
+// Compares --batch with --float row by row; `ordinary` rows (flagged per row) set the column
+// scales, a row outside them is compared within 2e-5 of the larger of that scale and its value.
+void expect_batch_as_float(const std::string& batch, const std::string& scalar,
+                           const std::vector<bool>& ordinary, const std::string& what,
+                           Worst* worst) {
+  ASSERT_EQ(header_line(batch), header_line(scalar)) << what;
+  const std::vector<Cells> b = table_of(batch);
+  const std::vector<Cells> f = table_of(scalar);
+  ASSERT_EQ(b.size(), f.size()) << what;
+  ASSERT_EQ(b.size(), ordinary.size()) << what;
+  std::vector<double> scale(tread::mf::kEvalColumnCount, 0.0);
+  for (std::size_t r = 0; r < f.size(); ++r) {
+    if (!ordinary[r]) continue;
+    for (std::size_t c = 0; c < scale.size(); ++c) {
+      scale[c] = std::max(scale[c], std::fabs(f[r].value[c]));
+    }
+  }
+  const std::vector<std::string> names = split(header_line(scalar));
+  for (std::size_t r = 0; r < f.size(); ++r) {
+    ASSERT_EQ(b[r].status, f[r].status) << what << " row " << r;
+    bool same = true;
+    for (std::size_t c = 0; c < scale.size(); ++c) {
+      const double expected = f[r].value[c];
+      const double got = b[r].value[c];
+      same = same && bits(got) == bits(expected);
+      if (c < tread::mf::kEvalInputColumns) {
+        ASSERT_EQ(bits(got), bits(expected)) << what << " row " << r << ' ' << names[c];
+        continue;
+      }
+      const double column_scale = std::max(scale[c], ordinary[r] ? 0.0 : std::fabs(expected));
+      const double difference = std::fabs(got - expected);
+      ASSERT_LE(difference, 2e-5 * column_scale)
+          << what << " row " << r << ' ' << names[c] << ": " << got << " vs " << expected;
+      if (difference > worst->ratio * column_scale) {
+        worst->ratio = difference / column_scale;
+        worst->where = what + " row " + std::to_string(r) + ' ' + names[c];
+      }
+    }
+    ++worst->rows;
+    worst->bit_equal += same ? 1U : 0U;
+  }
+}
+
+TEST(MfCsvBatch, AgreesWithTheScalarFloatPathOverEveryTyre) {
+  MfCsvOptions csv = stream_options(333, 2);
+  csv.columns = tread::mf::select_eval_columns("all").columns;
+  MfCsvOptions as_float = csv;
+  as_float.use_float = true;
+  MfCsvOptions as_batch = csv;
+  as_batch.use_batch = true;
+  Worst worst;
+  int tyres = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(tread::testing::tyres_dir())) {
+    if (entry.path().extension() != ".tir") continue;
+    MfParameters<double> params;
+    try {
+      params = tread::mf::load_mf_parameters(entry.path()).params;
+    } catch (const std::exception&) {
+      continue;  // PAC89 and other files `mf eval` refuses
+    }
+    ++tyres;
+    const std::string name = entry.path().filename().string();
+    // 1003 ordinary rows, then the same with the wild rows among them, every 83rd row.
+    const std::string input = wide_input(1003, 11);
+    std::vector<std::string> lines = split(input, '\n');
+    lines.pop_back();
+    std::string mixed = lines[0] + '\n';
+    std::vector<bool> ordinary;
+    std::size_t wild = 0;
+    for (std::size_t l = 1; l < lines.size(); ++l) {
+      if (l % 83 == 50) {
+        mixed += wild_rows()[wild++ % wild_rows().size()] + '\n';
+        ordinary.push_back(false);
+      }
+      mixed += lines[l] + '\n';
+      if (!lines[l].empty() && lines[l][0] != '#') ordinary.push_back(true);
+    }
+    const std::vector<bool> all_ordinary(1003, true);
+    for (const int mode : {111, 121, 112, 211, 222}) {
+      const MfOptions o = tread::mf::options_from_use_mode(mode).value;
+      const std::string what = name + " mode " + std::to_string(mode);
+      const std::string batch = evaluate_with(params, input, as_batch, nullptr, o);
+      expect_batch_as_float(batch, evaluate_with(params, input, as_float, nullptr, o), all_ordinary,
+                            what, &worst);
+      const std::string batch_mixed = evaluate_with(params, mixed, as_batch, nullptr, o);
+      expect_batch_as_float(batch_mixed, evaluate_with(params, mixed, as_float, nullptr, o),
+                            ordinary, what + " with wild rows", &worst);
+      // A row's values do not depend on its neighbours or its place in a block: the ordinary
+      // rows are the same to the bit with the wild rows among them.
+      const std::vector<std::string> plain_rows = data_lines(batch);
+      const std::vector<std::string> mixed_rows = data_lines(batch_mixed);
+      ASSERT_EQ(mixed_rows.size(), ordinary.size());
+      std::size_t next = 0;
+      for (std::size_t r = 0; r < mixed_rows.size(); ++r) {
+        if (ordinary[r]) {
+          EXPECT_EQ(mixed_rows[r], plain_rows[next++]) << what << " row " << r;
+        }
+      }
+    }
+  }
+  EXPECT_GE(tyres, 8);
+  std::printf(
+      "[ compared ] %zu rows with --float, %zu bit for bit; worst %.2g of the column's "
+      "scale (%s)\n",
+      worst.rows, worst.bit_equal, worst.ratio, worst.where.c_str());
+}
+
+TEST(MfCsvBatch, OutputIsTheSameForAnyChunkSizeAndThreadCount) {
+  const std::string input = wide_input(2003, 12);
+  MfCsvOptions csv = stream_options(1 << 20, 1);
+  csv.use_batch = true;
+  csv.columns = tread::mf::select_eval_columns("all").columns;
+  const std::string one_chunk = evaluate(input, csv);
+  EXPECT_EQ(data_lines(one_chunk).size(), 2003U);
+  for (const auto& [chunk, threads] : std::vector<std::pair<std::size_t, unsigned>>{
+           {1, 2}, {7, 3}, {255, 2}, {256, 2}, {257, 4}, {2100, 2}}) {
+    MfCsvOptions c = csv;
+    c.chunk_lines = chunk;
+    c.threads = threads;
+    EXPECT_EQ(evaluate(input, c), one_chunk) << chunk << " lines, " << threads;
+  }
+  // The default columns (no extras: evaluated without them): the same cells as in all columns.
+  MfCsvOptions defaults = csv;
+  defaults.columns = tread::mf::default_eval_columns();
+  const std::vector<std::string> def = data_lines(evaluate(input, defaults));
+  const std::vector<std::string> all = data_lines(one_chunk);
+  ASSERT_EQ(def.size(), all.size());
+  for (std::size_t r = 0; r < def.size(); ++r) {
+    const std::vector<std::string> d = split(def[r]);
+    const std::vector<std::string> a = split(all[r]);
+    for (std::size_t c = 0; c < 13; ++c) EXPECT_EQ(d[c], a[c]) << r;
+    EXPECT_EQ(d.back(), a.back()) << r;
+  }
+}
+
+// The errors of --batch are those of --float: the first bad row in input order, named by its line,
+// whether it is a cell that is no number (NaN, inf, text) in the middle of a batch, a row with the
+// wrong number of cells, or (--strict) a row outside the range before a later bad cell in the same
+// batch.
+TEST(MfCsvBatch, TheFirstBadRowInInputOrderIsTheError) {
+  const std::vector<Point> pts = points(3000, 7);
+  const std::string input = csv_text(pts);
+  const auto line_start = [&](const std::string& text, int line) {
+    std::size_t at = 0;
+    for (int i = 1; i < line; ++i) at = text.find('\n', at) + 1;
+    return at;
+  };
+  const auto with = [&](const std::string& text, int line, const std::string& row) {
+    std::string t = text;
+    t.replace(line_start(t, line), 0, row + '\n');
+    return t;
+  };
+  const auto errors = [&](const std::string& text, bool strict) {
+    std::vector<std::string> e;
+    for (const bool batch : {false, true}) {
+      MfCsvOptions csv = stream_options(1000, 2);
+      csv.use_float = !batch;
+      csv.use_batch = batch;
+      csv.strict = strict;
+      e.push_back(error_of(text, csv));
+    }
+    return e;
+  };
+  const std::string nan_cell = with(input, 1130, "4000,nan,0,0,10,250000");
+  for (const std::string& e : errors(nan_cell, false)) {
+    EXPECT_NE(e.find("in.csv:1130: kappa: 'nan' is not a finite number"), std::string::npos) << e;
+  }
+  const std::string inf_cell = with(nan_cell, 1010, "4000,0,inf,0,10,250000");
+  for (const std::string& e : errors(inf_cell, false)) {
+    EXPECT_NE(e.find("in.csv:1010: alpha_rad: 'inf' is not a finite number"), std::string::npos)
+        << e;
+  }
+  const std::string short_row = with(inf_cell, 1005, "1,2");
+  for (const std::string& e : errors(short_row, false)) {
+    EXPECT_NE(e.find("in.csv:1005: expected 6 cells, found 2"), std::string::npos) << e;
+  }
+  // --strict: a row outside the range in the same batch, before the bad cells.
+  const std::string strict = with(short_row, 1003, "4000,0,5,0,10,250000");
+  for (const std::string& e : errors(strict, true)) {
+    EXPECT_NE(e.find("in.csv:1003: alpha_rad = 5 outside the model's range"), std::string::npos)
+        << e;
+  }
+  // Without --strict the range is counted and the first bad cell is the error.
+  for (const std::string& e : errors(strict, false)) {
+    EXPECT_NE(e.find("in.csv:1006: expected 6 cells, found 2"), std::string::npos) << e;
+  }
+}
+
+// The --batch report is --float's: rows, mapping, the rows outside each limit and their first
+// lines.
+TEST(MfCsvBatch, ReportsTheSameRangeCounts) {
+  const std::string input = wide_input(1500, 13);
+  MfCsvOptions as_float = stream_options(400, 2);
+  as_float.use_float = true;
+  MfCsvOptions as_batch = stream_options(400, 2);
+  as_batch.use_batch = true;
+  MfCsvReport f;
+  MfCsvReport b;
+  evaluate(input, as_float, &f);
+  evaluate(input, as_batch, &b);
+  EXPECT_EQ(b.rows, 1500U);
+  EXPECT_EQ(b.rows, f.rows);
+  EXPECT_EQ(b.mapping, f.mapping);
+  ASSERT_EQ(b.out_of_range.size(), f.out_of_range.size());
+  EXPECT_GE(b.out_of_range.size(), 6U);
+  for (std::size_t i = 0; i < b.out_of_range.size(); ++i) {
+    EXPECT_EQ(b.out_of_range[i].limit, f.out_of_range[i].limit);
+    EXPECT_EQ(b.out_of_range[i].rows, f.out_of_range[i].rows);
+    EXPECT_EQ(b.out_of_range[i].first_line, f.out_of_range[i].first_line);
+  }
 }
 
 }  // namespace
