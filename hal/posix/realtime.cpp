@@ -1,12 +1,15 @@
 #include "posix/realtime.hpp"
 
+#include <fcntl.h>
 #include <malloc.h>
 #include <pthread.h>
 #include <sched.h>
 #include <sys/mman.h>
+#include <unistd.h>
 
 #include <array>
 #include <cerrno>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 
@@ -86,6 +89,20 @@ RealtimeReport apply_realtime(const RealtimeRequest& request) {
       refuse(
           "SCHED_FIFO priority " + std::to_string(request.fifo_priority), rc,
           "Needs root or CAP_SYS_NICE (or an rtprio limit); running with the default scheduler.");
+    }
+  }
+  if (request.no_idle_states) {
+    // Held open for the process's lifetime: closing it would end the request.
+    static int qos_fd = -1;
+    if (qos_fd < 0) {
+      qos_fd = ::open("/dev/cpu_dma_latency", O_WRONLY | O_CLOEXEC);
+    }
+    const std::int32_t zero = 0;
+    if (qos_fd >= 0 && ::write(qos_fd, &zero, sizeof(zero)) == static_cast<ssize_t>(sizeof(zero))) {
+      report.messages += "cpu_dma_latency: 0 us (no deep idle states)\n";
+    } else {
+      refuse("/dev/cpu_dma_latency", errno,
+             "Needs root (or write access to it); idle states may add to the wake-up latency.");
     }
   }
   if (request.prefault_stack_bytes > 0U) {

@@ -19,6 +19,10 @@ struct RealtimeRequest {
   /// stay so) before the loop runs: no page fault on the first deep call.
   std::size_t prefault_stack_bytes{0};
   std::size_t prefault_heap_bytes{0};  ///< with lock_memory: heap reserve touched at set-up
+  /// Ask the kernel's power management for a CPU wake-up latency of 0 (PM QoS: /dev/cpu_dma_latency
+  /// held open with 0 written, as cyclictest does) for as long as the process runs: no deep idle
+  /// states between cycles (in a VM: the guest polls instead of halting its virtual CPU).
+  bool no_idle_states{false};
 };
 
 struct RealtimeReport {

@@ -52,8 +52,10 @@ void add_demo_command(CLI::App& app) {
       ->capture_default_str();
   demo->add_option("--out", settings.out_dir, "directory for the trace and plots")
       ->capture_default_str();
-  demo->add_option("--rt-priority", settings.realtime.fifo_priority,
-                   "SCHED_FIFO priority 1..99 (0: leave)")
+  demo->add_option(
+          "--rt-priority", settings.realtime.fifo_priority,
+          "SCHED_FIFO priority 1..99 (0: leave); with it, /dev/cpu_dma_latency is held at 0 "
+          "(no deep idle states, as cyclictest does)")
       ->check(CLI::Range(0, 99));
   demo->add_flag("--mlock", settings.realtime.lock_memory, "lock all memory (mlockall)");
   demo->add_option("--cpu", settings.realtime.cpu, "pin the node's thread to this CPU");

@@ -40,8 +40,10 @@ void add_node_command(CLI::App& app) {
   cmd->add_option("--gpio-chip", live.gpio_chip,
                   "libgpiod chip for the cycle pin (e.g. gpiochip0)");
   cmd->add_option("--gpio-cycle-line", live.gpio_cycle_line, "line offset of the cycle pin");
-  cmd->add_option("--rt-priority", live.realtime.fifo_priority,
-                  "SCHED_FIFO priority 1..99 (0: leave)")
+  cmd->add_option(
+         "--rt-priority", live.realtime.fifo_priority,
+         "SCHED_FIFO priority 1..99 (0: leave); with it, /dev/cpu_dma_latency is held at 0 "
+         "(no deep idle states, as cyclictest does)")
       ->check(CLI::Range(0, 99));
   cmd->add_flag("--mlock", live.realtime.lock_memory, "lock all memory (mlockall)");
   cmd->add_option("--cpu", live.realtime.cpu, "pin the loop to this CPU");

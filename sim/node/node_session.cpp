@@ -63,7 +63,9 @@ SessionReport run_live(const NodeSettings& settings, const LiveOptions& options,
       report.notes += "GPIO: " + pin.error() + "; running without the cycle pin\n";
     }
   }
-  const hal::RealtimeReport rt = hal::apply_realtime(options.realtime);
+  hal::RealtimeRequest request = options.realtime;
+  request.no_idle_states = request.fifo_priority > 0;  // a real-time run, as cyclictest
+  const hal::RealtimeReport rt = hal::apply_realtime(request);
   report.notes += rt.messages;
   // What was granted or refused, said at once too, not only in the report at the end (a refusal
   // means the run that follows is not real-time).

@@ -80,6 +80,7 @@ DemoResult run_threads(const DemoSettings& s, NodeRuntime& runtime, NodeBus& nod
   hal::RealtimeRequest node_request = s.realtime;
   node_request.prefault_stack_bytes = kNodeStackPrefault;
   node_request.prefault_heap_bytes = s.realtime.lock_memory ? kNodeHeapReserve : 0U;
+  node_request.no_idle_states = s.realtime.fifo_priority > 0;  // a real-time run, as cyclictest
   std::thread node_thread([&] {
     node_rt = hal::apply_realtime(node_request);
     runtime.visit([&](auto& node) {
