@@ -47,6 +47,30 @@ hal::RealtimeRequest rig_request(const DemoSettings& s) {
   return r;
 }
 
+/// Stops and joins the node's thread however the rig's side ends (an exception included): a thread
+/// still waiting for its first deadline is released first.
+class NodeThreadGuard {
+ public:
+  NodeThreadGuard(std::thread& thread, std::atomic<bool>& stop, std::atomic<std::int64_t>& t0)
+      : thread_(thread), stop_(stop), t0_(t0) {}
+  NodeThreadGuard(const NodeThreadGuard&) = delete;
+  NodeThreadGuard& operator=(const NodeThreadGuard&) = delete;
+  ~NodeThreadGuard() { join(); }
+  void join() {
+    stop_.store(true, std::memory_order_release);
+    std::int64_t unset = -1;
+    t0_.compare_exchange_strong(unset, 0, std::memory_order_acq_rel);
+    if (thread_.joinable()) {
+      thread_.join();
+    }
+  }
+
+ private:
+  std::thread& thread_;
+  std::atomic<bool>& stop_;
+  std::atomic<std::int64_t>& t0_;
+};
+
 /// `frame_offset_ns`: what to subtract from a received frame's timestamp to put it on
 /// CLOCK_MONOTONIC (SocketCAN stamps with CLOCK_REALTIME; the thread link with CLOCK_MONOTONIC).
 template <typename NodeBus, typename RigBus>
@@ -102,6 +126,7 @@ DemoResult run_threads(const DemoSettings& s, NodeRuntime& runtime, NodeBus& nod
       *stats = loop.stats();
     });
   });
+  NodeThreadGuard guard(node_thread, stop, first_deadline_ns);
 
   // The rig: on its own CPU and priority for the cycles, back to normal for the outcomes.
   while (!ready.load(std::memory_order_acquire)) {
@@ -176,8 +201,7 @@ DemoResult run_threads(const DemoSettings& s, NodeRuntime& runtime, NodeBus& nod
       ++k;
     }
   }
-  stop.store(true, std::memory_order_release);
-  node_thread.join();
+  guard.join();
   hal::leave_fifo();
 
   if (log_thread) {
