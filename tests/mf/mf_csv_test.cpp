@@ -133,6 +133,25 @@ double number(const std::string& cell) {
   return v;
 }
 
+/// Calls `f(file name, parameters)` for every shipped tyre that `mf eval` takes (PAC89 and other
+/// files it refuses are skipped); returns how many.
+template <typename F>
+int for_each_mf_tyre(F&& f) {
+  int tyres = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(tread::testing::tyres_dir())) {
+    if (entry.path().extension() != ".tir") continue;
+    MfParameters<double> params;
+    try {
+      params = tread::mf::load_mf_parameters(entry.path()).params;
+    } catch (const std::exception&) {
+      continue;
+    }
+    ++tyres;
+    f(entry.path().filename().string(), params);
+  }
+  return tyres;
+}
+
 TEST(MfCsvStream, OutputIsTheSameForAnyChunkSizeAndThreadCount) {
   const std::vector<Point> pts = points(2000, 1);
   MfCsvOptions all = stream_options(1 << 20, 1);
@@ -272,21 +291,12 @@ void expect_extras_change_nothing_else(const MfParameters<double>& file, const s
 }
 
 TEST(MfCsvStream, SkippingTheExtrasChangesNoOtherOutput) {
-  int tyres = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(tread::testing::tyres_dir())) {
-    if (entry.path().extension() != ".tir") continue;
-    MfParameters<double> params;
-    try {
-      params = tread::mf::load_mf_parameters(entry.path()).params;
-    } catch (const std::exception&) {
-      continue;  // PAC89 and other files `mf eval` refuses
-    }
-    ++tyres;
-    const std::string name = entry.path().filename().string();
-    expect_extras_change_nothing_else<double>(params, name + " double");
-    expect_extras_change_nothing_else<float>(params, name + " float");
-    expect_extras_change_nothing_else<tread::fixed::Fixed64>(params, name + " fixed");
-  }
+  const int tyres =
+      for_each_mf_tyre([&](const std::string& name, const MfParameters<double>& params) {
+        expect_extras_change_nothing_else<double>(params, name + " double");
+        expect_extras_change_nothing_else<float>(params, name + " float");
+        expect_extras_change_nothing_else<tread::fixed::Fixed64>(params, name + " fixed");
+      });
   EXPECT_GE(tyres, 8);
 }
 
@@ -562,55 +572,46 @@ TEST(MfCsvBatch, AgreesWithTheScalarFloatPathOverEveryTyre) {
   MfCsvOptions as_batch = csv;
   as_batch.use_batch = true;
   Worst worst;
-  int tyres = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(tread::testing::tyres_dir())) {
-    if (entry.path().extension() != ".tir") continue;
-    MfParameters<double> params;
-    try {
-      params = tread::mf::load_mf_parameters(entry.path()).params;
-    } catch (const std::exception&) {
-      continue;  // PAC89 and other files `mf eval` refuses
-    }
-    ++tyres;
-    const std::string name = entry.path().filename().string();
-    // 1003 ordinary rows, then the same with the wild rows among them, every 83rd row.
-    const std::string input = wide_input(1003, 11);
-    std::vector<std::string> lines = split(input, '\n');
-    lines.pop_back();
-    std::string mixed = lines[0] + '\n';
-    std::vector<bool> ordinary;
-    std::size_t wild = 0;
-    for (std::size_t l = 1; l < lines.size(); ++l) {
-      if (l % 83 == 50) {
-        mixed += wild_rows()[wild++ % wild_rows().size()] + '\n';
-        ordinary.push_back(false);
-      }
-      mixed += lines[l] + '\n';
-      if (!lines[l].empty() && lines[l][0] != '#') ordinary.push_back(true);
-    }
-    const std::vector<bool> all_ordinary(1003, true);
-    for (const int mode : {111, 121, 112, 211, 222}) {
-      const MfOptions o = tread::mf::options_from_use_mode(mode).value;
-      const std::string what = name + " mode " + std::to_string(mode);
-      const std::string batch = evaluate_with(params, input, as_batch, nullptr, o);
-      expect_batch_as_float(batch, evaluate_with(params, input, as_float, nullptr, o), all_ordinary,
-                            what, &worst);
-      const std::string batch_mixed = evaluate_with(params, mixed, as_batch, nullptr, o);
-      expect_batch_as_float(batch_mixed, evaluate_with(params, mixed, as_float, nullptr, o),
-                            ordinary, what + " with wild rows", &worst);
-      // A row's values do not depend on its neighbours or its place in a block: the ordinary
-      // rows are the same to the bit with the wild rows among them.
-      const std::vector<std::string> plain_rows = data_lines(batch);
-      const std::vector<std::string> mixed_rows = data_lines(batch_mixed);
-      ASSERT_EQ(mixed_rows.size(), ordinary.size());
-      std::size_t next = 0;
-      for (std::size_t r = 0; r < mixed_rows.size(); ++r) {
-        if (ordinary[r]) {
-          EXPECT_EQ(mixed_rows[r], plain_rows[next++]) << what << " row " << r;
+  const int tyres =
+      for_each_mf_tyre([&](const std::string& name, const MfParameters<double>& params) {
+        // 1003 ordinary rows, then the same with the wild rows among them, every 83rd row.
+        const std::string input = wide_input(1003, 11);
+        std::vector<std::string> lines = split(input, '\n');
+        lines.pop_back();
+        std::string mixed = lines[0] + '\n';
+        std::vector<bool> ordinary;
+        std::size_t wild = 0;
+        for (std::size_t l = 1; l < lines.size(); ++l) {
+          if (l % 83 == 50) {
+            mixed += wild_rows()[wild++ % wild_rows().size()] + '\n';
+            ordinary.push_back(false);
+          }
+          mixed += lines[l] + '\n';
+          if (!lines[l].empty() && lines[l][0] != '#') ordinary.push_back(true);
         }
-      }
-    }
-  }
+        const std::vector<bool> all_ordinary(1003, true);
+        for (const int mode : {111, 121, 112, 211, 222}) {
+          const MfOptions o = tread::mf::options_from_use_mode(mode).value;
+          const std::string what = name + " mode " + std::to_string(mode);
+          const std::string batch = evaluate_with(params, input, as_batch, nullptr, o);
+          expect_batch_as_float(batch, evaluate_with(params, input, as_float, nullptr, o),
+                                all_ordinary, what, &worst);
+          const std::string batch_mixed = evaluate_with(params, mixed, as_batch, nullptr, o);
+          expect_batch_as_float(batch_mixed, evaluate_with(params, mixed, as_float, nullptr, o),
+                                ordinary, what + " with wild rows", &worst);
+          // A row's values do not depend on its neighbours or its place in a block: the ordinary
+          // rows are the same to the bit with the wild rows among them.
+          const std::vector<std::string> plain_rows = data_lines(batch);
+          const std::vector<std::string> mixed_rows = data_lines(batch_mixed);
+          ASSERT_EQ(mixed_rows.size(), ordinary.size());
+          std::size_t next = 0;
+          for (std::size_t r = 0; r < mixed_rows.size(); ++r) {
+            if (ordinary[r]) {
+              EXPECT_EQ(mixed_rows[r], plain_rows[next++]) << what << " row " << r;
+            }
+          }
+        }
+      });
   EXPECT_GE(tyres, 8);
   std::printf(
       "[ compared ] %zu rows with --float, %zu bit for bit; worst %.2g of the column's "
