@@ -18,9 +18,9 @@
 #include "fit/mf_staged_fit.hpp"
 #include "fit/simple_fit.hpp"
 #include "fit/synthetic_measurements.hpp"
-#include "mf/input_table.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
 #include "tir/tir_file.hpp"
+#include "tyre/input_table.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 
 namespace tread::cli {
 namespace {
@@ -35,8 +35,8 @@ struct FitCliState {
   std::string convention = "iso-w";
 };
 
-mf::SignConvention convention_of(const FitCliState& s) {
-  return *mf::parse_sign_convention(s.convention);
+tyre::SignConvention convention_of(const FitCliState& s) {
+  return *tyre::parse_sign_convention(s.convention);
 }
 
 void progress_line(const std::string& line) {
@@ -44,7 +44,7 @@ void progress_line(const std::string& line) {
 }
 
 void run_synthesize(const FitCliState& s) {
-  const mf::MfTirParameters truth = mf::load_mf_parameters(s.synthesize);
+  const tyre::MfTirParameters truth = tyre::load_mf_parameters(s.synthesize);
   fit::SyntheticGrid grid;
   grid.noise_rel = s.noise;
   const fit::MeasurementSet data = fit::synthesize_measurements(truth.params, grid, s.seed);
@@ -68,7 +68,7 @@ void run_staged(const FitCliState& s) {
     throw std::runtime_error("--output " + s.output + ": --model " + s.model + " writes a .tir");
   }
   tir::TirFile file = tir::read_tir(s.start);
-  mf::MfParameters<double> start = mf::mf_parameters_from_tir(file).params;
+  mf::MfParameters<double> start = tyre::mf_parameters_from_tir(file).params;
   const bool from_mf52 = model == fit::MfFitModel::mf61 && (start.fit_type == mf::FitType::mf52 ||
                                                             start.fit_type == mf::FitType::pac2002);
   if (from_mf52) {
@@ -180,7 +180,7 @@ void add_fit_command(CLI::App& app) {
   fit->add_option("--input", state.input,
                   "measurements: .tdx, or .csv with Fx_N|FX|FXW, Fy_N|FY|FYW, Mz_Nm|MZ|MZW [N, "
                   "N m] and the inputs: " +
-                      mf::input_column_help())
+                      tyre::input_column_help())
       ->check(CLI::ExistingFile);
   fit->add_option("--output", state.output,
                   "result: per-load constants (.csv) for simple, a .tir for mf61/pac2002, the "

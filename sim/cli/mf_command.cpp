@@ -14,14 +14,14 @@
 #include "cli/commands.hpp"
 #include "io/progress_bar.hpp"
 #include "io/replace_file.hpp"
-#include "mf/input_table.hpp"
-#include "mf/mf_csv.hpp"
-#include "mf/mf_curve_checks.hpp"
-#include "mf/mf_eval_columns.hpp"
 #include "mf/mf_options.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
-#include "mf/mf_plot.hpp"
 #include "plot/gnuplot.hpp"
+#include "tyre/input_table.hpp"
+#include "tyre/mf_csv.hpp"
+#include "tyre/mf_curve_checks.hpp"
+#include "tyre/mf_eval_columns.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
+#include "tyre/mf_plot.hpp"
 
 namespace tread::cli {
 
@@ -34,7 +34,7 @@ constexpr const char* kAxesNote =
 std::string input_help() {
   return "CSV of inputs. Column names (any case, any order; Fz, kappa, alpha, gamma, Vx required, "
          "phit and P optional, P absent or 0: the file's INFLPRES; other columns ignored): " +
-         mf::input_column_help();
+         tyre::input_column_help();
 }
 
 struct MfEvalArgs {
@@ -71,21 +71,21 @@ char separator(const std::string& sep) {
 }
 
 void run_mf_eval(const MfEvalArgs& args) {
-  const mf::MfTirParameters loaded = mf::load_mf_parameters(args.tir);
+  const tyre::MfTirParameters loaded = tyre::load_mf_parameters(args.tir);
   if (!loaded.warning.empty()) std::cerr << "tread mf eval: warning: " << loaded.warning << '\n';
   mf::MfOptions o = options_for(args.mode, "tread mf eval");
   if (args.side == "left") o.side = mf::MountedSide::left;
   if (args.side == "right") o.side = mf::MountedSide::right;
-  mf::MfCsvOptions csv;
+  tyre::MfCsvOptions csv;
   csv.use_float = args.use_float;
   csv.use_batch = args.use_batch;
   csv.use_fixed = args.use_fixed;
   csv.strict = args.strict;
   csv.tyre_name = args.tir;
   csv.table.separator = separator(args.sep);
-  csv.table.convention = *mf::parse_sign_convention(args.convention);
+  csv.table.convention = *tyre::parse_sign_convention(args.convention);
   if (!args.columns.empty()) {
-    mf::EvalColumnSelection selection = mf::select_eval_columns(args.columns);
+    tyre::EvalColumnSelection selection = tyre::select_eval_columns(args.columns);
     if (!selection.error.empty()) throw std::runtime_error(selection.error);
     csv.columns = std::move(selection.columns);
   }
@@ -101,9 +101,9 @@ void run_mf_eval(const MfEvalArgs& args) {
                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   };
   host::ReplaceFile out(args.output);
-  mf::MfCsvReport report;
+  tyre::MfCsvReport report;
   try {
-    report = mf::evaluate_csv(loaded.params, o, csv, in, args.input, out.stream());
+    report = tyre::evaluate_csv(loaded.params, o, csv, in, args.input, out.stream());
     out.commit();
   } catch (...) {
     bar.finish();
@@ -116,7 +116,7 @@ void run_mf_eval(const MfEvalArgs& args) {
     for (const std::string& c : report.ignored) std::cerr << " '" << c << "'";
     std::cerr << '\n';
   }
-  for (const mf::MfRangeCount& c : report.out_of_range) {
+  for (const tyre::MfRangeCount& c : report.out_of_range) {
     std::cerr << "tread mf eval: warning: " << c.rows
               << " rows outside the model's range: " << c.limit << " (first: " << args.input << ':'
               << c.first_line << ")" << (o.use_limits ? "; evaluated clamped" : "") << '\n';
@@ -133,7 +133,7 @@ struct MfPlotArgs {
 };
 
 void run_mf_plot(const MfPlotArgs& args) {
-  const mf::MfTirParameters loaded = mf::load_mf_parameters(args.tir);
+  const tyre::MfTirParameters loaded = tyre::load_mf_parameters(args.tir);
   if (!loaded.warning.empty()) std::cerr << "tread mf plot: warning: " << loaded.warning << '\n';
   const mf::MfOptions options = options_for(args.mode, "tread mf plot");
   for (double fz : args.loads) {
@@ -145,16 +145,17 @@ void run_mf_plot(const MfPlotArgs& args) {
   if (png.extension() != ".png") throw std::runtime_error(args.output + ": expected a .png name");
   std::filesystem::path svg = png;
   svg.replace_extension(".svg");
-  for (const std::string& w : mf::curve_warnings(loaded.params, options, args.loads, args.vx_mps)) {
+  for (const std::string& w :
+       tyre::curve_warnings(loaded.params, options, args.loads, args.vx_mps)) {
     std::cerr << "tread mf plot: warning: " << args.tir << ": " << w << '\n';
   }
-  mf::MfPlotOptions plot;
+  tyre::MfPlotOptions plot;
   plot.loads_n = args.loads;
   plot.vx_mps = args.vx_mps;
   plot.title = std::filesystem::path(args.tir).filename().string() + " (useMode " +
                std::to_string(args.mode) + ", ISO-W)";
   for (const auto& out : {png, svg}) {
-    host::run_gnuplot(mf::mf_plot_script(loaded.params, options, plot, out), out.string());
+    host::run_gnuplot(tyre::mf_plot_script(loaded.params, options, plot, out), out.string());
     std::cerr << "tread mf plot: wrote " << out.string() << '\n';
   }
 }
@@ -202,7 +203,7 @@ void add_mf_command(CLI::App& app) {
       ->check(CLI::IsMember({"iso-w", "sae", "adapted-iso"}))
       ->capture_default_str();
   std::string column_names;
-  for (const mf::EvalColumn& c : mf::eval_columns()) {
+  for (const tyre::EvalColumn& c : tyre::eval_columns()) {
     column_names += (column_names.empty() ? "" : ", ") + std::string(c.name);
   }
   eval->add_option("--columns", args.columns,

@@ -5,7 +5,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/node_options.hpp"
-#include "node/node_session.hpp"
+#include "runtime/node_session.hpp"
 
 namespace tread::cli {
 namespace {

@@ -6,7 +6,7 @@
 #include <map>
 #include <string>
 
-#include "node/node_runtime.hpp"
+#include "runtime/node_runtime.hpp"
 
 namespace tread::cli {
 

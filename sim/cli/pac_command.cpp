@@ -11,13 +11,13 @@
 
 #include "cli/commands.hpp"
 #include "io/replace_file.hpp"
-#include "mf/input_table.hpp"
-#include "mf/pac_csv.hpp"
 #include "plot/gnuplot.hpp"
 #include "tir/pac_coefficients.hpp"
 #include "tir/pac_plot.hpp"
 #include "tir/tir_file.hpp"
 #include "tir/tir_model.hpp"
+#include "tyre/input_table.hpp"
+#include "tyre/pac_csv.hpp"
 
 namespace tread::cli {
 
@@ -168,23 +168,23 @@ void add_pac_eval(CLI::App* pac) {
       ->capture_default_str();
   eval->add_option("--input", opt.input,
                    "CSV with the inputs Fz, kappa, alpha, gamma (other columns ignored); names: " +
-                       mf::input_column_help())
+                       tyre::input_column_help())
       ->required()
       ->check(CLI::ExistingFile);
   eval->add_option("--output", opt.output, "CSV to write")->required();
   eval->callback([eval] {
     const auto coeff = load_pac(opt.json, opt.tir, "tread pac eval");
-    tir::PacCsvOptions o;
+    tyre::PacCsvOptions o;
     o.model = model_for(coeff, opt.model, explicit_model(eval), opt.json.empty());
     o.slip = opt.pure ? pac::Slip::kPure : pac::Slip::kCombined;
     o.use_float = opt.use_float;
     o.iso_w = opt.iso_w || opt.axes == "iso-w";
-    o.table.convention = *mf::parse_sign_convention(opt.convention);
+    o.table.convention = *tyre::parse_sign_convention(opt.convention);
     o.table.separator = opt.sep == "auto" ? '\0' : opt.sep == "tab" ? '\t' : opt.sep.front();
     std::ifstream in(opt.input);
     if (!in) throw std::runtime_error(opt.input + ": cannot open");
     host::ReplaceFile out(opt.output);
-    const auto rows = tir::evaluate_pac_csv(coeff.params, o, in, opt.input, out.stream());
+    const auto rows = tyre::evaluate_pac_csv(coeff.params, o, in, opt.input, out.stream());
     out.commit();
     std::cout << "evaluated " << rows << " rows -> " << opt.output
               << (o.iso_w ? " (ISO-W axes)" : " (model axes)") << '\n';

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
-#include "proto/dbc_writer.hpp"
+#include "dbc/dbc_writer.hpp"
 
 namespace tread::cli {
 namespace {

@@ -13,11 +13,11 @@
 
 #include "cli/commands.hpp"
 #include "io/replace_file.hpp"
-#include "mf/tir_info.hpp"
 #include "tir/pac_coefficients.hpp"
 #include "tir/tir_file.hpp"
 #include "tir/tir_normalise.hpp"
 #include "tir/tir_units.hpp"
+#include "tyre/tir_info.hpp"
 
 namespace tread::cli {
 
@@ -95,7 +95,7 @@ void add_tir_command(CLI::App& app) {
       "pressures, limits, defaulted keys, and figures at FNOMIN (peak mu, stiffnesses, trail, "
       "radii) in ISO-W axes, with warnings");
   info->add_option("file", info_path, "Property file (.tir)")->required()->check(CLI::ExistingFile);
-  info->callback([] { std::cout << mf::tir_info_report(info_path); });
+  info->callback([] { std::cout << tyre::tir_info_report(info_path); });
 }
 
 }  // namespace

@@ -101,50 +101,50 @@ void check_has_output(const std::map<Field, std::size_t>& columns, const std::st
 
 }  // namespace
 
-// A CSV column: the inputs by mf::recognise_input_column (the names `tread mf eval` accepts), the
+// A CSV column: the inputs by tyre::recognise_input_column (the names `tread mf eval` accepts), the
 // measured outputs by the names below; the factor takes the cell to SI and ISO-W.
 struct CsvColumn {
   Field field;
   double factor;
 };
 
-std::optional<CsvColumn> csv_column(const std::string& header, mf::SignConvention convention) {
-  if (const auto input = mf::recognise_input_column(header)) {
-    const double sign = mf::iso_w_sign(convention, input->quantity);
+std::optional<CsvColumn> csv_column(const std::string& header, tyre::SignConvention convention) {
+  if (const auto input = tyre::recognise_input_column(header)) {
+    const double sign = tyre::iso_w_sign(convention, input->quantity);
     switch (input->quantity) {
-      case mf::InputQuantity::fz:
+      case tyre::InputQuantity::fz:
         return CsvColumn{Field::fz, input->to_si * sign};
-      case mf::InputQuantity::kappa:
+      case tyre::InputQuantity::kappa:
         return CsvColumn{Field::kappa, input->to_si * sign};
-      case mf::InputQuantity::alpha:
+      case tyre::InputQuantity::alpha:
         return CsvColumn{Field::alpha, input->to_si * sign};
-      case mf::InputQuantity::gamma:
+      case tyre::InputQuantity::gamma:
         return CsvColumn{Field::gamma, input->to_si * sign};
-      case mf::InputQuantity::vx:
+      case tyre::InputQuantity::vx:
         return CsvColumn{Field::vx, input->to_si * sign};
-      case mf::InputQuantity::phit:
-      case mf::InputQuantity::pressure:
+      case tyre::InputQuantity::phit:
+      case tyre::InputQuantity::pressure:
         return std::nullopt;  // not held by MeasurementPoint
     }
   }
   // Measured forces and moments: SI names, TTC names (FX, FY, MZ in N and N m), TYDEX channels.
-  static const std::map<std::string, std::pair<Field, mf::MeasuredQuantity>> outputs = {
-      {"FX_N", {Field::fx, mf::MeasuredQuantity::fx}},
-      {"FX", {Field::fx, mf::MeasuredQuantity::fx}},
-      {"FXW", {Field::fx, mf::MeasuredQuantity::fx}},
-      {"FY_N", {Field::fy, mf::MeasuredQuantity::fy}},
-      {"FY", {Field::fy, mf::MeasuredQuantity::fy}},
-      {"FYW", {Field::fy, mf::MeasuredQuantity::fy}},
-      {"MZ_NM", {Field::mz, mf::MeasuredQuantity::mz}},
-      {"MZ", {Field::mz, mf::MeasuredQuantity::mz}},
-      {"MZW", {Field::mz, mf::MeasuredQuantity::mz}}};
+  static const std::map<std::string, std::pair<Field, tyre::MeasuredQuantity>> outputs = {
+      {"FX_N", {Field::fx, tyre::MeasuredQuantity::fx}},
+      {"FX", {Field::fx, tyre::MeasuredQuantity::fx}},
+      {"FXW", {Field::fx, tyre::MeasuredQuantity::fx}},
+      {"FY_N", {Field::fy, tyre::MeasuredQuantity::fy}},
+      {"FY", {Field::fy, tyre::MeasuredQuantity::fy}},
+      {"FYW", {Field::fy, tyre::MeasuredQuantity::fy}},
+      {"MZ_NM", {Field::mz, tyre::MeasuredQuantity::mz}},
+      {"MZ", {Field::mz, tyre::MeasuredQuantity::mz}},
+      {"MZW", {Field::mz, tyre::MeasuredQuantity::mz}}};
   const auto it = outputs.find(upper(trim(header)));
   if (it == outputs.end()) return std::nullopt;
-  return CsvColumn{it->second.first, mf::output_sign(convention, it->second.second)};
+  return CsvColumn{it->second.first, tyre::output_sign(convention, it->second.second)};
 }
 
 MeasurementSet read_measurement_csv(std::istream& in, const std::string& name,
-                                    mf::SignConvention convention) {
+                                    tyre::SignConvention convention) {
   MeasurementSet set;
   set.source = name;
   std::map<Field, std::size_t> columns;
@@ -324,7 +324,8 @@ MeasurementSet read_tydex(std::istream& in, const std::string& name) {
   return set;
 }
 
-MeasurementSet load_measurements(const std::filesystem::path& path, mf::SignConvention convention) {
+MeasurementSet load_measurements(const std::filesystem::path& path,
+                                 tyre::SignConvention convention) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error(path.string() + ": cannot open");
   std::string ext = upper(path.extension().string());

@@ -2,11 +2,11 @@
 // Tyre measurements for the fitter (host side: allocates, throws).
 //
 // Two formats:
-//  - CSV with the input column names `tread mf eval` accepts (mf::recognise_input_column: Fz_N,
+//  - CSV with the input column names `tread mf eval` accepts (tyre::recognise_input_column: Fz_N,
 //    kappa, alpha_rad and their other names and units, e.g. FZ, SL, SA [deg], IA [deg], V [km/h];
 //    gamma and Vx optional, default 0), and the measured outputs Fx_N|FX|FXW, Fy_N|FY|FYW,
 //    Mz_Nm|MZ|MZW (N, N m; any subset, at least one), in the file's sign convention (converted to
-//    ISO-W as mf::InputTable does: the outputs by mf::output_sign). Unknown columns are ignored (so
+//    ISO-W as tyre::InputTable does: the outputs by tyre::output_sign). Unknown columns are ignored (so
 //    an `mf eval` output file, whose inputs are named in_*, can be read after renaming). Blank
 //    lines and lines starting with
 //    '#' are skipped; an empty cell means "not measured" for an output column.
@@ -26,7 +26,7 @@
 #include <string>
 #include <vector>
 
-#include "mf/input_table.hpp"
+#include "tyre/input_table.hpp"
 
 namespace tread::fit {
 
@@ -49,12 +49,12 @@ struct MeasurementSet {
 };
 
 MeasurementSet read_measurement_csv(std::istream& in, const std::string& name,
-                                    mf::SignConvention convention = mf::SignConvention::iso_w);
+                                    tyre::SignConvention convention = tyre::SignConvention::iso_w);
 MeasurementSet read_tydex(std::istream& in, const std::string& name);
 
 /// Reads `path` as TYDEX if it ends in .tdx (any case; TYDEX W axes), otherwise as CSV in
 /// `convention`.
 MeasurementSet load_measurements(const std::filesystem::path& path,
-                                 mf::SignConvention convention = mf::SignConvention::iso_w);
+                                 tyre::SignConvention convention = tyre::SignConvention::iso_w);
 
 }  // namespace tread::fit

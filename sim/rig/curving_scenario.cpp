@@ -7,8 +7,8 @@
 #include <stdexcept>
 
 #include "contact/contact_setup.hpp"
-#include "node/node_runtime.hpp"
 #include "plot/gnuplot.hpp"
+#include "runtime/node_runtime.hpp"
 
 namespace tread::host {
 namespace {

@@ -8,11 +8,11 @@
 #include <vector>
 
 #include "contact/rigid_contact.hpp"
-#include "node/node_runtime.hpp"
 #include "proto/rig_link.hpp"
 #include "rig/hil_demo.hpp"
 #include "rig/rig_scenario.hpp"
 #include "rig/scenario_runner.hpp"
+#include "runtime/node_runtime.hpp"
 
 namespace tread::host {
 

@@ -11,12 +11,12 @@
 #include <thread>
 
 #include "loop/loop_runner.hpp"
-#include "node/log_ring.hpp"
-#include "node/protocol_socket.hpp"
 #include "posix/posix_clock.hpp"
 #include "posix/realtime.hpp"
 #include "posix/thread_can_link.hpp"
 #include "rig/demo_rig.hpp"
+#include "runtime/log_ring.hpp"
+#include "runtime/protocol_socket.hpp"
 #include "socketcan/socketcan_bus.hpp"
 
 namespace tread::host {

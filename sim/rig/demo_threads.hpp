@@ -21,8 +21,8 @@
 // its status frame for longer than the rig's lead (periodic: half a period less the sending), which
 // the node's cycle-time maximum shows.
 
-#include "node/node_runtime.hpp"
 #include "rig/hil_demo.hpp"
+#include "runtime/node_runtime.hpp"
 
 namespace tread::host {
 

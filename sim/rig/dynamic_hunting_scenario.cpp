@@ -9,8 +9,8 @@
 #include "contact/contact_setup.hpp"
 #include "contact/equivalent_conicity.hpp"
 #include "contact/klingel.hpp"
-#include "node/node_runtime.hpp"
 #include "plot/gnuplot.hpp"
+#include "runtime/node_runtime.hpp"
 
 namespace tread::host {
 namespace {

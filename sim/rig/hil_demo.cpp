@@ -8,9 +8,9 @@
 #include <stdexcept>
 
 #include "loop/loop_runner.hpp"
-#include "node/candump_log.hpp"
 #include "rig/demo_rig.hpp"
 #include "rig/demo_threads.hpp"
+#include "runtime/candump_log.hpp"
 #include "stub/sim_clock.hpp"
 #include "stub/stub_can_bus.hpp"
 

@@ -16,9 +16,9 @@
 #include <vector>
 
 #include "loop/latency_histogram.hpp"
-#include "node/node_session.hpp"
 #include "rig/rig_scenario.hpp"
 #include "rig/scenario_runner.hpp"
+#include "runtime/node_session.hpp"
 
 namespace tread::host {
 

@@ -4,11 +4,11 @@
 #include <ostream>
 #include <stdexcept>
 
-#include "mf/mf_parameters_from_tir.hpp"
-#include "node/protocol_socket.hpp"
 #include "posix/posix_clock.hpp"
 #include "rig/scenario_catalogue.hpp"
+#include "runtime/protocol_socket.hpp"
 #include "socketcan/socketcan_bus.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 
 namespace tread::host {
 
@@ -30,7 +30,7 @@ RigReport run_rig(const RigSettings& s) {
   contact::ContactTable contact_table;
   RigReference reference;
   if (s.wheels > 0) {
-    tyre = mf::load_mf_parameters(s.tir).params;
+    tyre = tyre::load_mf_parameters(s.tir).params;
     reference.tyre = &tyre;
   }
   if (s.wheelsets > 0) {

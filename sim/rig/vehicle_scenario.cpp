@@ -7,8 +7,8 @@
 #include <stdexcept>
 
 #include "mf/mf_evaluate.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
 #include "plot/gnuplot.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 #include "vehicle/manoeuvre_runner.hpp"
 #include "vehicle/tyre_function.hpp"
 
@@ -28,7 +28,7 @@ struct VehicleScenario::Impl {
 VehicleScenario::VehicleScenario(const std::string& manoeuvre, const std::filesystem::path& tir,
                                  double dt_s)
     : impl_(std::make_unique<Impl>()) {
-  impl_->tyre_params = mf::load_mf_parameters(tir).params;
+  impl_->tyre_params = tyre::load_mf_parameters(tir).params;
   impl_->params.wheel_radius_m = impl_->tyre_params.unloaded_radius_m;
   impl_->tyre = vehicle::mf_tyre_function(impl_->tyre_params);
   impl_->dt_s = dt_s;

@@ -1,6 +1,6 @@
 #pragma once
 // Turns Magic Formula parameters (tread::mf::MfParameters<double>, e.g. from
-// mf::load_mf_parameters) into a constexpr C++ header holding a ready MfParameters<float> or
+// tyre::load_mf_parameters) into a constexpr C++ header holding a ready MfParameters<float> or
 // <double>, so an ECU build flashes a tyre without a file system or parser:
 //
 //   #include "mf/mf_parameters.hpp"

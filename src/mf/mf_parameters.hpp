@@ -11,7 +11,7 @@
 // not the book file's 400000. Members carry units where they have one (fnomin_n,
 // unloaded_radius_m); dimensionless Magic Formula coefficients keep their TNO name.
 //
-// The list drives the struct, the .tir mapping (sim/mf/mf_parameters_from_tir.cpp), the
+// The list drives the struct, the .tir mapping (sim/tyre/mf_parameters_from_tir.cpp), the
 // scalar conversion below and the constexpr header generator: add a key here and all follow.
 
 #include <cstdint>

@@ -1,22 +1,33 @@
 #!/usr/bin/env python3
-"""host_area_deps.py SIM_DIR AREA:DEP,DEP ... — the sim/ areas include only what they declare.
+"""host_area_deps.py SIM_DIR [--core DIR ...] AREA:DEP,DEP ... — the sim/ areas include only what
+they declare, and their names are not the core's.
 
-Each argument names an area (a folder of sim/) and the areas it declares in sim/*/CMakeLists.txt
-(tread_host_area(... DEPS ...)). Fails, naming file and line, when a file of an area includes a
-header of another area that its area does not declare; when the declared graph has a cycle; or
-when a folder of sim/ with sources is not a declared area.
+Each AREA argument names an area (a folder of sim/) and the areas it declares in
+sim/*/CMakeLists.txt (tread_host_area(... DEPS ...)). Fails, naming file and line, when a file of
+an area includes a header of another area that its area does not declare; when the declared graph
+has a cycle; or when a folder of sim/ with sources is not a declared area.
+
+Each --core DIR is an include root of the core or the HAL (src/, hal/). An area whose folder has
+the name of a folder there would share its include prefix ("mf/..." for both), and a host file
+that opens a namespace tread::X which core files open would share its names: both fail.
 """
 import pathlib
 import re
 import sys
 
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([a-z_0-9]+)/[^"]+"')
+NAMESPACE = re.compile(r'^\s*namespace\s+tread::([a-z_0-9]+)')
 
 
 def main() -> int:
     sim = pathlib.Path(sys.argv[1])
     declared = {}
-    for arg in sys.argv[2:]:
+    cores = []
+    args = iter(sys.argv[2:])
+    for arg in args:
+        if arg == "--core":
+            cores.append(pathlib.Path(next(args)))
+            continue
         name, _, deps = arg.partition(":")
         declared[name] = {d for d in deps.split(",") if d}
     problems = []
@@ -42,6 +53,26 @@ def main() -> int:
                     problems.append(
                         f"sim/{area}/{path.name}:{number}: includes {header}, but {area} does not "
                         f"depend on {other} (declared: {', '.join(sorted(deps)) or 'none'})")
+
+    # Host and core names apart: include prefixes (folder names) and namespaces.
+    core_namespaces = {}
+    for core in cores:
+        for path in sorted(core.rglob("*.[ch]pp")):
+            for line in path.read_text(errors="replace").splitlines():
+                m = NAMESPACE.match(line)
+                if m:
+                    core_namespaces.setdefault(m.group(1), path.relative_to(core.parent))
+    for area in sorted(declared):
+        for core in cores:
+            if (core / area).is_dir():
+                problems.append(f"sim/{area}: has the name of {core.name}/{area}, so \"{area}/...\" "
+                                f"includes of host and core look alike")
+        for path in sorted((sim / area).glob("*.[ch]pp")):
+            for number, line in enumerate(path.read_text().splitlines(), 1):
+                m = NAMESPACE.match(line)
+                if m and m.group(1) in core_namespaces:
+                    problems.append(f"sim/{area}/{path.name}:{number}: opens namespace "
+                                    f"tread::{m.group(1)}, the core's (as {core_namespaces[m.group(1)]})")
 
     # Cycles in the declared graph (depth-first search, grey/black colouring).
     state = {}

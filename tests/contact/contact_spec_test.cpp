@@ -8,7 +8,7 @@
 #include <string>
 
 #include "contact/contact_setup.hpp"
-#include "node/node_runtime.hpp"
+#include "runtime/node_runtime.hpp"
 
 namespace tread {
 namespace {

@@ -19,9 +19,9 @@
 
 #include "golden_path.hpp"
 #include "mf/mf_evaluate.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
 #include "test_dir.hpp"
 #include "tir/tir_file.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 
 namespace {
 
@@ -201,7 +201,7 @@ double fy_of(const tread::mf::MfParameters<double>& p, double fz, double alpha) 
 TEST(FitCommand, Mf61PureLateralWritesTir) {
   const auto tir = tread::testing::tyre_file("MagicFormula61_Parameters.tir");
   ASSERT_TRUE(std::filesystem::exists(tir)) << tir;
-  const tread::mf::MfParameters<double> truth = tread::mf::load_mf_parameters(tir).params;
+  const tread::mf::MfParameters<double> truth = tread::tyre::load_mf_parameters(tir).params;
   const auto dir = tmp_dir();
   const auto start_tir = dir / "start.tir";
   {
@@ -233,7 +233,7 @@ TEST(FitCommand, Mf61PureLateralWritesTir) {
       << slurp(err);
   EXPECT_NE(slurp(err).find("iteration 1:"), std::string::npos);
   EXPECT_NE(slurp(report).find("| PKY1 |"), std::string::npos);
-  const tread::mf::MfParameters<double> fitted = tread::mf::load_mf_parameters(out_tir).params;
+  const tread::mf::MfParameters<double> fitted = tread::tyre::load_mf_parameters(out_tir).params;
   for (double fz : {2000.0, 4000.0, 6000.0}) {
     double ss = 0.0, peak = 0.0;
     int n = 0;
@@ -335,8 +335,8 @@ TEST(FitCommand, Pac2002StagedFitFromSynthesizedData) {
   for (const char* png : {"Fx_Fz4850N.png", "Fy_Fz2425N.png", "Mz_Fz7275N.png"}) {
     EXPECT_TRUE(std::filesystem::exists(plots / png)) << png;
   }
-  const tread::mf::MfParameters<double> truth = tread::mf::load_mf_parameters(tir).params;
-  const tread::mf::MfParameters<double> fitted = tread::mf::load_mf_parameters(out_tir).params;
+  const tread::mf::MfParameters<double> truth = tread::tyre::load_mf_parameters(tir).params;
+  const tread::mf::MfParameters<double> fitted = tread::tyre::load_mf_parameters(out_tir).params;
   EXPECT_EQ(fitted.fit_type, tread::mf::FitType::pac2002);
   expect_pure_curves_within_1_percent(truth, fitted, {2425.0, 4850.0, 7275.0});
   const auto in_csv = dir / "pac2002_eval_in.csv";
@@ -389,8 +389,8 @@ TEST(FitCommand, Mf61RefitOfAPac2002File) {
   for (const char* key : {"PKY4", "PKY6", "PPX1", "INFLPRES", "NOMPRES"}) {
     EXPECT_NE(written.find_any(key), nullptr) << key;
   }
-  const tread::mf::MfParameters<double> truth = tread::mf::load_mf_parameters(tir).params;
-  const tread::mf::MfParameters<double> fitted = tread::mf::load_mf_parameters(out_tir).params;
+  const tread::mf::MfParameters<double> truth = tread::tyre::load_mf_parameters(tir).params;
+  const tread::mf::MfParameters<double> fitted = tread::tyre::load_mf_parameters(out_tir).params;
   EXPECT_EQ(fitted.fit_type, tread::mf::FitType::mf61);
   expect_pure_curves_within_1_percent(truth, fitted, {2000.0, 4000.0, 5500.0});
 }

@@ -49,13 +49,13 @@ TEST(MeasurementCsv, ReadsColumnsInAnyOrderAndSubsets) {
   EXPECT_EQ(set.points[1].line, 5u);
 }
 
-// FSAE TTC style: the names and units mf::InputTable knows (SA, IA in degrees, V in km/h), SAE
+// FSAE TTC style: the names and units tyre::InputTable knows (SA, IA in degrees, V in km/h), SAE
 // axes converted to ISO-W (Fz, α, Fy, Mz change sign; κ, γ, Fx do not).
 TEST(MeasurementCsv, TtcNamesInSaeAxes) {
   std::istringstream in(
       "ET,V,SA,IA,FZ,FX,FY,MZ,SL,P\n"
       "1.5,40,-4,2,-1100,150,2500,-30,0.02,82\n");
-  const MeasurementSet set = read_measurement_csv(in, "ttc.csv", mf::SignConvention::sae);
+  const MeasurementSet set = read_measurement_csv(in, "ttc.csv", tyre::SignConvention::sae);
   ASSERT_EQ(set.points.size(), 1u);
   const MeasurementPoint& p = set.points[0];
   const double deg = std::numbers::pi / 180.0;

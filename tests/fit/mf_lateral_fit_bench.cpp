@@ -12,7 +12,7 @@
 #include "fit/mf_lateral_fit.hpp"
 #include "golden_path.hpp"
 #include "mf/mf_evaluate.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 
 namespace {
 
@@ -24,7 +24,7 @@ double fy(const mf::MfParameters<double>& p, double fz, double alpha) {
 
 void BM_Mf61PureLateralFit5000(benchmark::State& state) {
   const auto path = tread::testing::tyre_file("MagicFormula61_Parameters.tir");
-  const mf::MfParameters<double> truth = mf::load_mf_parameters(path).params;
+  const mf::MfParameters<double> truth = tyre::load_mf_parameters(path).params;
   const mf::MfParameters<double> start = tread::testing::book_lateral_start(truth);
   std::mt19937_64 rng(5);
   std::normal_distribution<double> normal(0.0, 1.0);

@@ -15,7 +15,7 @@
 #include "fit/lateral_start.hpp"
 #include "golden_path.hpp"
 #include "mf/mf_evaluate.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 
 namespace tread::fit {
 namespace {
@@ -33,7 +33,7 @@ double peak(const mf::MfParameters<double>& p, double fz) {
 TEST(MfLateralFit, RecoversMf61PureLateralFromNeutralStart) {
   const auto path = tread::testing::tyre_file("MagicFormula61_Parameters.tir");
   ASSERT_TRUE(std::filesystem::exists(path)) << path;
-  const mf::MfParameters<double> truth = mf::load_mf_parameters(path).params;
+  const mf::MfParameters<double> truth = tyre::load_mf_parameters(path).params;
   // Neutral start: the file's non-lateral data (FNOMIN, scalings), book-default lateral terms.
   const mf::MfParameters<double> start = tread::testing::book_lateral_start(truth);
 

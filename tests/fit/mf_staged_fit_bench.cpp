@@ -6,7 +6,7 @@
 #include "fit/mf_staged_fit.hpp"
 #include "fit/synthetic_measurements.hpp"
 #include "golden_path.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 
 namespace {
 
@@ -14,7 +14,7 @@ using namespace tread;
 
 void BM_Mf61StagedFit(benchmark::State& state) {
   const auto path = tread::testing::tyre_file("MagicFormula61_Parameters.tir");
-  const mf::MfParameters<double> truth = mf::load_mf_parameters(path).params;
+  const mf::MfParameters<double> truth = tyre::load_mf_parameters(path).params;
   const fit::MeasurementSet data =
       fit::synthesize_measurements(truth, fit::SyntheticGrid{}, 20261121);
   const mf::MfParameters<double> start = fit::neutral_start(truth, fit::MfFitModel::mf61);

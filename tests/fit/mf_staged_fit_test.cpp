@@ -29,7 +29,7 @@
 #include "fit/synthetic_measurements.hpp"
 #include "golden_path.hpp"
 #include "mf/mf_evaluate.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 
 namespace tread::fit {
 namespace {
@@ -80,7 +80,7 @@ TEST_P(MfStagedFit, RecoversStiffnessFrictionAndCurvesFromNeutralStart) {
   const Case c = GetParam();
   const auto path = tread::testing::tyre_file(c.file);
   ASSERT_TRUE(std::filesystem::exists(path)) << path;
-  const mf::MfParameters<double> truth = mf::load_mf_parameters(path).params;
+  const mf::MfParameters<double> truth = tyre::load_mf_parameters(path).params;
   check_model(truth, c.model, c.file);
   const SyntheticGrid grid;
   const MeasurementSet data = synthesize_measurements(truth, grid, 20261121);

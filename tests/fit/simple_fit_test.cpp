@@ -16,7 +16,7 @@
 
 #include "golden_path.hpp"
 #include "mf/mf_evaluate.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 
 namespace tread::fit {
 namespace {
@@ -55,7 +55,7 @@ Truth load_truth() {
   const auto path = tread::testing::tyre_file("MagicFormula61_Parameters.tir");
   if (!std::filesystem::exists(path)) throw std::runtime_error("missing " + path.string());
   Truth t;
-  t.params = mf::load_mf_parameters(path).params;
+  t.params = tyre::load_mf_parameters(path).params;
   t.options.combined = true;
   return t;
 }

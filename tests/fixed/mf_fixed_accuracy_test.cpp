@@ -23,8 +23,8 @@
 #include "golden_path.hpp"
 #include "mf/mf_evaluate.hpp"
 #include "mf/mf_fixed.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
 #include "mf_output_columns.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 
 namespace tread::mf {
 namespace {
@@ -118,9 +118,9 @@ TEST(MfFixedAccuracy, EveryMfTirEveryUseModeWithinOneThousandthOfEachPeak) {
   int status_differences = 0;
   for (const auto& entry : std::filesystem::directory_iterator(testing::tyres_dir())) {
     if (entry.path().extension() != ".tir") continue;
-    MfTirParameters loaded;
+    tyre::MfTirParameters loaded;
     try {
-      loaded = load_mf_parameters(entry.path());
+      loaded = tyre::load_mf_parameters(entry.path());
     } catch (const std::exception&) {
       continue;  // PAC89/PAC94: not a Magic Formula file for mf::evaluate
     }

@@ -17,11 +17,11 @@
 #include "contact/contact_setup.hpp"
 #include "fuzz_support.hpp"
 #include "io/text_line.hpp"
-#include "mf/input_table.hpp"
 #include "profile/profile_file.hpp"
 #include "profile/rail_profile.hpp"
 #include "profile/wheel_profile.hpp"
 #include "tir/tir_file.hpp"
+#include "tyre/input_table.hpp"
 
 namespace {
 
@@ -154,7 +154,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       parses(text, [&] { static_cast<void>(profile::parse_profile_format(text)); });
       break;
     default:
-      static_cast<void>(mf::parse_sign_convention(text));
+      static_cast<void>(tyre::parse_sign_convention(text));
       break;
   }
   return 0;

@@ -11,7 +11,7 @@
 
 #include "fit/measurement.hpp"
 #include "fuzz_support.hpp"
-#include "mf/input_table.hpp"
+#include "tyre/input_table.hpp"
 
 namespace {
 
@@ -19,8 +19,8 @@ using namespace tread;
 using fuzz::fuzz_check;
 using fuzz::is_finite;
 
-constexpr std::array kConventions{mf::SignConvention::iso_w, mf::SignConvention::sae,
-                                  mf::SignConvention::adapted_iso};
+constexpr std::array kConventions{tyre::SignConvention::iso_w, tyre::SignConvention::sae,
+                                  tyre::SignConvention::adapted_iso};
 
 void check_points(const fit::MeasurementSet& set) {
   for (const fit::MeasurementPoint& p : set.points) {
@@ -39,7 +39,7 @@ void check_points(const fit::MeasurementSet& set) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   fuzz::Input input(data, size);
   const std::uint8_t pick = input.byte();
-  const mf::SignConvention convention = kConventions[(pick >> 2U) % kConventions.size()];
+  const tyre::SignConvention convention = kConventions[(pick >> 2U) % kConventions.size()];
   std::istringstream in{std::string(input.rest())};
   switch (pick & 3U) {
     case 0: {
@@ -61,13 +61,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     default: {
       constexpr const char* kSource = "fuzz_input.csv";
-      mf::InputTableOptions options;
+      tyre::InputTableOptions options;
       options.convention = convention;
-      options.required = {mf::InputQuantity::fz, mf::InputQuantity::kappa};
+      options.required = {tyre::InputQuantity::fz, tyre::InputQuantity::kappa};
       static_cast<void>(fuzz::returns_or_names_source(kSource, [&] {
-        mf::InputTable table(in, kSource, options);
+        tyre::InputTable table(in, kSource, options);
         int last_line = 0;
-        while (const std::optional<mf::InputRow> row = table.next()) {
+        while (const std::optional<tyre::InputRow> row = table.next()) {
           for (const double v : row->value) {
             fuzz_check(is_finite(v),
                        "an input that is not finite, line " + std::to_string(row->line));

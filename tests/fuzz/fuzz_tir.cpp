@@ -13,8 +13,8 @@
 #include "mf/mf_evaluate.hpp"
 #include "mf/mf_fixed.hpp"
 #include "mf/mf_options.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
 #include "tir/tir_file.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 
 namespace {
 
@@ -107,8 +107,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
           kSource, [&] { static_cast<void>(file.number(s.name, e->key)); }));
     }
   }
-  mf::MfTirParameters params;
-  if (fuzz::returns_or_names_source(kSource, [&] { params = mf::mf_parameters_from_tir(file); })) {
+  tyre::MfTirParameters params;
+  if (fuzz::returns_or_names_source(kSource,
+                                    [&] { params = tyre::mf_parameters_from_tir(file); })) {
     evaluate_everywhere(params.params);
   }
   return 0;

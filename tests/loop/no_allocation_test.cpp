@@ -14,7 +14,6 @@
 #include "contact/contact_setup.hpp"
 #include "golden_path.hpp"
 #include "loop/loop_runner.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
 #include "node/contact_table_channel.hpp"
 #include "node/mf_tyre_channel.hpp"
 #include "node/rail_force_channel.hpp"
@@ -24,6 +23,7 @@
 #include "stub/fake_gpio.hpp"
 #include "stub/sim_clock.hpp"
 #include "stub/stub_can_bus.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 
 #include "allocation_counter.hpp"
 
@@ -55,7 +55,7 @@ TEST(NoAllocation, HundredThousandCyclesOfTheFullLoopAllocateNothing) {
   // ---- init: may allocate ----
   const auto tir = testing::tyre_file("MagicFormula61_Parameters.tir");
   const mf::MfParameters<float> params =
-      mf::convert_parameters<float>(mf::load_mf_parameters(tir).params);
+      mf::convert_parameters<float>(tyre::load_mf_parameters(tir).params);
   std::array<node::MfTyreChannel, 4> tyres;
   for (auto& t : tyres) {
     t = node::MfTyreChannel(params, mf::MfOptions{});

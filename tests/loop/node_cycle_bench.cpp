@@ -7,11 +7,11 @@
 
 #include "golden_path.hpp"
 #include "lut/tread_lut.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
 #include "node/contact_table_channel.hpp"
 #include "node/mf_tyre_channel.hpp"
 #include "node/node.hpp"
 #include "proto/rig_link.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 
 namespace {
 
@@ -57,7 +57,7 @@ void run_cycles(benchmark::State& state, std::array<Tyre, 4>& tyres) {
 /// The full cycle with MF 6.1 (float, combined, with Rl) on four wheels.
 void BM_NodeCycle(benchmark::State& state) {
   const mf::MfParameters<float> params = mf::convert_parameters<float>(
-      mf::load_mf_parameters(testing::tyre_file("MagicFormula61_Parameters.tir")).params);
+      tyre::load_mf_parameters(testing::tyre_file("MagicFormula61_Parameters.tir")).params);
   std::array<node::MfTyreChannel, 4> tyres;
   for (auto& t : tyres) t = node::MfTyreChannel(params, mf::MfOptions{});
   run_cycles(state, tyres);

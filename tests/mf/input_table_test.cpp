@@ -1,6 +1,6 @@
-// mf::InputTable (sim/mf/input_table.hpp): measurement column names and their units, separators,
+// tyre::InputTable (sim/tyre/input_table.hpp): measurement column names and their units, separators,
 // decimal commas, the sign conventions, and errors naming file and line. Also host::ReplaceFile.
-#include "mf/input_table.hpp"
+#include "tyre/input_table.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,10 +17,10 @@
 
 namespace {
 
-using tread::mf::InputQuantity;
-using tread::mf::InputTable;
-using tread::mf::InputTableOptions;
-using tread::mf::SignConvention;
+using tread::tyre::InputQuantity;
+using tread::tyre::InputTable;
+using tread::tyre::InputTableOptions;
+using tread::tyre::SignConvention;
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
@@ -103,7 +103,7 @@ TEST(InputTable, CaseInsensitiveUnitsInNamesAndTabs) {
 }
 
 TEST(InputTable, HelpListsEveryNameByUnit) {
-  const std::string help = tread::mf::input_column_help();
+  const std::string help = tread::tyre::input_column_help();
   for (const char* group : {"Fz_N|FZ|FZW|Load_N [N], Fz_kN [kN]", "alpha_deg|SA|SA_deg [deg]",
                             "Vx_kph|Vx_kmh|V|V_kph|V_kmh [km/h]", "P_kPa|P [kPa]", "P_psi [psi]"}) {
     EXPECT_NE(help.find(group), std::string::npos) << group << "\n" << help;
@@ -113,7 +113,7 @@ TEST(InputTable, HelpListsEveryNameByUnit) {
   for (char c : help + ";") {
     if (c == '|' || c == ' ' || c == ';' || c == ',') {
       if (!name.empty() && name.front() != '[') {
-        EXPECT_TRUE(tread::mf::recognise_input_column(name)) << name;
+        EXPECT_TRUE(tread::tyre::recognise_input_column(name)) << name;
       }
       name.clear();
     } else {
@@ -173,12 +173,12 @@ TEST(InputTable, ExplicitSeparatorAndAdaptedIso) {
 }
 
 TEST(InputTable, ConventionsAndOutputSigns) {
-  using tread::mf::MeasuredQuantity;
-  using tread::mf::output_sign;
-  EXPECT_EQ(tread::mf::parse_sign_convention("SAE"), SignConvention::sae);
-  EXPECT_EQ(tread::mf::parse_sign_convention("iso-w"), SignConvention::iso_w);
-  EXPECT_EQ(tread::mf::parse_sign_convention("adapted-iso"), SignConvention::adapted_iso);
-  EXPECT_FALSE(tread::mf::parse_sign_convention("iso-c"));
+  using tread::tyre::MeasuredQuantity;
+  using tread::tyre::output_sign;
+  EXPECT_EQ(tread::tyre::parse_sign_convention("SAE"), SignConvention::sae);
+  EXPECT_EQ(tread::tyre::parse_sign_convention("iso-w"), SignConvention::iso_w);
+  EXPECT_EQ(tread::tyre::parse_sign_convention("adapted-iso"), SignConvention::adapted_iso);
+  EXPECT_FALSE(tread::tyre::parse_sign_convention("iso-c"));
   for (auto q : {MeasuredQuantity::fx, MeasuredQuantity::fy, MeasuredQuantity::fz,
                  MeasuredQuantity::mx, MeasuredQuantity::my, MeasuredQuantity::mz}) {
     EXPECT_EQ(output_sign(SignConvention::iso_w, q), 1.0);

@@ -22,13 +22,13 @@
 #include "mf/mf_evaluate.hpp"
 #include "mf/mf_evaluate_four.hpp"
 #include "mf/mf_lanes.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 
 namespace tread::mf {
 namespace {
 
 MfParameters<double> load(const char* name) {
-  return load_mf_parameters(testing::tyre_file(name)).params;
+  return tyre::load_mf_parameters(testing::tyre_file(name)).params;
 }
 
 /// The MF-Tyre 6.2 vertical force at loaded radius `rl` (MFeval's calculateFz62 equations).
@@ -235,7 +235,7 @@ std::vector<std::string> fz62_path_tyres() {
   for (const auto& entry : std::filesystem::directory_iterator(testing::tyres_dir())) {
     if (entry.path().extension() != ".tir") continue;
     try {
-      if (load_mf_parameters(entry.path()).params.fit_type == FitType::mf61) continue;
+      if (tyre::load_mf_parameters(entry.path()).params.fit_type == FitType::mf61) continue;
     } catch (const std::exception&) {
       continue;  // PAC89/PAC94: not a Magic Formula file
     }

@@ -15,7 +15,7 @@
 #include "mf/mf_evaluate.hpp"
 #include "mf/mf_evaluate_batch.hpp"
 #include "mf/mf_evaluate_four.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 
 namespace tread::mf {
 namespace {
@@ -41,7 +41,7 @@ std::array<MfInput<T>, kInputs> make_inputs() {
 template <typename T>
 void bench(benchmark::State& state, const char* tir, bool combined, bool extras) {
   const MfParameters<T> p =
-      convert_parameters<T>(load_mf_parameters(testing::tyre_file(tir)).params);
+      convert_parameters<T>(tyre::load_mf_parameters(testing::tyre_file(tir)).params);
   MfOptions o = options_from_use_mode(111).value;
   o.combined = combined;
   o.extras = extras;
@@ -59,7 +59,7 @@ void bench(benchmark::State& state, const char* tir, bool combined, bool extras)
 /// wheels, so the reported time per item is per wheel.
 void bench_four(benchmark::State& state, const char* tir, bool combined, bool extras) {
   const MfParameters<float> p =
-      convert_parameters<float>(load_mf_parameters(testing::tyre_file(tir)).params);
+      convert_parameters<float>(tyre::load_mf_parameters(testing::tyre_file(tir)).params);
   MfOptions o = options_from_use_mode(111).value;
   o.combined = combined;
   o.extras = extras;
@@ -82,7 +82,7 @@ void bench_four(benchmark::State& state, const char* tir, bool combined, bool ex
 /// 16: AVX-512 where it has it); items are wheels, so the reported time per item is per wheel.
 void bench_batch(benchmark::State& state, int lanes, const char* tir, bool extras) {
   const MfParameters<float> p =
-      convert_parameters<float>(load_mf_parameters(testing::tyre_file(tir)).params);
+      convert_parameters<float>(tyre::load_mf_parameters(testing::tyre_file(tir)).params);
   MfOptions o = options_from_use_mode(111).value;
   o.extras = extras;
   const auto inputs = make_inputs<float>();

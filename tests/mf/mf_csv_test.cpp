@@ -1,9 +1,9 @@
-// mf::evaluate_csv (sim/mf/mf_csv.hpp) as a stream: the output does not depend on the chunk size
+// tyre::evaluate_csv (sim/tyre/mf_csv.hpp) as a stream: the output does not depend on the chunk size
 // or the number of worker threads, rows keep their order, numbers are the scalar mf::evaluate's to
 // the bit, errors name the line of the first bad row in input order, and skipping the extras for
-// a selection without them changes no selected output. Also mf::select_eval_columns, and --batch
+// a selection without them changes no selected output. Also tyre::select_eval_columns, and --batch
 // (float on mf::evaluate_batch's lanes) against the scalar float path.
-#include "mf/mf_csv.hpp"
+#include "tyre/mf_csv.hpp"
 
 #include <gtest/gtest.h>
 
@@ -23,22 +23,22 @@
 #include <vector>
 
 #include "golden_path.hpp"
-#include "mf/mf_eval_columns.hpp"
 #include "mf/mf_evaluate.hpp"
 #include "mf/mf_fixed.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
 #include "tir/tir_file.hpp"
+#include "tyre/mf_eval_columns.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 
 namespace {
 
-using tread::mf::MfCsvOptions;
-using tread::mf::MfCsvReport;
 using tread::mf::MfOptions;
 using tread::mf::MfParameters;
+using tread::tyre::MfCsvOptions;
+using tread::tyre::MfCsvReport;
 
 const MfParameters<double>& mf61() {
   static const MfParameters<double> p =
-      tread::mf::load_mf_parameters(tread::testing::tyre_file("MagicFormula61_Parameters.tir"))
+      tread::tyre::load_mf_parameters(tread::testing::tyre_file("MagicFormula61_Parameters.tir"))
           .params;
   return p;
 }
@@ -90,7 +90,7 @@ std::string evaluate_with(const MfParameters<double>& params, const std::string&
                           const MfOptions& options = {}) {
   std::istringstream in(input);
   std::ostringstream out;
-  const MfCsvReport r = tread::mf::evaluate_csv(params, options, csv, in, "in.csv", out);
+  const MfCsvReport r = tread::tyre::evaluate_csv(params, options, csv, in, "in.csv", out);
   if (report != nullptr) *report = r;
   return out.str();
 }
@@ -142,7 +142,7 @@ int for_each_mf_tyre(F&& f) {
     if (entry.path().extension() != ".tir") continue;
     MfParameters<double> params;
     try {
-      params = tread::mf::load_mf_parameters(entry.path()).params;
+      params = tread::tyre::load_mf_parameters(entry.path()).params;
     } catch (const std::exception&) {
       continue;
     }
@@ -155,7 +155,7 @@ int for_each_mf_tyre(F&& f) {
 TEST(MfCsvStream, OutputIsTheSameForAnyChunkSizeAndThreadCount) {
   const std::vector<Point> pts = points(2000, 1);
   MfCsvOptions all = stream_options(1 << 20, 1);
-  all.columns = tread::mf::select_eval_columns("all").columns;
+  all.columns = tread::tyre::select_eval_columns("all").columns;
   const std::string input = csv_text(pts);
   const std::string one_chunk = evaluate(input, all);
   const std::vector<std::pair<std::size_t, unsigned>> runs = {{7, 3},    {1, 2},    {64, 4},
@@ -204,7 +204,7 @@ void expect_scalar_numbers(const char* flag) {
   MfCsvOptions csv = stream_options(16, 2);
   csv.use_float = std::is_same_v<T, float>;
   csv.use_fixed = std::is_same_v<T, tread::fixed::Fixed64>;
-  csv.columns = tread::mf::select_eval_columns("all").columns;
+  csv.columns = tread::tyre::select_eval_columns("all").columns;
   const std::vector<std::string> rows = data_lines(evaluate(csv_text(pts), csv));
   ASSERT_EQ(rows.size(), pts.size());
   MfParameters<T> params;
@@ -213,7 +213,7 @@ void expect_scalar_numbers(const char* flag) {
   } else {
     params = tread::mf::convert_parameters<T>(mf61());
   }
-  constexpr auto members = tread::mf::eval_output_members<T>();
+  constexpr auto members = tread::tyre::eval_output_members<T>();
   for (std::size_t i = 0; i < pts.size(); i += 3) {
     const Point& q = pts[i];
     tread::mf::MfInput<T> in;
@@ -225,17 +225,17 @@ void expect_scalar_numbers(const char* flag) {
     in.p_pa = scalar<T>(q.p_pa);
     const tread::mf::MfOutput<T> expected = tread::mf::evaluate(params, in, MfOptions{});
     const std::vector<std::string> cells = split(rows[i]);
-    ASSERT_EQ(cells.size(), tread::mf::kEvalColumnCount + 1);
+    ASSERT_EQ(cells.size(), tread::tyre::kEvalColumnCount + 1);
     const double inputs[] = {q.fz_n, q.kappa, q.alpha_rad, q.gamma_rad, q.vx_mps, 0.0, q.p_pa};
-    for (std::size_t c = 0; c < tread::mf::kEvalInputColumns; ++c) {
+    for (std::size_t c = 0; c < tread::tyre::kEvalInputColumns; ++c) {
       EXPECT_EQ(bits(number(cells[c])), bits(inputs[c])) << flag << " row " << i << " col " << c;
     }
-    for (std::size_t c = 0; c < tread::mf::kEvalOutputColumns; ++c) {
+    for (std::size_t c = 0; c < tread::tyre::kEvalOutputColumns; ++c) {
       const double v = as_double(expected.*(members[c]));
-      EXPECT_EQ(bits(number(cells[tread::mf::kEvalInputColumns + c])), bits(v))
+      EXPECT_EQ(bits(number(cells[tread::tyre::kEvalInputColumns + c])), bits(v))
           << flag << " row " << i << ' '
-          << tread::mf::eval_columns()[tread::mf::kEvalInputColumns + c].name << ": "
-          << cells[tread::mf::kEvalInputColumns + c] << " vs " << text(v);
+          << tread::tyre::eval_columns()[tread::tyre::kEvalInputColumns + c].name << ": "
+          << cells[tread::tyre::kEvalInputColumns + c] << " vs " << text(v);
     }
     EXPECT_EQ(cells.back(), to_string(expected.status)) << flag << " row " << i;
   }
@@ -259,7 +259,7 @@ void expect_extras_change_nothing_else(const MfParameters<double>& file, const s
   } else {
     params = tread::mf::convert_parameters<T>(file);
   }
-  constexpr auto members = tread::mf::eval_output_members<T>();
+  constexpr auto members = tread::tyre::eval_output_members<T>();
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> fz(-1000.0, 25000.0), kappa(-1.5, 1.5), alpha(-1.2, 1.2),
       gamma(-0.2, 0.2), vx(-5.0, 60.0), phit(-0.5, 0.5), p(0.0, 450000.0);
@@ -278,9 +278,9 @@ void expect_extras_change_nothing_else(const MfParameters<double>& file, const s
       in.p_pa = scalar<T>(i % 3 == 0 ? 0.0 : p(rng));
       const tread::mf::MfOutput<T> a = tread::mf::evaluate(params, in, with);
       const tread::mf::MfOutput<T> b = tread::mf::evaluate(params, in, without);
-      for (std::size_t c = 0; c < tread::mf::kEvalOutputColumns; ++c) {
-        const tread::mf::EvalColumn& column =
-            tread::mf::eval_columns()[tread::mf::kEvalInputColumns + c];
+      for (std::size_t c = 0; c < tread::tyre::kEvalOutputColumns; ++c) {
+        const tread::tyre::EvalColumn& column =
+            tread::tyre::eval_columns()[tread::tyre::kEvalInputColumns + c];
         if (column.needs_extras) continue;
         EXPECT_EQ(bits(as_double(a.*(members[c]))), bits(as_double(b.*(members[c]))))
             << what << " mode " << mode << " row " << i << ' ' << column.name;
@@ -308,7 +308,7 @@ TEST(MfCsvStream, DefaultAllAndSelectedColumns) {
             "in_Fz_N,in_kappa,in_alpha_rad,in_gamma_rad,in_Vx_mps,in_phit_1pm,in_P_Pa,Fx_N,Fy_N,"
             "Fz_N,Mx_Nm,My_Nm,Mz_Nm,status");
   MfCsvOptions all = defaults;
-  all.columns = tread::mf::select_eval_columns("all").columns;
+  all.columns = tread::tyre::select_eval_columns("all").columns;
   const std::string out_all = evaluate(input, all);
   EXPECT_EQ(header_line(out_all),
             "in_Fz_N,in_kappa,in_alpha_rad,in_gamma_rad,in_Vx_mps,in_phit_1pm,in_P_Pa,Fx_N,Fy_N,"
@@ -316,11 +316,11 @@ TEST(MfCsvStream, DefaultAllAndSelectedColumns) {
             "rho_m,2a_m,t_m,mux_1,muy_1,omega_radps,2b_m,Mzr_Nm,Cx_Npm,Cy_Npm,Cz_Npm,Kya_Nprad,"
             "sigmax_m,sigmay_m,Kxk_N,status");
   MfCsvOptions some = defaults;
-  some.columns = tread::mf::select_eval_columns("Mz_Nm, in_Fz_N,Rl_m,Kxk_N").columns;
+  some.columns = tread::tyre::select_eval_columns("Mz_Nm, in_Fz_N,Rl_m,Kxk_N").columns;
   const std::string out_some = evaluate(input, some);
   EXPECT_EQ(header_line(out_some), "Mz_Nm,in_Fz_N,Rl_m,Kxk_N,status");
   MfCsvOptions forces = defaults;  // no extras: evaluated without them
-  forces.columns = tread::mf::select_eval_columns("Fx_N,Fy_N,Mz_Nm").columns;
+  forces.columns = tread::tyre::select_eval_columns("Fx_N,Fy_N,Mz_Nm").columns;
   const std::string out_forces = evaluate(input, forces);
   EXPECT_EQ(header_line(out_forces), "Fx_N,Fy_N,Mz_Nm,status");
   // The same cells as in the full output, row by row.
@@ -341,11 +341,11 @@ TEST(MfCsvStream, DefaultAllAndSelectedColumns) {
 }
 
 TEST(MfCsvStream, ColumnSelectionErrorsListTheValidNames) {
-  using tread::mf::select_eval_columns;
-  EXPECT_EQ(select_eval_columns("all").columns.size(), tread::mf::kEvalColumnCount);
+  using tread::tyre::select_eval_columns;
+  EXPECT_EQ(select_eval_columns("all").columns.size(), tread::tyre::kEvalColumnCount);
   EXPECT_EQ(select_eval_columns(" Fx_N , status").columns, std::vector<std::size_t>{7});
   EXPECT_TRUE(select_eval_columns("status").columns.empty());
-  const tread::mf::EvalColumnSelection unknown = select_eval_columns("Fx_N,Fq_N");
+  const tread::tyre::EvalColumnSelection unknown = select_eval_columns("Fx_N,Fq_N");
   EXPECT_NE(unknown.error.find("unknown column 'Fq_N'"), std::string::npos) << unknown.error;
   EXPECT_NE(unknown.error.find("valid names: all, in_Fz_N, in_kappa"), std::string::npos)
       << unknown.error;
@@ -354,14 +354,14 @@ TEST(MfCsvStream, ColumnSelectionErrorsListTheValidNames) {
   EXPECT_NE(select_eval_columns("Fx_N,,Fy_N").error.find("an empty name"), std::string::npos);
   EXPECT_NE(select_eval_columns("").error.find("an empty name"), std::string::npos);
   EXPECT_FALSE(select_eval_columns("fx_n").error.empty());  // names are case-sensitive
-  EXPECT_FALSE(tread::mf::needs_extras(select_eval_columns("Fx_N,Kya_Nprad,in_P_Pa").columns));
-  EXPECT_TRUE(tread::mf::needs_extras(select_eval_columns("Fx_N,sigmay_m").columns));
+  EXPECT_FALSE(tread::tyre::needs_extras(select_eval_columns("Fx_N,Kya_Nprad,in_P_Pa").columns));
+  EXPECT_TRUE(tread::tyre::needs_extras(select_eval_columns("Fx_N,sigmay_m").columns));
 }
 
 TEST(MfCsvStream, DecimalCommasWithSemicolonsOrTabsGiveTheSameOutput) {
   const std::vector<Point> pts = points(500, 5);
   MfCsvOptions csv = stream_options(33, 2);
-  csv.columns = tread::mf::select_eval_columns("all").columns;
+  csv.columns = tread::tyre::select_eval_columns("all").columns;
   const std::string reference = evaluate(csv_text(pts), csv);
   EXPECT_EQ(evaluate(csv_text(pts, ';', true), csv), reference);
   EXPECT_EQ(evaluate(csv_text(pts, '\t', true), csv), reference);
@@ -375,11 +375,11 @@ TEST(MfCsvStream, RowsAreThoseTheTableReads) {
       "# a comment\r\n\r\nFZ;SA;SL;IA;V;P\r\nN;deg;1;deg;kph;kPa\r\n\r\n# more\r\n"
       "-4000;-3,5;0,05;2;40;220\r\n  \r\n-6000;4;-0,1;-1;40;220\r\n# between\r\n"
       "-3000;1,25;0;0,5;60;180\r\n-2000;0;0;0;0;0";
-  tread::mf::InputTableOptions table_options;
-  table_options.convention = tread::mf::SignConvention::sae;
+  tread::tyre::InputTableOptions table_options;
+  table_options.convention = tread::tyre::SignConvention::sae;
   std::istringstream table_in(input);
-  tread::mf::InputTable table(table_in, "in.csv", table_options);
-  std::vector<tread::mf::InputRow> expected;
+  tread::tyre::InputTable table(table_in, "in.csv", table_options);
+  std::vector<tread::tyre::InputRow> expected;
   while (const auto row = table.next()) expected.push_back(*row);
   ASSERT_EQ(expected.size(), 4U);
   EXPECT_EQ(expected[0].line, 7);
@@ -392,7 +392,7 @@ TEST(MfCsvStream, RowsAreThoseTheTableReads) {
     ASSERT_EQ(rows.size(), expected.size()) << chunk;
     for (std::size_t r = 0; r < rows.size(); ++r) {
       const std::vector<std::string> cells = split(rows[r]);
-      for (std::size_t q = 0; q < tread::mf::kInputQuantityCount; ++q) {
+      for (std::size_t q = 0; q < tread::tyre::kInputQuantityCount; ++q) {
         EXPECT_EQ(bits(number(cells[q])), bits(expected[r].value[q])) << chunk << ' ' << r;
       }
     }
@@ -531,7 +531,7 @@ void expect_batch_as_float(const std::string& batch, const std::string& scalar,
   const std::vector<Cells> f = table_of(scalar);
   ASSERT_EQ(b.size(), f.size()) << what;
   ASSERT_EQ(b.size(), ordinary.size()) << what;
-  std::vector<double> scale(tread::mf::kEvalColumnCount, 0.0);
+  std::vector<double> scale(tread::tyre::kEvalColumnCount, 0.0);
   for (std::size_t r = 0; r < f.size(); ++r) {
     if (!ordinary[r]) continue;
     for (std::size_t c = 0; c < scale.size(); ++c) {
@@ -546,7 +546,7 @@ void expect_batch_as_float(const std::string& batch, const std::string& scalar,
       const double expected = f[r].value[c];
       const double got = b[r].value[c];
       same = same && bits(got) == bits(expected);
-      if (c < tread::mf::kEvalInputColumns) {
+      if (c < tread::tyre::kEvalInputColumns) {
         ASSERT_EQ(bits(got), bits(expected)) << what << " row " << r << ' ' << names[c];
         continue;
       }
@@ -566,7 +566,7 @@ void expect_batch_as_float(const std::string& batch, const std::string& scalar,
 
 TEST(MfCsvBatch, AgreesWithTheScalarFloatPathOverEveryTyre) {
   MfCsvOptions csv = stream_options(333, 2);
-  csv.columns = tread::mf::select_eval_columns("all").columns;
+  csv.columns = tread::tyre::select_eval_columns("all").columns;
   MfCsvOptions as_float = csv;
   as_float.use_float = true;
   MfCsvOptions as_batch = csv;
@@ -623,7 +623,7 @@ TEST(MfCsvBatch, OutputIsTheSameForAnyChunkSizeAndThreadCount) {
   const std::string input = wide_input(2003, 12);
   MfCsvOptions csv = stream_options(1 << 20, 1);
   csv.use_batch = true;
-  csv.columns = tread::mf::select_eval_columns("all").columns;
+  csv.columns = tread::tyre::select_eval_columns("all").columns;
   const std::string one_chunk = evaluate(input, csv);
   EXPECT_EQ(data_lines(one_chunk).size(), 2003U);
   for (const auto& [chunk, threads] : std::vector<std::pair<std::size_t, unsigned>>{
@@ -635,7 +635,7 @@ TEST(MfCsvBatch, OutputIsTheSameForAnyChunkSizeAndThreadCount) {
   }
   // The default columns (no extras: evaluated without them): the same cells as in all columns.
   MfCsvOptions defaults = csv;
-  defaults.columns = tread::mf::default_eval_columns();
+  defaults.columns = tread::tyre::default_eval_columns();
   const std::vector<std::string> def = data_lines(evaluate(input, defaults));
   const std::vector<std::string> all = data_lines(one_chunk);
   ASSERT_EQ(def.size(), all.size());

@@ -1,6 +1,6 @@
-// mf::curve_warnings (sim/mf/mf_curve_checks.hpp): none for the MF 6.1 sample tyre; each kind of
+// tyre::curve_warnings (sim/tyre/mf_curve_checks.hpp): none for the MF 6.1 sample tyre; each kind of
 // inverted curve reported once, for a tyre made inverted on purpose through the .tir API.
-#include "mf/mf_curve_checks.hpp"
+#include "tyre/mf_curve_checks.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "golden_path.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
 #include "tir/tir_file.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 
 namespace {
 
@@ -17,8 +17,8 @@ std::vector<std::string> warnings_with(const char* section, const char* key, dou
   tread::tir::TirFile file =
       tread::tir::read_tir(tread::testing::tyre_file("MagicFormula61_Parameters.tir"));
   if (key != nullptr) file.set(section, key, value);
-  const auto p = tread::mf::mf_parameters_from_tir(file).params;
-  return tread::mf::curve_warnings(p, tread::mf::MfOptions{}, {2000.0, 4000.0, 6000.0}, 16.7);
+  const auto p = tread::tyre::mf_parameters_from_tir(file).params;
+  return tread::tyre::curve_warnings(p, tread::mf::MfOptions{}, {2000.0, 4000.0, 6000.0}, 16.7);
 }
 
 std::string joined(const std::vector<std::string>& w) {

@@ -16,8 +16,8 @@
 #include "golden_path.hpp"
 #include "mf/mf_evaluate.hpp"
 #include "mf/mf_evaluate_four.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
 #include "mf_output_columns.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 #include "wild_value.hpp"
 
 namespace tread::mf {
@@ -40,7 +40,7 @@ std::vector<Key> all_keys() {
 }
 
 MfParameters<double> load(const std::string& name) {
-  return load_mf_parameters(testing::tyre_file(name)).params;
+  return tyre::load_mf_parameters(testing::tyre_file(name)).params;
 }
 
 template <typename T>

@@ -30,7 +30,7 @@
 #include "mf/mf_evaluate.hpp"
 #include "mf/mf_evaluate_batch.hpp"
 #include "mf/mf_evaluate_four.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 #include "wild_value.hpp"
 
 namespace tread::mf {
@@ -43,7 +43,7 @@ std::vector<MfParameters<float>> all_mf_tyres() {
   for (const auto& entry : std::filesystem::directory_iterator(testing::tyres_dir())) {
     if (entry.path().extension() != ".tir") continue;
     try {
-      tyres.push_back(convert_parameters<float>(load_mf_parameters(entry.path()).params));
+      tyres.push_back(convert_parameters<float>(tyre::load_mf_parameters(entry.path()).params));
     } catch (const std::exception&) {
       // PAC89/PAC94: not a Magic Formula file
     }
@@ -168,7 +168,7 @@ TEST(MfEvaluateBatch, EveryLengthAndPlaceInABlock) {
   for (const char* tyre : {"MagicFormula61_Parameters.tir", "MagicFormula62_Parameters.tir",
                            "chrono_Sedan_Pac02Tire.tir"}) {
     const MfParameters<float> p =
-        convert_parameters<float>(load_mf_parameters(testing::tyre_file(tyre)).params);
+        convert_parameters<float>(tyre::load_mf_parameters(testing::tyre_file(tyre)).params);
     const MfOptions o = options_from_use_mode(111).value;
     std::mt19937_64 rng(5);
     const std::size_t most = static_cast<std::size_t>(3 * batch_lanes());

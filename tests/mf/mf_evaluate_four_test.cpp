@@ -28,9 +28,9 @@
 #include "golden_path.hpp"
 #include "mf/mf_evaluate.hpp"
 #include "mf/mf_evaluate_four.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
 #include "mf_golden_compare.hpp"
 #include "mf_output_columns.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 #include "wild_value.hpp"
 
 #include "allocation_counter.hpp"  // this program's only source file: it defines the counters
@@ -110,7 +110,7 @@ void golden_four(const GoldenCase& gc, std::uint64_t shuffle_seed) {
   const testing::CsvTable table = testing::load_golden(gc.csv);
   ASSERT_EQ(table.rows.size(), gc.rows);
   const MfParameters<float> pf =
-      convert_parameters<float>(load_mf_parameters(testing::tyre_file(gc.tir)).params);
+      convert_parameters<float>(tyre::load_mf_parameters(testing::tyre_file(gc.tir)).params);
   for (int mode : gc.modes) {
     const Result<MfOptions> options = options_from_use_mode(mode);
     ASSERT_TRUE(options.ok());
@@ -185,7 +185,7 @@ std::vector<LoadedTir> loadable_tir_files() {
   std::vector<LoadedTir> files;
   for (const auto& path : paths) {
     try {
-      files.push_back({path.filename().string(), load_mf_parameters(path).params});
+      files.push_back({path.filename().string(), tyre::load_mf_parameters(path).params});
     } catch (const std::exception& e) {
       std::printf("[ not MF   ] %s: %s\n", path.filename().string().c_str(), e.what());
     }
@@ -534,8 +534,8 @@ TEST(MfEvaluateFour, OutOfEnvelopeInOneLaneSetsOutOfRangeInThatLaneOnly) {
   // lanes of a mode (value by value they need not: at the envelope's Fz = 10·FZMAX, dFz ≈ 26, the
   // .tir's polynomials in dFz cancel, e.g. μx = PDX1 + PDX2·dFz, and a small Fx carries the
   // rounding of large terms).
-  const MfTirParameters loaded =
-      load_mf_parameters(testing::tyre_file("MagicFormula61_Parameters.tir"));
+  const tyre::MfTirParameters loaded =
+      tyre::load_mf_parameters(testing::tyre_file("MagicFormula61_Parameters.tir"));
   const MfParameters<float> pf = convert_parameters<float>(loaded.params);
   Inputs4 clean;
   clean[0] = {4000.0f, 0.05f, 0.03f, 0.01f, 20.0f, 0.0f, 0.0f};

@@ -11,8 +11,8 @@
 
 #include "golden_path.hpp"
 #include "mf/mf_evaluate.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
 #include "mf_output_columns.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 #include "wild_value.hpp"
 
 namespace tread::mf {
@@ -24,7 +24,7 @@ template <typename T>
 void fuzz(const std::string& tir_name, int cases) {
   const auto path = testing::tyre_file(tir_name);
   ASSERT_TRUE(std::filesystem::exists(path)) << path;
-  const MfParameters<T> p = convert_parameters<T>(load_mf_parameters(path).params);
+  const MfParameters<T> p = convert_parameters<T>(tyre::load_mf_parameters(path).params);
   std::mt19937_64 rng(0x7ead + static_cast<std::uint64_t>(cases));
   const auto columns = testing::output_columns<T>();
   int bad = 0;

@@ -16,9 +16,9 @@
 #include "csv_table.hpp"
 #include "golden_path.hpp"
 #include "mf/mf_evaluate.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
 #include "mf_golden_compare.hpp"
 #include "mf_output_columns.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 
 namespace tread::mf {
 namespace {
@@ -36,7 +36,7 @@ struct Worst {
 /// Compares every row of `table` (rows with useMode == mode, or all rows if the table has no
 /// useMode column) and returns the worst errors. Fails the test for any violation.
 Worst compare(const std::string& tir, const CsvTable& table, int mode) {
-  const MfTirParameters loaded = load_mf_parameters(tyre_file(tir));
+  const tyre::MfTirParameters loaded = tyre::load_mf_parameters(tyre_file(tir));
   const MfParameters<double> pd = loaded.params;
   const MfParameters<float> pf = convert_parameters<float>(pd);
   const Result<MfOptions> options = options_from_use_mode(mode);

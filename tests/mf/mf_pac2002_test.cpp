@@ -11,8 +11,8 @@
 
 #include "golden_path.hpp"
 #include "mf/mf_evaluate.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
 #include "mf_output_columns.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 
 namespace tread::mf {
 namespace {
@@ -20,7 +20,7 @@ namespace {
 MfParameters<double> load(const char* name) {
   const auto path = testing::tyre_file(name);
   EXPECT_TRUE(std::filesystem::exists(path)) << path;
-  return load_mf_parameters(path).params;
+  return tyre::load_mf_parameters(path).params;
 }
 
 MfInput<double> input(double fz, double kappa, double alpha, double gamma) {

@@ -1,5 +1,5 @@
-// sim/mf/mf_parameters_from_tir: .tir → MfParameters, missing keys listed, FITTYP and TYRESIDE.
-#include "mf/mf_parameters_from_tir.hpp"
+// sim/tyre/mf_parameters_from_tir: .tir → MfParameters, missing keys listed, FITTYP and TYRESIDE.
+#include "tyre/mf_parameters_from_tir.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,7 +17,7 @@ bool contains(const std::vector<std::string>& v, const std::string& s) {
 TEST(MfParametersFromTir, ReadsValuesAndListsMissingKeys) {
   const auto path = testing::tyre_file("MagicFormula61_Parameters.tir");
   ASSERT_TRUE(std::filesystem::exists(path)) << path;
-  const MfTirParameters r = load_mf_parameters(path);
+  const tyre::MfTirParameters r = tyre::load_mf_parameters(path);
   EXPECT_EQ(r.params.fit_type, FitType::mf61);
   EXPECT_EQ(r.params.tyre_side, TyreSide::right);
   EXPECT_DOUBLE_EQ(r.params.fnomin_n, 6752.0);
@@ -30,7 +30,8 @@ TEST(MfParametersFromTir, ReadsValuesAndListsMissingKeys) {
 }
 
 TEST(MfParametersFromTir, CompleteMf62FileReportsNoMissingKeys) {
-  const MfTirParameters r = load_mf_parameters(testing::tyre_file("MagicFormula62_Parameters.tir"));
+  const tyre::MfTirParameters r =
+      tyre::load_mf_parameters(testing::tyre_file("MagicFormula62_Parameters.tir"));
   EXPECT_EQ(r.params.fit_type, FitType::mf62);
   EXPECT_TRUE(r.missing.empty()) << r.warning;
   EXPECT_TRUE(r.warning.empty()) << r.warning;
@@ -40,7 +41,7 @@ TEST(MfParametersFromTir, MissingKeysAreThoseOfTheFilesOwnModel) {
   const tir::TirFile f = tir::parse_tir(
       "[MODEL]\nFITTYP = 61\n[VERTICAL]\nFNOMIN = 4000\n[LATERAL_COEFFICIENTS]\nPCY1 = 1.3\n",
       "m.tir");
-  const MfTirParameters r = mf_parameters_from_tir(f);
+  const tyre::MfTirParameters r = tyre::mf_parameters_from_tir(f);
   EXPECT_TRUE(contains(r.missing, "PKY4"));     // MF 6.1 key
   EXPECT_FALSE(contains(r.missing, "Q_CAM1"));  // MF 6.2 only
   EXPECT_FALSE(contains(r.missing, "PTX1"));    // MF 5.2 only
@@ -49,7 +50,8 @@ TEST(MfParametersFromTir, MissingKeysAreThoseOfTheFilesOwnModel) {
 }
 
 TEST(MfParametersFromTir, Mf52FileTakesDefaults) {
-  const MfTirParameters r = load_mf_parameters(testing::tyre_file("MagicFormula52_Parameters.tir"));
+  const tyre::MfTirParameters r =
+      tyre::load_mf_parameters(testing::tyre_file("MagicFormula52_Parameters.tir"));
   EXPECT_EQ(r.params.fit_type, FitType::mf52);
   EXPECT_EQ(r.params.tyre_side, TyreSide::left);  // no TYRESIDE
   EXPECT_FALSE(contains(r.missing, "NOMPRES"));   // not an MF 5.2 key
@@ -61,7 +63,7 @@ TEST(MfParametersFromTir, Mf52FileTakesDefaults) {
 TEST(MfParametersFromTir, FileWithoutFittypIsPac2002WithWarning) {
   const tir::TirFile f = tir::parse_tir(
       "[MODEL]\nTYRESIDE = 'Right'\n[VERTICAL]\nFNOMIN = 5000\nPCX1 = 1.6\n", "x.tir");
-  const MfTirParameters r = mf_parameters_from_tir(f);
+  const tyre::MfTirParameters r = tyre::mf_parameters_from_tir(f);
   EXPECT_EQ(r.params.fit_type, FitType::pac2002);
   EXPECT_EQ(r.params.tyre_side, TyreSide::right);
   EXPECT_DOUBLE_EQ(r.params.fnomin_n, 5000.0);
@@ -71,7 +73,7 @@ TEST(MfParametersFromTir, FileWithoutFittypIsPac2002WithWarning) {
 TEST(MfParametersFromTir, UnknownFittypNamesFileAndLine) {
   const tir::TirFile f = tir::parse_tir("[MODEL]\n\nFITTYP = 7\nPCX1 = 1\n", "truck.tir");
   try {
-    static_cast<void>(mf_parameters_from_tir(f));
+    static_cast<void>(tyre::mf_parameters_from_tir(f));
     FAIL() << "no error";
   } catch (const tir::TirError& e) {
     EXPECT_EQ(std::string(e.what()),
@@ -89,7 +91,7 @@ void expect_refused(const std::string& name, int line, const std::string& what) 
   SCOPED_TRACE(name);
   const auto path = variant(name);
   try {
-    (void)load_mf_parameters(path);
+    (void)tyre::load_mf_parameters(path);
     ADD_FAILURE() << "no error";
   } catch (const tir::TirError& e) {
     const std::string prefix = path.string() + ":" + std::to_string(line) + ": " + what;
@@ -113,35 +115,35 @@ TEST(MfParametersFromTir, OtherTyreModelsAreNotMagicFormulaFiles) {
 }
 
 TEST(MfParametersFromTir, Mf50IsEvaluatedOnThePac2002PathWithItsDifferencesSaid) {
-  const MfTirParameters r = load_mf_parameters(variant("mf05_fe_method.tir"));
+  const tyre::MfTirParameters r = tyre::load_mf_parameters(variant("mf05_fe_method.tir"));
   EXPECT_EQ(r.params.fit_type, FitType::pac2002);
   EXPECT_EQ(r.model, "MF-Tyre 5.0");
   EXPECT_NE(r.warning.find("FITTYP 5 (MF-Tyre 5.0)"), std::string::npos) << r.warning;
   EXPECT_NE(r.warning.find("FE_METHOD = 'YES'"), std::string::npos) << r.warning;
   EXPECT_DOUBLE_EQ(r.params.fnomin_n, 25990.0);
-  const MfTirParameters feda =
-      load_mf_parameters(testing::tyre_file("chrono_feda_335_65R22_5_G275MSA_60psi.tir"));
+  const tyre::MfTirParameters feda =
+      tyre::load_mf_parameters(testing::tyre_file("chrono_feda_335_65R22_5_G275MSA_60psi.tir"));
   EXPECT_EQ(feda.model, "MF-Tyre 5.0");
 }
 
 TEST(MfParametersFromTir, Fittyp52IsMf52) {
   const tir::TirFile f = tir::parse_tir("[MODEL]\nFITTYP = 52\n[L]\nPCX1 = 1.6\n", "f.tir");
-  EXPECT_EQ(mf_parameters_from_tir(f).params.fit_type, FitType::mf52);
+  EXPECT_EQ(tyre::mf_parameters_from_tir(f).params.fit_type, FitType::mf52);
 }
 
 TEST(MfParametersFromTir, NompresOnlyIsEvaluatedAtNompres) {
-  const MfTirParameters r = load_mf_parameters(variant("nompres_only.tir"));
+  const tyre::MfTirParameters r = tyre::load_mf_parameters(variant("nompres_only.tir"));
   EXPECT_DOUBLE_EQ(r.params.nompres_pa, 80000.0);
   EXPECT_DOUBLE_EQ(r.params.inflpres_pa, 80000.0);
   EXPECT_NE(r.warning.find("no INFLPRES: evaluated at NOMPRES (80000 Pa)"), std::string::npos)
       << r.warning;
   const tir::TirFile infl_only =
       tir::parse_tir("[MODEL]\nFITTYP = 61\n[O]\nINFLPRES = 90000\nPCX1 = 1.6\n", "i.tir");
-  const MfTirParameters i = mf_parameters_from_tir(infl_only);
+  const tyre::MfTirParameters i = tyre::mf_parameters_from_tir(infl_only);
   EXPECT_DOUBLE_EQ(i.params.nompres_pa, 90000.0);
   EXPECT_NE(i.warning.find("no NOMPRES"), std::string::npos) << i.warning;
   const tir::TirFile neither = tir::parse_tir("[MODEL]\nFITTYP = 62\n[O]\nPCX1 = 1.6\n", "n.tir");
-  const MfTirParameters n = mf_parameters_from_tir(neither);
+  const tyre::MfTirParameters n = tyre::mf_parameters_from_tir(neither);
   EXPECT_DOUBLE_EQ(n.params.nompres_pa, n.params.inflpres_pa);
   EXPECT_NE(n.warning.find("no INFLPRES or NOMPRES"), std::string::npos) << n.warning;
 }
@@ -149,7 +151,7 @@ TEST(MfParametersFromTir, NompresOnlyIsEvaluatedAtNompres) {
 TEST(MfParametersFromTir, FileWarningsAreForwarded) {
   const tir::TirFile f =
       tir::parse_tir("[MODEL]\nFITTYP = 61\nUSE_MODE =\n[O]\nPCX1 = 1.6\n", "w.tir");
-  EXPECT_NE(mf_parameters_from_tir(f).warning.find("w.tir:3: 'USE_MODE' has no value"),
+  EXPECT_NE(tyre::mf_parameters_from_tir(f).warning.find("w.tir:3: 'USE_MODE' has no value"),
             std::string::npos);
 }
 
@@ -161,7 +163,7 @@ TEST(MfParametersFromTir, DefectiveParametersAreRefused) {
   expect_refused("defective_fz_range.tir", 7, "FZMAX = 100 is not above FZMIN = 9000");
   const auto refused = [](const std::string& text) {
     try {
-      (void)mf_parameters_from_tir(tir::parse_tir(text, "d.tir"));
+      (void)tyre::mf_parameters_from_tir(tir::parse_tir(text, "d.tir"));
     } catch (const tir::TirError& e) {
       return std::string(e.what());
     }
@@ -182,7 +184,7 @@ TEST(MfParametersFromTir, DefectiveParametersAreRefused) {
             "empty)");
   // MF 5.2 has no pressure terms: a zero NOMPRES there is not an error.
   EXPECT_EQ(refused("[M]\nFITTYP = 6\nPCX1 = 1.6\nNOMPRES = 0\n"), "accepted");
-  const MfTirParameters w = mf_parameters_from_tir(
+  const tyre::MfTirParameters w = tyre::mf_parameters_from_tir(
       tir::parse_tir("[M]\nFITTYP = 6\nPCX1 = 1.6\nVXLOW = 0\nFNOMIN = 50\n", "w.tir"));
   EXPECT_NE(w.warning.find("w.tir:4: VXLOW = 0"), std::string::npos) << w.warning;
   EXPECT_NE(w.warning.find("w.tir:5: FNOMIN = 50 lies outside FZMIN"), std::string::npos)
@@ -192,7 +194,7 @@ TEST(MfParametersFromTir, DefectiveParametersAreRefused) {
 TEST(MfParametersFromTir, NonNumericValueIsAnError) {
   const tir::TirFile f =
       tir::parse_tir("[MODEL]\nFITTYP = 61\n[VERTICAL]\nFNOMIN = 'heavy'\n", "b.tir");
-  EXPECT_THROW(static_cast<void>(mf_parameters_from_tir(f)), tir::TirError);
+  EXPECT_THROW(static_cast<void>(tyre::mf_parameters_from_tir(f)), tir::TirError);
 }
 
 }  // namespace

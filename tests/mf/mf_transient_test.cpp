@@ -9,7 +9,7 @@
 #include <cmath>
 
 #include "golden_path.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 
 namespace tread::mf {
 namespace {
@@ -26,7 +26,7 @@ MfInput<double> input(double kappa, double alpha, double vx) {
 class MfTransientTest : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(MfTransientTest, StepResponseTimeConstantIsSigmaOverVx) {
-  const MfParameters<double> p = load_mf_parameters(testing::tyre_file(GetParam())).params;
+  const MfParameters<double> p = tyre::load_mf_parameters(testing::tyre_file(GetParam())).params;
   const MfOptions o = options_from_use_mode(111).value;
   const double vx = 20.0;
   const double dt = 1e-3;

@@ -1,4 +1,4 @@
-// tyre_figures (sim/mf/mf_tyre_figures.hpp) against MFeval's own stiffness outputs and against
+// tyre_figures (sim/tyre/mf_tyre_figures.hpp) against MFeval's own stiffness outputs and against
 // the curves it summarises.
 #include <gtest/gtest.h>
 
@@ -7,15 +7,15 @@
 #include "csv_table.hpp"
 #include "golden_path.hpp"
 #include "mf/mf_evaluate.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
-#include "mf/mf_tyre_figures.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
+#include "tyre/mf_tyre_figures.hpp"
 
 namespace tread::mf {
 namespace {
 
 TEST(MfTyreFigures, StiffnessesMatchMfeval) {
   const MfParameters<double> p =
-      load_mf_parameters(testing::tyre_file("MagicFormula61_Parameters.tir")).params;
+      tyre::load_mf_parameters(testing::tyre_file("MagicFormula61_Parameters.tir")).params;
   const testing::CsvTable ref = testing::read_csv(
       testing::test_data("mfeval/mfeval_MagicFormula61_Parameters_mode111.csv").string());
   int compared = 0;
@@ -25,8 +25,8 @@ TEST(MfTyreFigures, StiffnessesMatchMfeval) {
         std::fabs(ref.at(r, "in_gamma_rad")) > 1e-12) {
       continue;
     }
-    const MfTyreFigures f =
-        tyre_figures(p, MfOptions{}, ref.at(r, "in_Fz_N"), ref.at(r, "in_Vx_mps"));
+    const tyre::MfTyreFigures f =
+        tyre::tyre_figures(p, MfOptions{}, ref.at(r, "in_Fz_N"), ref.at(r, "in_Vx_mps"));
     EXPECT_TRUE(f.finite);
     EXPECT_NEAR(f.kya_nprad, -ref.at(r, "Kya_Nprad"), 1e-5 * std::fabs(ref.at(r, "Kya_Nprad")));
     EXPECT_NEAR(f.kxk_n, ref.at(r, "Kxk_N"), 1e-5 * std::fabs(ref.at(r, "Kxk_N")));
@@ -38,8 +38,8 @@ TEST(MfTyreFigures, StiffnessesMatchMfeval) {
 
 TEST(MfTyreFigures, PeaksAreThePeaksOfTheCurves) {
   const MfParameters<double> p =
-      load_mf_parameters(testing::tyre_file("MagicFormula61_Parameters.tir")).params;
-  const MfTyreFigures f = tyre_figures(p, MfOptions{});
+      tyre::load_mf_parameters(testing::tyre_file("MagicFormula61_Parameters.tir")).params;
+  const tyre::MfTyreFigures f = tyre::tyre_figures(p, MfOptions{});
   EXPECT_DOUBLE_EQ(f.fz_n, p.fnomin_n);
   EXPECT_DOUBLE_EQ(f.p_pa, p.inflpres_pa);
   // No point of a fine sweep beats the reported peak by more than the grid's resolution.

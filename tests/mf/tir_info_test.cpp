@@ -1,5 +1,5 @@
-// sim/mf/tir_info: the `tread tir info` report.
-#include "mf/tir_info.hpp"
+// sim/tyre/tir_info: the `tread tir info` report.
+#include "tyre/tir_info.hpp"
 
 #include <gtest/gtest.h>
 
@@ -21,7 +21,7 @@ void expect_has(const std::string& report, const std::string& text) {
 }
 
 TEST(TirInfo, Mf61Report) {
-  const std::string r = tir_info_report(testing::tyre_file("MagicFormula61_Parameters.tir"));
+  const std::string r = tyre::tir_info_report(testing::tyre_file("MagicFormula61_Parameters.tir"));
   expect_has(r, "model: MF 6.1 (PROPERTY_FILE_FORMAT 'USER', FITTYP 61)");
   expect_has(r, "FNOMIN: 6752 N");
   expect_has(r, "pressure: NOMPRES 260000 Pa, INFLPRES 260000 Pa");
@@ -33,14 +33,14 @@ TEST(TirInfo, Mf61Report) {
 }
 
 TEST(TirInfo, UnitsAreShownAndConverted) {
-  const std::string r = tir_info_report(variant("mf61_mm_kN_deg.tir"));
+  const std::string r = tyre::tir_info_report(variant("mf61_mm_kN_deg.tir"));
   expect_has(r, "units: LENGTH 'mm', FORCE 'kN', ANGLE 'deg'");
   expect_has(r, "(values below converted to SI)");
   expect_has(r, "FNOMIN: 6752 N, R0: 0.3943 m");
 }
 
 TEST(TirInfo, PeakSignChangeIsWarned) {
-  const std::string r = tir_info_report(variant("fx_peak_sign_change.tir"));
+  const std::string r = tyre::tir_info_report(variant("fx_peak_sign_change.tir"));
   expect_has(r, "warning: Fx peak changes sign at Fz = 12000 N, below FZMAX = 20000 N");
   EXPECT_EQ(r.find("Fy peak changes sign"), std::string::npos) << r;  // at 44000 N
   expect_has(r, "defaulted keys (");
@@ -48,10 +48,10 @@ TEST(TirInfo, PeakSignChangeIsWarned) {
 }
 
 TEST(TirInfo, PacAndOtherFiles) {
-  const std::string r = tir_info_report(variant("pac94_header.tir"));
+  const std::string r = tyre::tir_info_report(variant("pac94_header.tir"));
   expect_has(r, "model: PAC94 (PROPERTY_FILE_FORMAT 'PAC94', FITTYP -)");
   expect_has(r, "evaluate with: tread pac eval");
-  EXPECT_THROW((void)tir_info_report(variant("fiala.tir")), tir::TirError);
+  EXPECT_THROW((void)tyre::tir_info_report(variant("fiala.tir")), tir::TirError);
 }
 
 }  // namespace

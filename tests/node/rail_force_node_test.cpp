@@ -10,8 +10,8 @@
 #include "contact/contact_mechanics.hpp"
 #include "contact/contact_setup.hpp"
 #include "contact/rail_placement.hpp"
-#include "node/node_runtime.hpp"
 #include "proto/rig_link.hpp"
+#include "runtime/node_runtime.hpp"
 
 namespace tread {
 namespace {

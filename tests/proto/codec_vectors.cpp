@@ -11,8 +11,8 @@
 #include <sstream>
 #include <string>
 
+#include "dbc/dbc_writer.hpp"
 #include "proto/codec.hpp"
-#include "proto/dbc_writer.hpp"
 #include "proto/e2e_profile1.hpp"
 
 namespace {

@@ -8,8 +8,8 @@
 
 #include "contact/contact_setup.hpp"
 #include "lut/lut_generator.hpp"
-#include "node/node_runtime.hpp"
 #include "profile/wheel_profile.hpp"
+#include "runtime/node_runtime.hpp"
 
 namespace tread {
 namespace {

@@ -12,8 +12,8 @@
 #include <thread>
 
 #include "demo_run.hpp"
-#include "node/node_session.hpp"
 #include "rig/hil_demo.hpp"
+#include "runtime/node_session.hpp"
 
 namespace tread::host {
 namespace {

@@ -11,9 +11,9 @@
 #include "contact/equivalent_conicity.hpp"
 #include "contact/klingel.hpp"
 #include "demo_run.hpp"
-#include "node/node_runtime.hpp"
 #include "rig/dynamic_hunting_scenario.hpp"
 #include "rig/wheelset_stability.hpp"
+#include "runtime/node_runtime.hpp"
 
 namespace tread {
 namespace {

@@ -13,8 +13,8 @@
 #include "contact/klingel.hpp"
 #include "demo_run.hpp"
 #include "mf/mf_evaluate.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
-#include "node/node_runtime.hpp"
+#include "runtime/node_runtime.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 #include "vehicle/vehicle_params.hpp"
 
 namespace tread::host {
@@ -90,7 +90,7 @@ TEST(RigScenarios, BrakingDecelerationIsBoundedByThePeakFrictionOfTheNodesTyre) 
   // cannot decelerate by more than mu_peak g with every wheel at its own peak.
   const Csv c = read_csv(o->trace_csv);
   const mf::MfParameters<double> tyre =
-      mf::load_mf_parameters(testing::tyre_file("MagicFormula61_Parameters.tir")).params;
+      tyre::load_mf_parameters(testing::tyre_file("MagicFormula61_Parameters.tir")).params;
   double fz_front = 0.0;
   double fz_rear = 0.0;
   const std::size_t mid = c.rows.size() / 2;  // steady braking

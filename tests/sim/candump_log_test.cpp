@@ -1,4 +1,4 @@
-#include "node/candump_log.hpp"
+#include "runtime/candump_log.hpp"
 
 #include <gtest/gtest.h>
 

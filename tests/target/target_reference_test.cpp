@@ -19,11 +19,11 @@
 #include "golden_path.hpp"
 #include "lut/tread_lut.hpp"
 #include "mf/mf_fixed.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
-#include "node/node_runtime.hpp"
-#include "node/node_session.hpp"
+#include "runtime/node_runtime.hpp"
+#include "runtime/node_session.hpp"
 #include "test_dir.hpp"
 #include "tir/mf_header.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 
 namespace tread {
 namespace {
@@ -83,7 +83,7 @@ void expect_generated_tyre_header(tir::MfHeaderOptions o, const std::string& pat
   const auto tir = testing::tyre_file("MagicFormula61_Parameters.tir");
   o.name_space = "tread::firmware";
   o.source = tir.filename().string();
-  const std::string generated = tir::generate_mf_header(mf::load_mf_parameters(tir).params, o);
+  const std::string generated = tir::generate_mf_header(tyre::load_mf_parameters(tir).params, o);
   EXPECT_EQ(generated, slurp(testing::source_dir() / path))
       << "regenerate with: tread_tir_header " << tir << " " << path << " --mf"
       << (flags.empty() ? "" : " " + flags) << " --name " << o.name

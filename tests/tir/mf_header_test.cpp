@@ -1,6 +1,6 @@
 // The MF constexpr header: generated at build time from MagicFormula61_Parameters.tir (float and
 // double) and compared member by member, bit for bit, with the host loader's values
-// (mf::load_mf_parameters, converted with mf::convert_parameters<float> for the float header and
+// (tyre::load_mf_parameters, converted with mf::convert_parameters<float> for the float header and
 // mf::to_fixed_parameters for the Fixed64 one).
 #include "tir/mf_header.hpp"
 
@@ -16,8 +16,8 @@
 #include "generated/mf61_params_float.hpp"
 #include "golden_path.hpp"
 #include "mf/mf_fixed.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
 #include "tir/tir_file.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 
 namespace {
 
@@ -48,7 +48,7 @@ void expect_identical(const tread::mf::MfParameters<T>& a, const tread::mf::MfPa
 TEST(MfHeader, GeneratedParametersEqualTheLoader) {
   const auto path = tread::testing::tyre_file("MagicFormula61_Parameters.tir");
   ASSERT_TRUE(std::filesystem::exists(path)) << path;
-  const auto loaded = tread::mf::load_mf_parameters(path).params;
+  const auto loaded = tread::tyre::load_mf_parameters(path).params;
   expect_identical(tyres::kMf61Double, loaded);
   expect_identical(tyres::kMf61Float, tread::mf::convert_parameters<float>(loaded));
   expect_identical(tyres::kMf61Fixed, tread::mf::to_fixed_parameters(loaded));

@@ -1,6 +1,6 @@
 // CSV evaluation of PAC89/PAC94: values equal direct calls (double, float, ISO-W), extra columns
 // ignored, and input errors name file and line.
-#include "mf/pac_csv.hpp"
+#include "tyre/pac_csv.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,7 +17,7 @@ namespace {
 using tread::pac::PacInput;
 using tread::pac::PacParams;
 using tread::pac::Slip;
-using tread::tir::PacCsvOptions;
+using tread::tyre::PacCsvOptions;
 
 PacParams<double> params() {
   PacParams<double> p;
@@ -67,7 +67,7 @@ TEST(PacCsv, RowsEqualDirectEvaluation) {
       o.iso_w = iso;
       std::istringstream in(input);
       std::ostringstream out;
-      EXPECT_EQ(tread::tir::evaluate_pac_csv(params(), o, in, "in.csv", out), 2U);
+      EXPECT_EQ(tread::tyre::evaluate_pac_csv(params(), o, in, "in.csv", out), 2U);
       const auto rows = read_rows(out.str());
       ASSERT_EQ(rows.size(), 2U);
       const PacInput<double> ins[] = {{4000, 0.1, 0.05, 0.01}, {6000, -0.3, -0.2, 0}};
@@ -90,7 +90,7 @@ void expect_error(const std::string& input, int line, const std::string& what) {
   std::istringstream in(input);
   std::ostringstream out;
   try {
-    (void)tread::tir::evaluate_pac_csv(params(), {}, in, "bad.csv", out);
+    (void)tread::tyre::evaluate_pac_csv(params(), {}, in, "bad.csv", out);
     ADD_FAILURE() << input;
   } catch (const tread::tir::TirError& e) {
     EXPECT_EQ(e.line(), line) << e.what();
@@ -118,7 +118,7 @@ TEST(PacCsv, NoNonFiniteOutputUnderStatusOk) {
   std::istringstream in("Fz_N,kappa,alpha_rad,gamma_rad\n4000,0.05,0.05,0\n");
   std::ostringstream out;
   try {
-    (void)tread::tir::evaluate_pac_csv(defective, {}, in, "defective.csv", out);
+    (void)tread::tyre::evaluate_pac_csv(defective, {}, in, "defective.csv", out);
   } catch (const tread::tir::TirError& e) {
     EXPECT_EQ(e.line(), 2) << e.what();
     EXPECT_NE(std::string(e.what()).find("non-finite output under status ok"), std::string::npos);

@@ -11,11 +11,11 @@
 
 #include "golden_path.hpp"
 #include "mf/mf_evaluate.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
-#include "mf/mf_tyre_figures.hpp"
 #include "test_dir.hpp"
 #include "tir/pac_coefficients.hpp"
 #include "tir/tir_file.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
+#include "tyre/mf_tyre_figures.hpp"
 
 namespace tread {
 namespace {
@@ -93,8 +93,8 @@ TEST(TirConvert, NormalisedTyreEvaluatesTheSame) {
         << slurp(dir / "stderr.txt");
     EXPECT_EQ(slurp(out).rfind("$ normalised by tread tir convert from " + std::string(name), 0),
               0u);
-    const auto a = mf::load_mf_parameters(src).params;
-    const auto b = mf::load_mf_parameters(out).params;
+    const auto a = tyre::load_mf_parameters(src).params;
+    const auto b = tyre::load_mf_parameters(out).params;
     mf::MfInput<double> x;
     x.fz_n = 4500.0;
     x.kappa = 0.05;
@@ -180,8 +180,8 @@ TEST(TirInfoCommand, Mf61SampleShowsModelLimitsAndFigures) {
       << r.out;
   EXPECT_NE(r.out.find("defaulted keys (0):\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("warnings: none"), std::string::npos) << r.out;
-  const auto p = mf::load_mf_parameters(tir).params;
-  const mf::MfTyreFigures f = mf::tyre_figures(p, mf::MfOptions{});
+  const auto p = tyre::load_mf_parameters(tir).params;
+  const tyre::MfTyreFigures f = tyre::tyre_figures(p, mf::MfOptions{});
   EXPECT_NEAR(number_after(r.out, "FNOMIN: "), p.fnomin_n, 1e-9);
   EXPECT_NEAR(number_after(r.out, "peak μy: "), f.muy, 1e-3);
   EXPECT_NEAR(number_after(r.out, "peak μx: drive "), f.mux_drive, 1e-3);
@@ -231,8 +231,9 @@ TEST(TirConvert, UnitsSiRewritesInSiAndEvaluatesTheSame) {
   EXPECT_EQ(f.text("UNITS", "LENGTH"), "meter");
   EXPECT_EQ(f.text("UNITS", "FORCE"), "newton");
   EXPECT_EQ(f.text("UNITS", "ANGLE"), "radians");
-  const auto a = mf::load_mf_parameters(testing::tyre_file("MagicFormula61_Parameters.tir")).params;
-  const auto b = mf::load_mf_parameters(out).params;
+  const auto a =
+      tyre::load_mf_parameters(testing::tyre_file("MagicFormula61_Parameters.tir")).params;
+  const auto b = tyre::load_mf_parameters(out).params;
   EXPECT_NEAR(b.unloaded_radius_m, a.unloaded_radius_m, 1e-12);
   EXPECT_NEAR(b.fnomin_n, a.fnomin_n, 1e-9);
   EXPECT_NEAR(b.alpmax_rad, a.alpmax_rad, 1e-12);

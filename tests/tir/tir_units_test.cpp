@@ -13,8 +13,8 @@
 
 #include "golden_path.hpp"
 #include "mf/mf_evaluate.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
 #include "tir/tir_keys.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 
 namespace tread::tir {
 namespace {
@@ -85,10 +85,10 @@ TEST(TirKeys, TableCoversEveryMfParameterOnce) {
 
 // The same tyre in mm/kN/deg and in inch/lbf evaluates to the SI original's forces and moments.
 TEST(TirUnits, NonSiFilesEvaluateLikeTheSiOriginal) {
-  const auto si = mf::load_mf_parameters(testing::tyre_file("MagicFormula61_Parameters.tir"));
+  const auto si = tyre::load_mf_parameters(testing::tyre_file("MagicFormula61_Parameters.tir"));
   for (const char* name : {"mf61_mm_kN_deg.tir", "mf61_inch_lbf.tir"}) {
     SCOPED_TRACE(name);
-    const auto other = mf::load_mf_parameters(variant(name));
+    const auto other = tyre::load_mf_parameters(variant(name));
     expect_rel(other.params.unloaded_radius_m, si.params.unloaded_radius_m, 1e-12, "R0");
     expect_rel(other.params.nompres_pa, si.params.nompres_pa, 1e-12, "NOMPRES");
     expect_rel(other.params.cammax_rad, si.params.cammax_rad, 1e-12, "CAMMAX");

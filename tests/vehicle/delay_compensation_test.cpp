@@ -12,7 +12,7 @@
 
 #include "golden_path.hpp"
 #include "mf/mf_evaluate.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 #include "vehicle/manoeuvre.hpp"
 #include "vehicle/manoeuvre_runner.hpp"
 
@@ -61,7 +61,7 @@ class DelayCompensation : public ::testing::Test {
   void SetUp() override {
     const auto path = testing::tyre_file("MagicFormula61_Parameters.tir");
     ASSERT_TRUE(std::filesystem::exists(path)) << "missing reference data: " << path;
-    tir_ = mf::load_mf_parameters(path).params;
+    tir_ = tyre::load_mf_parameters(path).params;
     p_.wheel_radius_m = tir_.unloaded_radius_m;
     reference_ = mf_tyre_function(tir_);
   }

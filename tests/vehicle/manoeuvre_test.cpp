@@ -13,7 +13,7 @@
 #include <string>
 
 #include "golden_path.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 #include "vehicle/manoeuvre_runner.hpp"
 
 namespace tread::vehicle {
@@ -31,7 +31,7 @@ const Setup& setup() {
     Setup out;
     const auto path = testing::tyre_file("MagicFormula61_Parameters.tir");
     if (!std::filesystem::exists(path)) return out;  // each test asserts the file first
-    const mf::MfTirParameters tir = mf::load_mf_parameters(path);
+    const tyre::MfTirParameters tir = tyre::load_mf_parameters(path);
     out.params.wheel_radius_m = tir.params.unloaded_radius_m;
     out.tyre = mf_tyre_function(tir.params);
     return out;

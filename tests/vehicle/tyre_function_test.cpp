@@ -7,7 +7,7 @@
 
 #include "golden_path.hpp"
 #include "mf/mf_evaluate.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 
 namespace tread::vehicle {
 namespace {
@@ -27,7 +27,7 @@ TEST(TyreFunction, PeakBrakingSlipIsTheArgmaxOfTheBrakingForce) {
 TEST(TyreFunction, MagicFormulaWrapperIsEvaluate) {
   const auto path = testing::tyre_file("MagicFormula61_Parameters.tir");
   ASSERT_TRUE(std::filesystem::exists(path)) << "missing reference data: " << path;
-  const mf::MfParameters<double> params = mf::load_mf_parameters(path).params;
+  const mf::MfParameters<double> params = tyre::load_mf_parameters(path).params;
   const TyreFunction tyre = mf_tyre_function(params);
   WheelKinematics k;
   k.kappa = -0.07;

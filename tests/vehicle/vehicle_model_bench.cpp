@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "golden_path.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 #include "vehicle/manoeuvre.hpp"
 #include "vehicle/manoeuvre_runner.hpp"
 #include "vehicle/vehicle_model.hpp"
@@ -31,7 +31,7 @@ BENCHMARK(BM_VehicleModelCycle);
 
 void BM_StepSteerInProcess(benchmark::State& state) {
   const auto tir =
-      tread::mf::load_mf_parameters(tread::testing::tyre_file("MagicFormula61_Parameters.tir"));
+      tread::tyre::load_mf_parameters(tread::testing::tyre_file("MagicFormula61_Parameters.tir"));
   VehicleParams p;
   p.wheel_radius_m = tir.params.unloaded_radius_m;
   const TyreFunction tyre = mf_tyre_function(tir.params);

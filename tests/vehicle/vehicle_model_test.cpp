@@ -10,7 +10,7 @@
 #include <new>
 
 #include "golden_path.hpp"
-#include "mf/mf_parameters_from_tir.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
 #include "vehicle/tyre_function.hpp"
 
 // Every allocation of this test program is counted while g_counting is set (the rig's step path
@@ -188,7 +188,7 @@ class VehicleModelMf : public ::testing::Test {
   void SetUp() override {
     const auto path = testing::tyre_file("MagicFormula61_Parameters.tir");
     ASSERT_TRUE(std::filesystem::exists(path)) << "missing reference data: " << path;
-    tir_ = mf::load_mf_parameters(path).params;
+    tir_ = tyre::load_mf_parameters(path).params;
     p_.wheel_radius_m = tir_.unloaded_radius_m;
     tyre_ = mf_tyre_function(tir_);
   }

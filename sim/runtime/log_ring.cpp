@@ -1,0 +1,35 @@
+#include "runtime/log_ring.hpp"
+
+#include <chrono>
+
+namespace tread::host {
+
+LogRingWriter::LogRingWriter(LogRingBuffer& ring, CandumpWriter& writer)
+    : ring_(ring), writer_(writer) {
+  thread_ = std::thread([this] {
+    LogRecord r;
+    for (;;) {
+      const bool last = stop_.load(std::memory_order_acquire);
+      while (ring_.pop(r)) {
+        writer_.write(r.frame, r.time_ns);
+      }
+      if (last) {
+        return;  // stop was seen before this drain: nothing can follow
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+  });
+}
+
+LogRingWriter::~LogRingWriter() {
+  stop();
+}
+
+void LogRingWriter::stop() {
+  if (thread_.joinable()) {
+    stop_.store(true, std::memory_order_release);
+    thread_.join();
+  }
+}
+
+}  // namespace tread::host

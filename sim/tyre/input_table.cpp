@@ -1,0 +1,397 @@
+#include "tyre/input_table.hpp"
+
+#include <cctype>
+#include <istream>
+
+#include "io/csv_number.hpp"
+#include "io/text_line.hpp"
+#include "tir/tir_file.hpp"
+
+namespace tread::tyre {
+
+namespace {
+
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+
+struct Alias {
+  std::string_view name;  // as shown in help; matched without regard to case
+  InputQuantity quantity;
+  double to_si;
+  std::string_view unit;
+};
+
+// Units of the bare TTC names (FZ, SA, SL, IA, V, P): the FSAE Tire Test Consortium's metric
+// run files (N, deg, 1, deg, km/h, kPa).
+constexpr Alias kAliases[] = {
+    {"Fz_N", InputQuantity::fz, 1.0, "N"},
+    {"FZ", InputQuantity::fz, 1.0, "N"},
+    {"FZW", InputQuantity::fz, 1.0, "N"},
+    {"Load_N", InputQuantity::fz, 1.0, "N"},
+    {"Fz_kN", InputQuantity::fz, 1000.0, "kN"},
+    {"kappa", InputQuantity::kappa, 1.0, "1"},
+    {"SL", InputQuantity::kappa, 1.0, "1"},
+    {"LongSlip", InputQuantity::kappa, 1.0, "1"},
+    {"SlipRatio", InputQuantity::kappa, 1.0, "1"},
+    {"kappa_pct", InputQuantity::kappa, 0.01, "%"},
+    {"SL_pct", InputQuantity::kappa, 0.01, "%"},
+    {"alpha_rad", InputQuantity::alpha, 1.0, "rad"},
+    {"alpha", InputQuantity::alpha, 1.0, "rad"},
+    {"SA_rad", InputQuantity::alpha, 1.0, "rad"},
+    {"alpha_deg", InputQuantity::alpha, kDeg, "deg"},
+    {"SA", InputQuantity::alpha, kDeg, "deg"},
+    {"SA_deg", InputQuantity::alpha, kDeg, "deg"},
+    {"gamma_rad", InputQuantity::gamma, 1.0, "rad"},
+    {"gamma", InputQuantity::gamma, 1.0, "rad"},
+    {"IA_rad", InputQuantity::gamma, 1.0, "rad"},
+    {"gamma_deg", InputQuantity::gamma, kDeg, "deg"},
+    {"IA", InputQuantity::gamma, kDeg, "deg"},
+    {"IA_deg", InputQuantity::gamma, kDeg, "deg"},
+    {"camber_deg", InputQuantity::gamma, kDeg, "deg"},
+    {"Vx_mps", InputQuantity::vx, 1.0, "m/s"},
+    {"Vx", InputQuantity::vx, 1.0, "m/s"},
+    {"V_mps", InputQuantity::vx, 1.0, "m/s"},
+    {"Vx_kph", InputQuantity::vx, 1.0 / 3.6, "km/h"},
+    {"Vx_kmh", InputQuantity::vx, 1.0 / 3.6, "km/h"},
+    {"V", InputQuantity::vx, 1.0 / 3.6, "km/h"},
+    {"V_kph", InputQuantity::vx, 1.0 / 3.6, "km/h"},
+    {"V_kmh", InputQuantity::vx, 1.0 / 3.6, "km/h"},
+    {"phit_1pm", InputQuantity::phit, 1.0, "1/m"},
+    {"phit", InputQuantity::phit, 1.0, "1/m"},
+    {"P_Pa", InputQuantity::pressure, 1.0, "Pa"},
+    {"P_kPa", InputQuantity::pressure, 1000.0, "kPa"},
+    {"P", InputQuantity::pressure, 1000.0, "kPa"},
+    {"P_bar", InputQuantity::pressure, 1.0e5, "bar"},
+    {"P_psi", InputQuantity::pressure, 6894.757293168361, "psi"},  // 1 psi = 6894.757... Pa
+};
+
+// Units a units row (the line under the header, as in FSAE TTC run files) may name.
+struct UnitName {
+  std::string_view name;  // lower case
+  InputQuantity quantity;
+  double to_si;
+  std::string_view unit;  // as shown
+};
+
+constexpr UnitName kUnits[] = {
+    {"n", InputQuantity::fz, 1.0, "N"},
+    {"kn", InputQuantity::fz, 1000.0, "kN"},
+    {"lbf", InputQuantity::fz, 4.4482216152605, "lbf"},  // 1 lbf = 4.4482216152605 N
+    {"1", InputQuantity::kappa, 1.0, "1"},
+    {"-", InputQuantity::kappa, 1.0, "1"},
+    {"unitless", InputQuantity::kappa, 1.0, "1"},
+    {"%", InputQuantity::kappa, 0.01, "%"},
+    {"deg", InputQuantity::alpha, kDeg, "deg"},
+    {"rad", InputQuantity::alpha, 1.0, "rad"},
+    {"deg", InputQuantity::gamma, kDeg, "deg"},
+    {"rad", InputQuantity::gamma, 1.0, "rad"},
+    {"m/s", InputQuantity::vx, 1.0, "m/s"},
+    {"mps", InputQuantity::vx, 1.0, "m/s"},
+    {"km/h", InputQuantity::vx, 1.0 / 3.6, "km/h"},
+    {"kph", InputQuantity::vx, 1.0 / 3.6, "km/h"},
+    {"kmh", InputQuantity::vx, 1.0 / 3.6, "km/h"},
+    {"mph", InputQuantity::vx, 0.44704, "mph"},  // 1 mph = 0.44704 m/s
+    {"1/m", InputQuantity::phit, 1.0, "1/m"},
+    {"pa", InputQuantity::pressure, 1.0, "Pa"},
+    {"kpa", InputQuantity::pressure, 1000.0, "kPa"},
+    {"bar", InputQuantity::pressure, 1.0e5, "bar"},
+    {"psi", InputQuantity::pressure, 6894.757293168361, "psi"},
+};
+
+constexpr std::array<std::string_view, kInputQuantityCount> kSiNames = {
+    "Fz_N", "kappa", "alpha_rad", "gamma_rad", "Vx_mps", "phit_1pm", "P_Pa"};
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+std::string trim(std::string_view s) {
+  return std::string(host::text::trim_blanks(s));
+}
+
+std::size_t index(InputQuantity q) {
+  return static_cast<std::size_t>(q);
+}
+
+}  // namespace
+
+std::string_view si_name(InputQuantity q) {
+  return kSiNames[index(q)];
+}
+
+std::optional<InputColumn> recognise_input_column(std::string_view name) {
+  const std::string key = lower(trim(name));
+  for (const Alias& a : kAliases) {
+    if (lower(a.name) == key) return InputColumn{a.quantity, a.to_si, a.unit};
+  }
+  return std::nullopt;
+}
+
+std::string input_column_help() {
+  std::string help;
+  for (std::size_t q = 0; q < kInputQuantityCount; ++q) {
+    if (!help.empty()) help += "; ";
+    std::string_view unit;
+    for (const Alias& a : kAliases) {
+      if (index(a.quantity) != q) continue;
+      if (a.unit != unit) {
+        if (!unit.empty()) help += " [" + std::string(unit) + "], ";
+        unit = a.unit;
+      } else {
+        help += "|";
+      }
+      help += a.name;
+    }
+    help += " [" + std::string(unit) + "]";
+  }
+  return help;
+}
+
+std::optional<SignConvention> parse_sign_convention(std::string_view text) {
+  const std::string t = lower(trim(text));
+  if (t == "iso-w" || t == "iso_w" || t == "isow") return SignConvention::iso_w;
+  if (t == "sae") return SignConvention::sae;
+  if (t == "adapted-iso" || t == "adapted_iso") return SignConvention::adapted_iso;
+  return std::nullopt;
+}
+
+std::string_view to_string(SignConvention c) {
+  switch (c) {
+    case SignConvention::sae:
+      return "sae";
+    case SignConvention::adapted_iso:
+      return "adapted-iso";
+    case SignConvention::iso_w:
+      break;
+  }
+  return "iso-w";
+}
+
+double iso_w_sign(SignConvention c, InputQuantity q) {
+  switch (c) {
+    case SignConvention::sae:
+      return q == InputQuantity::fz || q == InputQuantity::alpha ? -1.0 : 1.0;
+    case SignConvention::adapted_iso:
+      return q == InputQuantity::alpha ? -1.0 : 1.0;
+    case SignConvention::iso_w:
+      break;
+  }
+  return 1.0;
+}
+
+double output_sign(SignConvention c, MeasuredQuantity q) {
+  switch (c) {
+    case SignConvention::sae:
+      return q == MeasuredQuantity::fy || q == MeasuredQuantity::fz || q == MeasuredQuantity::my ||
+                     q == MeasuredQuantity::mz
+                 ? -1.0
+                 : 1.0;
+    case SignConvention::adapted_iso:
+      return q == MeasuredQuantity::fy || q == MeasuredQuantity::mz ? -1.0 : 1.0;
+    case SignConvention::iso_w:
+      break;
+  }
+  return 1.0;
+}
+
+InputTable::InputTable(std::istream& in, std::string name, InputTableOptions options)
+    : in_(in), name_(std::move(name)), options_(std::move(options)) {
+  column_.fill(-1);
+  std::string line;
+  while (std::getline(in_, line)) {
+    ++line_;
+    if (line_ == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // UTF-8 BOM
+    const std::string t = trim(line);
+    if (t.empty() || t.front() == '#') continue;
+    separator_ = options_.separator;
+    if (separator_ == '\0') {
+      separator_ = ',';
+      if (t.find(',') == std::string::npos) {
+        if (t.find(';') != std::string::npos) {
+          separator_ = ';';
+        } else if (t.find('\t') != std::string::npos) {
+          separator_ = '\t';
+        }
+      }
+    }
+    header_ = split(t);
+    cells_ = header_.size();
+    quantity_of_cell_.assign(cells_, -1);
+    for (std::size_t i = 0; i < header_.size(); ++i) {
+      const std::optional<InputColumn> c = recognise_input_column(header_[i]);
+      if (!c) {
+        ignored_.push_back(header_[i]);
+        continue;
+      }
+      const std::size_t q = index(c->quantity);
+      if (column_[q] >= 0) {
+        throw tir::TirError(name_, line_,
+                            "columns '" + header_[static_cast<std::size_t>(column_[q])] +
+                                "' and '" + header_[i] + "' both give " + std::string(kSiNames[q]));
+      }
+      column_[q] = static_cast<int>(i);
+      spec_[q] = *c;
+      quantity_of_cell_[i] = static_cast<int>(q);
+    }
+    for (std::size_t q = 0; q < kInputQuantityCount; ++q) {
+      sign_[q] = iso_w_sign(options_.convention, static_cast<InputQuantity>(q));
+    }
+    for (InputQuantity q : options_.required) {
+      if (!has(q)) {
+        throw tir::TirError(name_, line_,
+                            "missing column '" + std::string(si_name(q)) +
+                                "' (or one of its other names; see --help)");
+      }
+    }
+    return;
+  }
+  throw tir::TirError(name_, line_, "no header row");
+}
+
+std::vector<std::string> InputTable::split(std::string_view line) const {
+  std::vector<std::string> cells;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t end = line.find(separator_, start);
+    cells.push_back(trim(
+        line.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start)));
+    if (end == std::string_view::npos) break;
+    start = end + 1;
+  }
+  return cells;
+}
+
+bool InputTable::apply_units_row(const std::vector<std::string>& cells, int line_no) {
+  // A units row: every input column holds text that is not a number (or "1").
+  bool any = false;
+  for (std::size_t q = 0; q < kInputQuantityCount; ++q) {
+    if (column_[q] < 0) continue;
+    const std::string& cell = cells[static_cast<std::size_t>(column_[q])];
+    if (cell == "1") continue;  // the unit of a ratio, or a number: decided by the others
+    double number = 0.0;
+    if (cell.empty() || host::read_csv_number(cell, separator_ != ',', number)) return false;
+    any = true;
+  }
+  if (!any) return false;
+  for (std::size_t q = 0; q < kInputQuantityCount; ++q) {
+    if (column_[q] < 0) continue;
+    std::string unit = lower(cells[static_cast<std::size_t>(column_[q])]);
+    if (unit.size() >= 2 && (unit.front() == '[' || unit.front() == '(')) {
+      unit = trim(std::string_view(unit).substr(1, unit.size() - 2));
+    }
+    const UnitName* found = nullptr;
+    std::string expected;
+    for (const UnitName& u : kUnits) {
+      if (index(u.quantity) != q) continue;
+      if (u.name == unit) found = &u;
+      expected += (expected.empty() ? "" : ", ") + std::string(u.name);
+    }
+    if (found == nullptr) {
+      throw tir::TirError(name_, line_no,
+                          "unit '" + cells[static_cast<std::size_t>(column_[q])] + "' of column '" +
+                              header_[static_cast<std::size_t>(column_[q])] +
+                              "' is not a unit of " + std::string(kSiNames[q]) + " (expected " +
+                              expected + ")");
+    }
+    spec_[q].to_si = found->to_si;
+    spec_[q].unit = found->unit;
+  }
+  return true;
+}
+
+std::optional<InputRow> InputTable::next() {
+  std::string line;
+  while (std::getline(in_, line)) {
+    ++line_;
+    const std::string_view t = host::text::trim_blanks(line);
+    if (t.empty() || t.front() == '#') continue;
+    if (!seen_row_) {
+      seen_row_ = true;
+      if (take_units_row(t, line_)) continue;
+    }
+    InputRow row;
+    parse_row(t, line_, row);
+    return row;
+  }
+  return std::nullopt;
+}
+
+bool InputTable::take_units_row(std::string_view line, int line_no) {
+  const std::vector<std::string> cells = split(host::text::trim_blanks(line));
+  if (cells.size() != cells_) wrong_cell_count(cells.size(), line_no);
+  return apply_units_row(cells, line_no);
+}
+
+void InputTable::wrong_cell_count(std::size_t found, int line_no) const {
+  throw tir::TirError(
+      name_, line_no,
+      "expected " + std::to_string(cells_) + " cells, found " + std::to_string(found));
+}
+
+bool InputTable::parse_row(std::string_view line, int line_no, InputRow& row) const {
+  const std::string_view t = host::text::trim_blanks(line);
+  if (t.empty() || t.front() == '#') return false;
+  row.value.fill(0.0);
+  row.line = line_no;
+  // The cell count is checked first, so the first bad number is only noted on the way.
+  std::size_t cell = 0;
+  std::size_t start = 0;
+  std::size_t bad_quantity = kInputQuantityCount;
+  std::string_view bad_text;
+  while (true) {
+    const std::size_t end = t.find(separator_, start);
+    if (cell < cells_ && quantity_of_cell_[cell] >= 0) {
+      const auto q = static_cast<std::size_t>(quantity_of_cell_[cell]);
+      const std::string_view text = host::text::trim_blanks(
+          t.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start));
+      // With ';' or tab separators a cell without a '.' may have a decimal comma.
+      double v = 0.0;
+      if (host::read_csv_number(text, separator_ != ',', v)) {
+        row.value[q] = v * spec_[q].to_si * sign_[q];
+      } else if (bad_quantity == kInputQuantityCount) {
+        bad_quantity = q;
+        bad_text = text;
+      }
+    }
+    ++cell;
+    if (end == std::string_view::npos) break;
+    start = end + 1;
+  }
+  if (cell != cells_) wrong_cell_count(cell, line_no);
+  if (bad_quantity != kInputQuantityCount) {
+    throw tir::TirError(name_, line_no,
+                        header_[static_cast<std::size_t>(column_[bad_quantity])] + ": '" +
+                            std::string(bad_text) + "' is not a finite number");
+  }
+  return true;
+}
+
+std::vector<std::string> InputTable::mapping() const {
+  std::vector<std::string> lines;
+  for (std::size_t q = 0; q < kInputQuantityCount; ++q) {
+    if (column_[q] < 0) continue;
+    const InputQuantity quantity = static_cast<InputQuantity>(q);
+    std::string line = "'" + header_[static_cast<std::size_t>(column_[q])] + "' → " +
+                       std::string(kSiNames[q]) + " (";
+    const bool si = std::string_view(spec_[q].unit) == recognise_input_column(kSiNames[q])->unit;
+    line += si ? "in " + std::string(spec_[q].unit)
+               : std::string(spec_[q].unit) + " → " +
+                     std::string(recognise_input_column(kSiNames[q])->unit);
+    if (iso_w_sign(options_.convention, quantity) < 0.0) {
+      line += ", sign changed from " + std::string(to_string(options_.convention)) + " to ISO-W";
+    }
+    lines.push_back(line + ")");
+  }
+  return lines;
+}
+
+std::string InputTable::column_name(InputQuantity q) const {
+  return has(q) ? header_[static_cast<std::size_t>(column_[index(q)])] : std::string();
+}
+
+std::string_view InputTable::column_unit(InputQuantity q) const {
+  return has(q) ? spec_[index(q)].unit : std::string_view();
+}
+
+}  // namespace tread::tyre

@@ -1,0 +1,378 @@
+#include "tyre/mf_csv.hpp"
+
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <istream>
+#include <memory>
+#include <optional>
+#include <ostream>
+#include <span>
+#include <stdexcept>
+#include <string_view>
+#include <type_traits>
+#include <vector>
+
+#include "io/line_chunks.hpp"
+#include "io/ordered_pipeline.hpp"
+#include "io/shortest_number.hpp"
+#include "mf/mf_evaluate.hpp"
+#include "mf/mf_evaluate_batch.hpp"
+#include "mf/mf_fixed.hpp"
+#include "tir/tir_file.hpp"
+
+namespace tread::tyre {
+
+namespace {
+
+/// An input in the evaluation's scalar: float/double by a cast, fixed point rounded to nearest
+/// Q31.32 — a value beyond its range (±2^31) taken as ±2^31, so that it is clamped to the
+/// model's envelope and reported out_of_range as in double (the reader refuses NaN and inf).
+template <typename T>
+T scalar_of(double v) {
+  if constexpr (std::is_same_v<T, fixed::Fixed64>) {
+    constexpr double kLimit = 2147483647.0;
+    return fixed::Fixed64::from_double(v > kLimit ? kLimit : (v < -kLimit ? -kLimit : v));
+  } else {
+    return static_cast<T>(v);
+  }
+}
+template <typename T>
+double as_double(const T& v) {
+  if constexpr (std::is_same_v<T, fixed::Fixed64>) {
+    return v.to_double();
+  } else {
+    return static_cast<double>(v);
+  }
+}
+
+// One limit of the model's range, checked on the SI ISO-W inputs.
+struct Limit {
+  InputQuantity quantity;
+  bool above;  // true: value > bound is outside
+  double bound;
+  const char* key;
+  const char* unit;
+};
+
+std::string short_number(double v) {
+  char buffer[40];
+  std::snprintf(buffer, sizeof buffer, "%.6g", v);
+  return buffer;
+}
+
+std::string describe(const Limit& l) {
+  return std::string(si_name(l.quantity)) + (l.above ? " > " : " < ") + l.key + " = " +
+         short_number(l.bound) + (*l.unit != '\0' ? std::string(" ") + l.unit : std::string());
+}
+
+// Why a value may lie outside: the likely mistake in the input file.
+std::string hint(const InputTable& table, const Limit& l, double value) {
+  const std::string column = table.column_name(l.quantity);
+  const std::string_view unit = table.column_unit(l.quantity);
+  if ((l.quantity == InputQuantity::alpha || l.quantity == InputQuantity::gamma) && unit == "rad") {
+    const std::string deg = l.quantity == InputQuantity::alpha ? "alpha_deg" : "gamma_deg";
+    return "; column '" + column + "' is read in radians: if it holds degrees, name it " + deg;
+  }
+  if (l.quantity == InputQuantity::kappa && unit == "1" && std::fabs(value) > 1.0) {
+    return "; column '" + column + "' is read as a ratio: if it holds percent, name it kappa_pct";
+  }
+  if (l.quantity == InputQuantity::fz && value < 0.0) {
+    return "; a negative load: is the file in SAE axes (z down)? Use --convention sae";
+  }
+  if (l.quantity == InputQuantity::pressure && unit == "Pa") {
+    return "; column '" + column + "' is read in Pa: name it P_kPa, P_bar or P_psi otherwise";
+  }
+  return {};
+}
+
+constexpr std::size_t kLimitCount = 10;
+
+// Rows outside one limit, in one chunk or so far.
+struct Tally {
+  std::size_t rows = 0;
+  int first_line = 0;
+};
+
+// Rows evaluated together by --batch: 32 blocks of 8 lanes, their rows, inputs and outputs
+// (≈ 60 KiB) staying in the core's cache between parsing, evaluating and formatting.
+constexpr std::size_t kBatchRows = 256;
+
+// A batch's rows as read, their inputs and their outputs.
+struct BatchScratch {
+  std::vector<InputRow> rows;
+  std::vector<mf::MfInput<float>> inputs;
+  std::vector<mf::MfOutput<float>> outputs;
+};
+
+// One chunk of the stream: its lines in, its formatted rows out. Reused from chunk to chunk.
+struct Chunk {
+  host::LineChunk lines;
+  std::unique_ptr<char[]> text;  ///< the formatted rows (uninitialised beyond `used`)
+  std::size_t capacity = 0;
+  std::size_t used = 0;
+  std::size_t rows = 0;
+  std::array<Tally, kLimitCount> outside{};
+  BatchScratch batch;  ///< --batch only (allocated on the chunk's first use)
+};
+
+// What every chunk of one evaluation shares (read only).
+struct EvalSetup {
+  const InputTable& table;
+  const std::string& in_name;
+  const std::array<Limit, kLimitCount>& limits;
+  mf::MfOptions options;
+  bool strict = false;
+  std::vector<std::size_t> columns;
+  std::size_t row_bytes = 0;  ///< the most a formatted row takes
+};
+
+// Counts `row`'s values outside the model's range in `outside` (with --strict: refuses the first).
+void check_range(const EvalSetup& setup, const InputRow& row, std::array<Tally, kLimitCount>& out) {
+  for (std::size_t i = 0; i < kLimitCount; ++i) {
+    const Limit& l = setup.limits[i];
+    const double v = row[l.quantity];
+    if (l.quantity == InputQuantity::pressure &&
+        (!(std::fabs(v) > 0.0) || !setup.table.has(InputQuantity::pressure))) {
+      continue;
+    }
+    if (!(l.above ? v > l.bound : v < l.bound)) continue;
+    if (setup.strict) {
+      throw tir::TirError(setup.in_name, row.line,
+                          std::string(si_name(l.quantity)) + " = " + short_number(v) +
+                              " outside the model's range (" + describe(l) + ", --strict)" +
+                              hint(setup.table, l, v));
+    }
+    if (out[i].rows++ == 0) out[i].first_line = row.line;
+  }
+}
+
+// Makes room in `chunk` for its formatted rows and clears what the last use left.
+void start_chunk(const EvalSetup& setup, Chunk& chunk) {
+  const std::size_t needed = chunk.lines.lines * setup.row_bytes;
+  if (chunk.capacity < needed) {
+    chunk.text = std::make_unique_for_overwrite<char[]>(needed);
+    chunk.capacity = needed;
+  }
+  chunk.used = 0;
+  chunk.rows = 0;
+  chunk.outside = {};
+}
+
+// A row's inputs in the evaluation's scalar.
+template <typename T>
+mf::MfInput<T> input_of(const InputRow& row) {
+  mf::MfInput<T> in;
+  in.fz_n = scalar_of<T>(row.value[0]);
+  in.kappa = scalar_of<T>(row.value[1]);
+  in.alpha_rad = scalar_of<T>(row.value[2]);
+  in.gamma_rad = scalar_of<T>(row.value[3]);
+  in.vx_mps = scalar_of<T>(row.value[4]);
+  in.phit_1pm = scalar_of<T>(row.value[5]);
+  in.p_pa = scalar_of<T>(row.value[6]);
+  return in;
+}
+
+// Writes the selected columns of `row` and its `result`, then the status, at `p`; returns the end.
+// Throws tir::TirError for a non-finite value under status ok.
+template <typename T>
+char* format_row(const EvalSetup& setup, const InputRow& row, const mf::MfOutput<T>& result,
+                 char* p) {
+  constexpr auto members = eval_output_members<T>();
+  const std::array<EvalColumn, kEvalColumnCount>& columns = eval_columns();
+  const bool ok = result.status == Status::ok;
+  // The text of each input written in this row: an output that repeats it to the bit (kappa_1
+  // and in_kappa, ...) copies it instead of formatting it again.
+  std::array<const char*, kEvalInputColumns> input_text{};
+  std::array<std::size_t, kEvalInputColumns> input_length{};
+  for (const std::size_t c : setup.columns) {
+    if (c < kEvalInputColumns) {
+      input_text[c] = p;
+      p = host::write_shortest(p, row.value[c]);
+      input_length[c] = static_cast<std::size_t>(p - input_text[c]);
+      *p++ = ',';
+      continue;
+    }
+    const double v = as_double(result.*(members[c - kEvalInputColumns]));
+    const int echoes = columns[c].echoes;
+    if (echoes >= 0 && input_text[static_cast<std::size_t>(echoes)] != nullptr &&
+        std::bit_cast<std::uint64_t>(v) ==
+            std::bit_cast<std::uint64_t>(row.value[static_cast<std::size_t>(echoes)])) {
+      const auto e = static_cast<std::size_t>(echoes);
+      std::memcpy(p, input_text[e], input_length[e]);
+      p += input_length[e];
+      *p++ = ',';
+      continue;
+    }
+    if (ok && !std::isfinite(v)) {
+      // Never a NaN or Inf under status ok. The core already writes a non-finite output as 0
+      // with Status::non_finite; this is the last check where numbers leave the program.
+      char number[host::kShortestNumberMaxChars];
+      char* end = host::write_shortest(number, v);
+      throw tir::TirError(setup.in_name, row.line,
+                          std::string(columns[c].name) + " = " + std::string(number, end) +
+                              " under status ok: the tyre's parameters give no finite "
+                              "result for this row (check the .tir for zero or missing "
+                              "stiffnesses and radii)");
+    }
+    p = host::write_shortest(p, v);
+    *p++ = ',';
+  }
+  const char* status = to_string(result.status);
+  const std::size_t n = std::strlen(status);
+  std::memcpy(p, status, n);
+  p += n;
+  *p++ = '\n';
+  return p;
+}
+
+// Parses, checks, evaluates (in T, row by row) and formats every row of `chunk`.
+template <typename T>
+void evaluate_chunk(const EvalSetup& setup, const mf::MfParameters<T>& params, Chunk& chunk) {
+  start_chunk(setup, chunk);
+  char* p = chunk.text.get();
+  InputRow row;
+  host::for_each_line(chunk.lines, [&](std::string_view line, int line_no) {
+    if (!setup.table.parse_row(line, line_no, row)) return;
+    check_range(setup, row, chunk.outside);
+    p = format_row(setup, row, evaluate(params, input_of<T>(row), setup.options), p);
+    ++chunk.rows;
+  });
+  chunk.used = static_cast<std::size_t>(p - chunk.text.get());
+}
+
+// The same in float on mf::evaluate_batch's lanes, kBatchRows rows at a time: the rows are parsed
+// and checked, evaluated together, then formatted. A row that cannot be read (or, with --strict,
+// is out of range) is an error only after the rows before it are evaluated and formatted, so
+// that an error among those (a non-finite output under status ok) comes first, as row by row.
+void evaluate_chunk_batch(const EvalSetup& setup, const mf::MfParameters<float>& params,
+                          Chunk& chunk) {
+  start_chunk(setup, chunk);
+  BatchScratch& batch = chunk.batch;
+  if (batch.rows.size() < kBatchRows) {
+    batch.rows.resize(kBatchRows);
+    batch.inputs.resize(kBatchRows);
+    batch.outputs.resize(kBatchRows);
+  }
+  char* p = chunk.text.get();
+  std::size_t pending = 0;
+  const auto flush = [&] {
+    mf::evaluate_batch(params, std::span<const mf::MfInput<float>>(batch.inputs).first(pending),
+                       setup.options, std::span<mf::MfOutput<float>>(batch.outputs).first(pending));
+    for (std::size_t i = 0; i < pending; ++i) {
+      p = format_row(setup, batch.rows[i], batch.outputs[i], p);
+      ++chunk.rows;
+    }
+    pending = 0;
+  };
+  host::for_each_line(chunk.lines, [&](std::string_view line, int line_no) {
+    InputRow& row = batch.rows[pending];
+    try {
+      if (!setup.table.parse_row(line, line_no, row)) return;
+      check_range(setup, row, chunk.outside);
+    } catch (...) {
+      flush();  // may throw an earlier row's error instead
+      throw;
+    }
+    batch.inputs[pending] = input_of<float>(row);
+    if (++pending == kBatchRows) flush();
+  });
+  flush();
+  chunk.used = static_cast<std::size_t>(p - chunk.text.get());
+}
+
+}  // namespace
+
+MfCsvReport evaluate_csv(const mf::MfParameters<double>& params, const mf::MfOptions& options,
+                         const MfCsvOptions& csv, std::istream& in, const std::string& in_name,
+                         std::ostream& out) {
+  const mf::MfParameters<float> params_f = mf::convert_parameters<float>(params);
+  const mf::MfParameters<fixed::Fixed64> params_q =
+      csv.use_fixed ? to_fixed_parameters(params) : mf::MfParameters<fixed::Fixed64>{};
+  InputTable table(in, in_name, csv.table);
+  MfCsvReport report;
+  report.ignored = table.ignored_columns();
+
+  using Q = InputQuantity;
+  const std::array<Limit, kLimitCount> limits = {{
+      {Q::fz, false, params.fzmin_n, "FZMIN", "N"},
+      {Q::fz, true, params.fzmax_n, "FZMAX", "N"},
+      {Q::kappa, false, params.kpumin, "KPUMIN", ""},
+      {Q::kappa, true, params.kpumax, "KPUMAX", ""},
+      {Q::alpha, false, params.alpmin_rad, "ALPMIN", "rad"},
+      {Q::alpha, true, params.alpmax_rad, "ALPMAX", "rad"},
+      {Q::gamma, false, params.cammin_rad, "CAMMIN", "rad"},
+      {Q::gamma, true, params.cammax_rad, "CAMMAX", "rad"},
+      {Q::pressure, false, params.presmin_pa, "PRESMIN", "Pa"},
+      {Q::pressure, true, params.presmax_pa, "PRESMAX", "Pa"},
+  }};
+
+  EvalSetup setup{table, in_name, limits, options, csv.strict, csv.columns, 0};
+  // The extras (radii, contact patch, relaxation) change no force or moment: skipped when no
+  // selected column shows them.
+  if (!needs_extras(csv.columns)) setup.options.extras = false;
+  constexpr std::size_t kStatusBytes = 32;  // "non-finite result" and its '\n'
+  setup.row_bytes = csv.columns.size() * (host::kShortestNumberMaxChars + 1) + kStatusBytes;
+
+  out << "# tread mf eval: ISO-W (TYDEX W) axes, SI units (inputs read in "
+      << to_string(csv.table.convention) << " axes and converted)\n";
+  for (const std::size_t c : csv.columns) out << eval_columns()[c].name << ',';
+  out << "status\n";
+
+  // The first line after the header that is not blank or a comment may be a units row; if it is
+  // not, it is the first data line and goes first into the stream of chunks.
+  std::string pending;
+  int next_line = table.line() + 1;
+  for (std::string line; std::getline(in, line);) {
+    const int line_no = next_line++;
+    const std::size_t first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos || line[first] == '#') continue;
+    if (!table.take_units_row(line, line_no)) {
+      pending = line + '\n';
+      next_line = line_no;
+    }
+    break;
+  }
+  host::LineChunker chunker(in, in_name, csv.chunk_lines, next_line, std::move(pending));
+
+  std::array<Tally, kLimitCount> outside{};
+  std::uint64_t bytes = 0;
+  const unsigned workers = csv.threads > 0 ? csv.threads : host::default_worker_count();
+  host::run_ordered_pipeline<Chunk>(
+      workers, 2 * std::size_t{workers} + 2,
+      [&](Chunk& chunk) { return chunker.next(chunk.lines); },
+      [&](Chunk& chunk) {
+        if (csv.use_fixed) {
+          evaluate_chunk(setup, params_q, chunk);
+        } else if (csv.use_batch) {
+          evaluate_chunk_batch(setup, params_f, chunk);
+        } else if (csv.use_float) {
+          evaluate_chunk(setup, params_f, chunk);
+        } else {
+          evaluate_chunk(setup, params, chunk);
+        }
+      },
+      [&](Chunk& chunk) {
+        out.write(chunk.text.get(), static_cast<std::streamsize>(chunk.used));
+        for (std::size_t i = 0; i < kLimitCount; ++i) {
+          if (chunk.outside[i].rows == 0) continue;
+          if (outside[i].rows == 0) outside[i].first_line = chunk.outside[i].first_line;
+          outside[i].rows += chunk.outside[i].rows;
+        }
+        report.rows += chunk.rows;
+        bytes += chunk.lines.text.size();
+        if (csv.progress) csv.progress(bytes, report.rows);
+      });
+  for (std::size_t i = 0; i < kLimitCount; ++i) {
+    if (outside[i].rows > 0) {
+      report.out_of_range.push_back({describe(limits[i]), outside[i].rows, outside[i].first_line});
+    }
+  }
+  report.mapping = table.mapping();  // after a units row, if any, was read
+  return report;
+}
+
+}  // namespace tread::tyre

@@ -1,0 +1,97 @@
+#include "tyre/mf_parameter_checks.hpp"
+
+#include <cmath>
+
+namespace tread::tyre {
+
+namespace {
+
+int line_of(const tir::TirFile& file, const char* key) {
+  const tir::Entry* e = file.find_any(key);
+  return e != nullptr ? e->line : 0;
+}
+
+bool is_zero(double v) noexcept {
+  return !(v < 0.0 || v > 0.0);
+}
+
+std::string value_text(double v) {
+  return tir::format_number(v);
+}
+
+[[noreturn]] void fail(const tir::TirFile& file, const char* key, const std::string& what) {
+  throw tir::TirError(file.origin(), line_of(file, key), what);
+}
+
+void positive(const tir::TirFile& file, const char* key, double v, const char* why) {
+  if (!(v > 0.0)) {
+    fail(file, key, std::string(key) + " = " + value_text(v) + " must be > 0 (" + why + ")");
+  }
+}
+
+void ordered(const tir::TirFile& file, const char* min_key, double min, const char* max_key,
+             double max) {
+  if (!(max > min)) {
+    // Name the line of a key the file has; a key it lacks took its default.
+    const bool has_max = file.find_any(max_key) != nullptr;
+    const bool has_min = file.find_any(min_key) != nullptr;
+    const auto describe = [](const char* key, double v, bool present) {
+      return std::string(key) + " = " + value_text(v) + (present ? "" : " (absent: default)");
+    };
+    fail(file, has_max || !has_min ? max_key : min_key,
+         describe(max_key, max, has_max) + " is not above " + describe(min_key, min, has_min) +
+             " (the range is empty)");
+  }
+}
+
+void warn(std::string& warning, const tir::TirFile& file, const char* key,
+          const std::string& what) {
+  if (!warning.empty()) warning += "\n";
+  warning += file.origin() + ":" + std::to_string(line_of(file, key)) + ": " + what;
+}
+
+}  // namespace
+
+void check_mf_parameters(const mf::MfParameters<double>& p, const tir::TirFile& file,
+                         std::string& warning) {
+  positive(file, "FNOMIN", p.fnomin_n, "the forces are scaled by it");
+  positive(file, "LFZO", p.lfzo, "it scales FNOMIN");
+  positive(file, "UNLOADED_RADIUS", p.unloaded_radius_m, "the moments and radii need it");
+  positive(file, "VERTICAL_STIFFNESS", p.vertical_stiffness_npm,
+           "the deflection and loaded radius divide by it");
+  positive(file, "LONGVL", p.longvl_mps, "speeds are taken relative to it");
+  if (is_zero(p.breff) && is_zero(p.dreff) && is_zero(p.freff)) {
+    fail(file, "BREFF",
+         "BREFF, DREFF and FREFF are all 0: the effective rolling radius law is undefined");
+  }
+  if (is_zero(p.pcx1 * p.lcx)) {
+    fail(file, "PCX1", "PCX1 · LCX = 0: the Fx stiffness factor Bx = Kx/(Cx·Dx) divides by it");
+  }
+  if (is_zero(p.pcy1 * p.lcy)) {
+    fail(file, "PCY1", "PCY1 · LCY = 0: the Fy stiffness factor By = Ky/(Cy·Dy) divides by it");
+  }
+  ordered(file, "FZMIN", p.fzmin_n, "FZMAX", p.fzmax_n);
+  ordered(file, "KPUMIN", p.kpumin, "KPUMAX", p.kpumax);
+  ordered(file, "ALPMIN", p.alpmin_rad, "ALPMAX", p.alpmax_rad);
+  ordered(file, "CAMMIN", p.cammin_rad, "CAMMAX", p.cammax_rad);
+  if (p.fit_type == mf::FitType::mf61 || p.fit_type == mf::FitType::mf62) {
+    positive(file, "NOMPRES", p.nompres_pa, "the pressure terms divide by it");
+    positive(file, "INFLPRES", p.inflpres_pa, "it is the pressure used without a pressure input");
+    ordered(file, "PRESMIN", p.presmin_pa, "PRESMAX", p.presmax_pa);
+    if (!(p.width_m > 0.0)) {
+      warn(warning, file, "WIDTH",
+           "WIDTH = " + value_text(p.width_m) + ": the contact width will be meaningless");
+    }
+  }
+  if (!(p.vxlow_mps > 0.0)) {
+    warn(warning, file, "VXLOW",
+         "VXLOW = " + value_text(p.vxlow_mps) + ": no low-speed smoothing of the slips");
+  }
+  if (p.fnomin_n < p.fzmin_n || p.fnomin_n > p.fzmax_n) {
+    warn(warning, file, "FNOMIN",
+         "FNOMIN = " + value_text(p.fnomin_n) + " lies outside FZMIN…FZMAX (" +
+             value_text(p.fzmin_n) + "…" + value_text(p.fzmax_n) + ")");
+  }
+}
+
+}  // namespace tread::tyre
