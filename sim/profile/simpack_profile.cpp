@@ -43,21 +43,28 @@ struct Setting {
   std::size_t line = 0;
 };
 
-}  // namespace
+struct RawPoint {
+  double y;
+  double z;
+  std::size_t line;
+};
 
-SimpackPoints read_simpack_points(std::istream& in, const std::string& source_name) {
+/// The file as read, before any setting is applied: "block.key" → value, and the points as written.
+struct SimpackBlocks {
   std::map<std::string, Setting> settings;  // "header.type", "spline.shift.y", ...
-  struct RawPoint {
-    double y;
-    double z;
-    std::size_t line;
-  };
   std::vector<RawPoint> points;
+  std::size_t last_line = 0;
+};
+
+/// Reads the header, spline and point blocks; fails on a line outside them, a point that is not
+/// "y z [weight]", no header or fewer than two points.
+SimpackBlocks read_blocks(std::istream& in, const std::string& source_name) {
+  SimpackBlocks blocks;
   std::string block;  // "", "header", "spline", "point"
   bool saw_header = false;
   bool saw_points = false;
   std::string line;
-  std::size_t line_no = 0;
+  std::size_t& line_no = blocks.last_line;
   while (std::getline(in, line)) {
     ++line_no;
     host::text::strip_utf8_bom(line, line_no);
@@ -98,7 +105,7 @@ SimpackPoints read_simpack_points(std::istream& in, const std::string& source_na
         host::text::fail_at(source_name, line_no,
                             "expected a point 'y z [weight]', got '" + std::string(text) + "'");
       }
-      points.push_back({y, z, line_no});
+      blocks.points.push_back({y, z, line_no});
       continue;
     }
     const std::size_t eq = text.find('=');
@@ -109,19 +116,41 @@ SimpackPoints read_simpack_points(std::istream& in, const std::string& source_na
     if (value.size() >= 2 && value.front() == '\'' && value.back() == '\'') {
       value = value.substr(1, value.size() - 2);
     }
-    settings[block + "." + std::string(host::text::trim_blanks(text.substr(0, eq)))] = {value,
-                                                                                        line_no};
+    blocks.settings[block + "." + std::string(host::text::trim_blanks(text.substr(0, eq)))] = {
+        value, line_no};
   }
   if (!saw_header) {
     host::text::fail_at(source_name, line_no, "no header.begin … header.end block");
   }
-  if (!saw_points || points.size() < 2) {
+  if (!saw_points || blocks.points.size() < 2) {
     host::text::fail_at(source_name, line_no, "no point block with at least 2 points");
   }
+  return blocks;
+}
 
+/// What the settings of the blocks ask for, in millimetres and radians, with SIMPACK's defaults
+/// where a key is absent.
+struct SimpackSettings {
+  SimpackProfileType type = SimpackProfileType::kWheel;
+  std::string comment;
+  double to_mm = 1.0;
+  double shift_y_mm = 0.0;
+  double shift_z_mm = 0.0;
+  double rotate_rad = 0.0;
+  double y_min_mm = 1.0, y_max_mm = 0.0;  // a range only where min < max
+  double z_min_mm = 1.0, z_max_mm = 0.0;
+  bool mirror_y = false;
+  bool mirror_z = false;
+};
+
+SimpackSettings read_settings(const SimpackBlocks& blocks, const std::string& source_name) {
+  const auto line_of = [&](const std::string& key) -> std::size_t {
+    const auto it = blocks.settings.find(key);
+    return it == blocks.settings.end() ? 0 : it->second.line;
+  };
   const auto number = [&](const std::string& key, double fallback) {
-    const auto it = settings.find(key);
-    if (it == settings.end()) {
+    const auto it = blocks.settings.find(key);
+    if (it == blocks.settings.end()) {
       return fallback;
     }
     double v = 0.0;
@@ -132,69 +161,87 @@ SimpackPoints read_simpack_points(std::istream& in, const std::string& source_na
     return v;
   };
 
-  SimpackPoints result;
+  SimpackSettings s;
   const double type = number("header.type", -1.0);
   if (type < -0.5) {
-    host::text::fail_at(source_name, line_no, "header.type is missing (0 = rail, 1 = wheel)");
+    host::text::fail_at(source_name, blocks.last_line,
+                        "header.type is missing (0 = rail, 1 = wheel)");
   }
   if (std::fabs(type - 1.0) < 0.5) {
-    result.type = SimpackProfileType::kWheel;
+    s.type = SimpackProfileType::kWheel;
   } else if (std::fabs(type) < 0.5) {
-    result.type = SimpackProfileType::kRail;
+    s.type = SimpackProfileType::kRail;
   } else {
-    host::text::fail_at(source_name, settings["header.type"].line,
+    host::text::fail_at(source_name, line_of("header.type"),
                         "header.type must be 0 (rail) or 1 (wheel)");
   }
-  if (const auto it = settings.find("spline.comment"); it != settings.end()) {
-    result.comment = it->second.value;
+  if (const auto it = blocks.settings.find("spline.comment"); it != blocks.settings.end()) {
+    s.comment = it->second.value;
   }
   const double len_f = number("spline.units.len.f", 1000.0);
   const double ang_f = number("spline.units.ang.f", 1.0);
   if (!(len_f > 0.0) || !(ang_f > 0.0)) {
-    host::text::fail_at(source_name, settings["spline.units.len.f"].line,
+    host::text::fail_at(source_name, line_of("spline.units.len.f"),
                         "unit factors must be positive");
   }
-  const double to_mm = 1000.0 / len_f;
-  const double shift_y = number("spline.shift.y", 0.0) * to_mm;
-  const double shift_z = number("spline.shift.z", 0.0) * to_mm;
-  const double rotate_rad = number("spline.rotate", 0.0) / ang_f;
-  const double y_min = number("spline.bound.y.min", 1.0) * to_mm;
-  const double y_max = number("spline.bound.y.max", 0.0) * to_mm;
-  const double z_min = number("spline.bound.z.min", 1.0) * to_mm;
-  const double z_max = number("spline.bound.z.max", 0.0) * to_mm;
-  const bool mirror_y = number("spline.mirror.y", 0.0) > 0.5;
-  const bool mirror_z = number("spline.mirror.z", 0.0) > 0.5;
-  const double c = std::cos(rotate_rad);
-  const double s = std::sin(rotate_rad);
+  s.to_mm = 1000.0 / len_f;
+  s.shift_y_mm = number("spline.shift.y", 0.0) * s.to_mm;
+  s.shift_z_mm = number("spline.shift.z", 0.0) * s.to_mm;
+  s.rotate_rad = number("spline.rotate", 0.0) / ang_f;
+  s.y_min_mm = number("spline.bound.y.min", 1.0) * s.to_mm;
+  s.y_max_mm = number("spline.bound.y.max", 0.0) * s.to_mm;
+  s.z_min_mm = number("spline.bound.z.min", 1.0) * s.to_mm;
+  s.z_max_mm = number("spline.bound.z.max", 0.0) * s.to_mm;
+  s.mirror_y = number("spline.mirror.y", 0.0) > 0.5;
+  s.mirror_z = number("spline.mirror.z", 0.0) > 0.5;
+  return s;
+}
 
+/// The points as the settings place them: scaled, shifted, rotated, cut to the bounds, mirrored;
+/// a rail's z turned from SIMPACK's downward axis to height.
+std::vector<RawPoint> placed_points(const std::vector<RawPoint>& points, const SimpackSettings& s) {
+  const double c = std::cos(s.rotate_rad);
+  const double sn = std::sin(s.rotate_rad);
   std::vector<RawPoint> kept;
   for (const RawPoint& p : points) {
-    double y = p.y * to_mm + shift_y;
-    double z = p.z * to_mm + shift_z;
-    const double yr = c * y - s * z;
-    const double zr = s * y + c * z;
+    double y = p.y * s.to_mm + s.shift_y_mm;
+    double z = p.z * s.to_mm + s.shift_z_mm;
+    const double yr = c * y - sn * z;
+    const double zr = sn * y + c * z;
     y = yr;
     z = zr;
-    if (y_min < y_max && (y < y_min || y > y_max)) {
+    if (s.y_min_mm < s.y_max_mm && (y < s.y_min_mm || y > s.y_max_mm)) {
       continue;
     }
-    if (z_min < z_max && (z < z_min || z > z_max)) {
+    if (s.z_min_mm < s.z_max_mm && (z < s.z_min_mm || z > s.z_max_mm)) {
       continue;
     }
-    if (mirror_y) {
+    if (s.mirror_y) {
       y = -y;
     }
-    if (mirror_z) {
+    if (s.mirror_z) {
       z = -z;
     }
-    if (result.type == SimpackProfileType::kRail) {
+    if (s.type == SimpackProfileType::kRail) {
       z = -z;  // SIMPACK z down -> height up
     }
     kept.push_back({y, z, p.line});
   }
+  return kept;
+}
+
+}  // namespace
+
+SimpackPoints read_simpack_points(std::istream& in, const std::string& source_name) {
+  const SimpackBlocks blocks = read_blocks(in, source_name);
+  const SimpackSettings settings = read_settings(blocks, source_name);
+  const std::vector<RawPoint> kept = placed_points(blocks.points, settings);
   if (kept.size() < 2) {
-    host::text::fail_at(source_name, line_no, "fewer than 2 points left after the bounds");
+    host::text::fail_at(source_name, blocks.last_line, "fewer than 2 points left after the bounds");
   }
+  SimpackPoints result;
+  result.type = settings.type;
+  result.comment = settings.comment;
   result.points.name = source_name;
   for (const RawPoint& p : kept) {
     result.points.y_mm.push_back(p.y);
