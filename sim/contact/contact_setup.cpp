@@ -100,39 +100,7 @@ ContactSetup parse_wheelset_profile(const std::string& spec) {
 }
 
 profile::WheelParameters parse_wheel_spec(const std::string& spec) {
-  profile::WheelParameters p;
-  const auto colon = spec.find(':');
-  p.family = profile::parse_wheel_family(spec.substr(0, colon));
-  if (colon != std::string::npos) {
-    std::stringstream rest(spec.substr(colon + 1));
-    std::string item;
-    while (std::getline(rest, item, ',')) {
-      const auto eq = item.find('=');
-      if (eq == std::string::npos) {
-        throw std::invalid_argument("--wheel " + spec + ": expected key=value, got '" + item + "'");
-      }
-      const std::string key = item.substr(0, eq);
-      const std::string value = item.substr(eq + 1);
-      try {
-        if (key == "h") {
-          p.flange_height_mm = host::text::finite_number(value);
-        } else if (key == "e") {
-          p.flange_thickness_mm = host::text::finite_number(value);
-        } else if (key == "slope") {
-          p.outer_slope = profile::parse_outer_slope(value);
-        } else if (key == "width") {
-          p.width_mm = host::text::finite_number(value);
-        } else if (key == "chamfer") {
-          p.chamfer = value != "0" && value != "no" && value != "false";
-        } else {
-          throw std::invalid_argument("unknown key '" + key + "' (h, e, slope, width, chamfer)");
-        }
-      } catch (const std::invalid_argument& e) {
-        throw std::invalid_argument("--wheel " + spec + ": " + key + ": " + e.what());
-      }
-    }
-  }
-  return p;
+  return profile::parse_wheel_spec(spec, "--wheel");
 }
 
 namespace {

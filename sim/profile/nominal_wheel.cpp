@@ -28,10 +28,6 @@ double rms_difference(const WheelProfile& nominal, const SampledProfile& measure
   return n > 0.0 ? std::sqrt(ss / n) : 0.0;
 }
 
-bool truthy(const std::string& value) {
-  return value != "0" && value != "no" && value != "false";
-}
-
 }  // namespace
 
 NominalChoice choose_nominal(const std::string& spec, const SampledProfile& measured,
@@ -41,39 +37,7 @@ NominalChoice choose_nominal(const std::string& spec, const SampledProfile& meas
   std::set<std::string> given;
   bool family_given = spec != "auto";  // empty: S1002
   if (!spec.empty() && spec != "auto") {
-    const auto colon = spec.find(':');
-    p.family = parse_wheel_family(spec.substr(0, colon));
-    if (colon != std::string::npos) {
-      std::stringstream rest(spec.substr(colon + 1));
-      std::string item;
-      while (std::getline(rest, item, ',')) {
-        const auto eq = item.find('=');
-        if (eq == std::string::npos) {
-          throw std::invalid_argument("--nominal " + spec + ": expected key=value, got '" + item +
-                                      "'");
-        }
-        const std::string key = item.substr(0, eq);
-        const std::string value = item.substr(eq + 1);
-        try {
-          if (key == "h") {
-            p.flange_height_mm = host::text::finite_number(value);
-          } else if (key == "e") {
-            p.flange_thickness_mm = host::text::finite_number(value);
-          } else if (key == "slope") {
-            p.outer_slope = parse_outer_slope(value);
-          } else if (key == "width") {
-            p.width_mm = host::text::finite_number(value);
-          } else if (key == "chamfer") {
-            p.chamfer = truthy(value);
-          } else {
-            throw std::invalid_argument("unknown key (h, e, slope, width, chamfer)");
-          }
-        } catch (const std::logic_error& e) {
-          throw std::invalid_argument("--nominal " + spec + ": " + key + ": " + e.what());
-        }
-        given.insert(key);
-      }
-    }
+    p = parse_wheel_spec(spec, "--nominal", &given);
   }
   std::ostringstream how;
   const FlangeMeasures& f = measures.flange;

@@ -136,6 +136,47 @@ OuterSlope parse_outer_slope(const std::string& text) {
   return OuterSlope{gradient, false};
 }
 
+WheelParameters parse_wheel_spec(const std::string& spec, const std::string& option,
+                                 std::set<std::string>* given) {
+  WheelParameters p;
+  const auto colon = spec.find(':');
+  p.family = parse_wheel_family(spec.substr(0, colon));
+  if (colon == std::string::npos) {
+    return p;
+  }
+  std::stringstream rest(spec.substr(colon + 1));
+  std::string item;
+  while (std::getline(rest, item, ',')) {
+    const auto eq = item.find('=');
+    if (eq == std::string::npos) {
+      throw std::invalid_argument(option + " " + spec + ": expected key=value, got '" + item + "'");
+    }
+    const std::string key = item.substr(0, eq);
+    const std::string value = item.substr(eq + 1);
+    try {
+      if (key == "h") {
+        p.flange_height_mm = host::text::finite_number(value);
+      } else if (key == "e") {
+        p.flange_thickness_mm = host::text::finite_number(value);
+      } else if (key == "slope") {
+        p.outer_slope = parse_outer_slope(value);
+      } else if (key == "width") {
+        p.width_mm = host::text::finite_number(value);
+      } else if (key == "chamfer") {
+        p.chamfer = value != "0" && value != "no" && value != "false";
+      } else {
+        throw std::invalid_argument("unknown key '" + key + "' (h, e, slope, width, chamfer)");
+      }
+    } catch (const std::logic_error& e) {
+      throw std::invalid_argument(option + " " + spec + ": " + key + ": " + e.what());
+    }
+    if (given != nullptr) {
+      given->insert(key);
+    }
+  }
+  return p;
+}
+
 void WheelProfile::add(Piece piece, const std::string& junction_name, bool tangent) {
   if (!pieces_.empty()) {
     piece.y0 = pieces_.back().y1;  // contiguous by construction
@@ -206,7 +247,9 @@ double polynomial(const std::array<double, N>& c, double s) {
 
 }  // namespace
 
-WheelProfile::WheelProfile(const WheelParameters& parameters) : parameters_(parameters) {
+namespace {
+
+void check_parameters(const WheelParameters& parameters) {
   const double h = parameters.flange_height_mm;
   const double e = parameters.flange_thickness_mm;
   if (!(near(h, 28.0) || near(h, 30.0) || near(h, 32.0))) {
@@ -221,171 +264,237 @@ WheelProfile::WheelProfile(const WheelParameters& parameters) : parameters_(para
     throw std::invalid_argument("wheel width must be 135 or 140 mm, got " +
                                 std::to_string(parameters.width_mm));
   }
-  const double s = std::max(0.0, 32.5 - e);
-  const double dh = h - 28.0;
+}
 
-  // ---- Flange (Annex A) -------------------------------------------------------------------
-  const Point tip_back{-55.0, 16.0 + dh};      // RIm
-  const Point tip_face{-55.0 - s, 16.0 + dh};  // REm
-  // R20.5 flange back: centre (-49.5, AH + dh), internally tangent to the R12 tip arc.
-  const double ah =
-      16.0 -
-      std::sqrt((kBackRadius_mm - kTipRadius_mm) * (kBackRadius_mm - kTipRadius_mm) - 5.5 * 5.5);
-  const Point back_centre{-49.5, ah + dh};  // Hm
-  const double k_back = kBackRadius_mm / (kBackRadius_mm - kTipRadius_mm);
-  const Point h1{back_centre.y + k_back * (tip_back.y - back_centre.y),
-                 back_centre.z + k_back * (tip_back.z - back_centre.z)};
-  const Point s_point{-55.0 - 0.5 * s,
-                      tip_back.z + std::sqrt(kTipRadius_mm * kTipRadius_mm - 0.25 * s * s)};
-  // R13 root and the 70° flank tangent to it.
-  const Point root_centre{-uic_s1002::kCD - s, uic_s1002::kAD};  // Dm
-  const double sin_f = std::sin(kFlankAngle_rad);
-  const double cos_f = std::cos(kFlankAngle_rad);
-  const Point e1{root_centre.y - kRootRadius_mm * sin_f, root_centre.z - kRootRadius_mm * cos_f};
-  // Flange outer arc: radius 20 + 0.75 dh, tangent to the flank (centre on the parallel at that
-  // distance, on the flange side) and internally tangent to the face-side R12 arc.
-  const double rf = 20.0 + 0.75 * dh;
-  const Point dir{-cos_f, sin_f};   // along the flank, upward
-  const Point nrm{-sin_f, -cos_f};  // from the flank toward the arc centre
-  const double by = e1.y + rf * nrm.y - tip_face.y;
-  const double bz = e1.z + rf * nrm.z - tip_face.z;
-  const double qb = 2.0 * (by * dir.y + bz * dir.z);
-  const double qc = by * by + bz * bz - (rf - kTipRadius_mm) * (rf - kTipRadius_mm);
-  const double t = 0.5 * (-qb - std::sqrt(qb * qb - 4.0 * qc));
-  const Point fm{tip_face.y + by + t * dir.y, tip_face.z + bz + t * dir.z};
-  const Point f1{fm.y - rf * nrm.y, fm.z - rf * nrm.z};
-  const double k_g = rf / (rf - kTipRadius_mm);
-  const Point g1{fm.y + k_g * (tip_face.y - fm.y), fm.z + k_g * (tip_face.z - fm.z)};
-  const double d1_y = -35.0 - s;
-  const auto mark = [this](const char* name, Point pt) { points_.push_back({name, pt.y, pt.z}); };
-  mark("Hm", back_centre);
-  mark("H1", h1);
-  mark("RIm", tip_back);
-  mark("S", s_point);
-  mark("REm", tip_face);
-  mark("G1", g1);
-  mark("Fm", fm);
-  mark("F1", f1);
-  mark("E1", e1);
-  mark("Dm", root_centre);
+}  // namespace
 
-  add(arc_piece("flange back R20.5", back_centre, kBackRadius_mm, 1.0, kBackY_mm, h1.y), "", true);
-  add(arc_piece("flange tip R12 (back)", tip_back, kTipRadius_mm, 1.0, 0.0, s_point.y), "H1", true);
-  if (s > 0.0) {
-    add(arc_piece("flange tip R12 (face)", tip_face, kTipRadius_mm, 1.0, 0.0, g1.y), "S", false);
-  } else {
-    pieces_.back().y1 = g1.y;  // the two R12 arcs coincide
-  }
-  add(arc_piece("flange outer arc", fm, rf, 1.0, 0.0, f1.y), "G1", true);
-  add(line_piece("flank 70°", f1, -std::tan(kFlankAngle_rad), e1.y), "F1", true);
-  pieces_.back().y0 = f1.y;
+/// The construction of one profile, part by part as the standard draws it: the flange (the same
+/// for the three families but for h and e), each family's root, throat and tread, then the outer
+/// slope and the chamfer. Each part appends its pieces and named points to the profile and hands
+/// the next part the point where it ends.
+class WheelProfileBuilder {
+ public:
+  explicit WheelProfileBuilder(WheelProfile& profile)
+      : w_(profile),
+        s_(std::max(0.0, 32.5 - profile.parameters_.flange_thickness_mm)),
+        dh_(profile.parameters_.flange_height_mm - 28.0),
+        root_centre_{-uic_s1002::kCD - s_, uic_s1002::kAD},  // Dm
+        d1_y_(-35.0 - s_) {}
 
-  const double p = outer_slope_gradient(parameters.outer_slope);
-  Point b1{0.0, 0.0};
-  switch (parameters.family) {
-    case WheelFamily::kS1002: {
-      add(arc_piece("flange root R13", root_centre, kRootRadius_mm, -1.0, 0.0, d1_y), "E1", true);
-      add(polynomial_piece("S1002 throat (UIC C)", uic_s1002::kC, s, 0.0, uic_s1002::kYBC - s),
-          "D1", true);
-      const bool uic_slope = parameters.outer_slope.uic_1in15;
-      const double b1_y = uic_slope ? uic_s1002::kYAB : 32.158;
-      if (s > 0.0) {
-        add(polynomial_piece("S1002 tread (UIC B, shifted)", uic_s1002::kB, s, 0.0, -0.5 - s), "C1",
-            true);
-        const double t1_z = polynomial(uic_s1002::kB, -0.5);
-        add(line_piece("T1-D0 line", {-0.5 - s, t1_z}, -t1_z / (0.5 + s), 0.0), "T1", false);
-        add(polynomial_piece("S1002 tread (UIC B)", uic_s1002::kB, 0.0, 0.0, b1_y), "D0", false);
-      } else {
-        add(polynomial_piece("S1002 tread (UIC B)", uic_s1002::kB, 0.0, 0.0, b1_y), "C1", true);
-      }
-      b1 = uic_slope ? Point{b1_y, uic_s1002::kAA - uic_s1002::kBA * b1_y} : Point{32.158, -0.780};
-      break;
+  void build() {
+    flange();
+    Point b1{0.0, 0.0};
+    switch (w_.parameters_.family) {
+      case WheelFamily::kS1002:
+        b1 = s1002_throat_and_tread();
+        break;
+      case WheelFamily::k1in40:
+        b1 = throat_and_tread_1in40();
+        break;
+      case WheelFamily::kEps:
+        b1 = eps_throat_and_tread();
+        break;
     }
-    case WheelFamily::k1in40: {
-      // R36 tangent to the R13 root (internally) and to the 1:40 line z = -(y + s)/40.
-      const double q = std::sqrt(1.0 + 1.0 / 1600.0);
-      const double rj = 36.0;
-      const double dd = rj - kRootRadius_mm;
-      // In the e = 32.5 frame: (u - Dm.y)² + (-u/40 + rj q - Dm.z)² = dd².
-      const double dmy = -uic_s1002::kCD;
-      const double c0 = rj * q - uic_s1002::kAD;
-      const double qa = 1.0 + 1.0 / 1600.0;
-      const double qbb = -2.0 * dmy - 2.0 * c0 / 40.0;
-      const double qcc = dmy * dmy + c0 * c0 - dd * dd;
-      const double u = (-qbb + std::sqrt(qbb * qbb - 4.0 * qa * qcc)) / (2.0 * qa);
-      const Point jm{u - s, -u / 40.0 + rj * q};
-      const Point d1a{jm.y + rj / dd * (root_centre.y - jm.y),
-                      jm.z + rj / dd * (root_centre.z - jm.z)};
-      const Point c11a{jm.y - rj * (1.0 / 40.0) / q, jm.z - rj / q};
-      mark("Jm", jm);
-      mark("D1a", d1a);
-      mark("C11a", c11a);
-      add(arc_piece("flange root R13", root_centre, kRootRadius_mm, -1.0, 0.0, d1_y), "E1", true);
-      add(arc_piece("1/40 root R13", root_centre, kRootRadius_mm, -1.0, 0.0, d1a.y), "D1", true);
-      add(arc_piece("1/40 transition R36", jm, rj, -1.0, 0.0, c11a.y), "D1a", true);
-      if (s > 0.0) {
-        add(line_piece("1/40 inner tread", c11a, -1.0 / 40.0, -0.5 - s), "C11a", true);
-        const double t1_z = c11a.z - (-0.5 - s - c11a.y) / 40.0;
-        add(line_piece("T1-D0 line", {-0.5 - s, t1_z}, -t1_z / (0.5 + s), 0.0), "T1", false);
-        add(line_piece("1/40 outer tread", {0.0, 0.0}, -1.0 / 40.0, 35.0), "D0", false);
-      } else {
-        add(line_piece("1/40 tread", c11a, -1.0 / 40.0, 35.0), "C11a", true);
-      }
-      b1 = {35.0, -35.0 / 40.0};
-      break;
+    outer_slope_and_chamfer(b1);
+  }
+
+ private:
+  void mark(const char* name, Point pt) { w_.points_.push_back({name, pt.y, pt.z}); }
+  void add(WheelProfile::Piece piece, const std::string& junction_name, bool tangent) {
+    w_.add(std::move(piece), junction_name, tangent);
+  }
+
+  /// Flange (Annex A): back R20.5, tip R12 (two arcs apart by s = 32.5 - e), outer arc, 70° flank
+  /// down to E1 on the R13 root.
+  void flange() {
+    const double s = s_;
+    const double dh = dh_;
+    const Point& root_centre = root_centre_;
+    const Point tip_back{-55.0, 16.0 + dh};      // RIm
+    const Point tip_face{-55.0 - s, 16.0 + dh};  // REm
+    // R20.5 flange back: centre (-49.5, AH + dh), internally tangent to the R12 tip arc.
+    const double ah =
+        16.0 -
+        std::sqrt((kBackRadius_mm - kTipRadius_mm) * (kBackRadius_mm - kTipRadius_mm) - 5.5 * 5.5);
+    const Point back_centre{-49.5, ah + dh};  // Hm
+    const double k_back = kBackRadius_mm / (kBackRadius_mm - kTipRadius_mm);
+    const Point h1{back_centre.y + k_back * (tip_back.y - back_centre.y),
+                   back_centre.z + k_back * (tip_back.z - back_centre.z)};
+    const Point s_point{-55.0 - 0.5 * s,
+                        tip_back.z + std::sqrt(kTipRadius_mm * kTipRadius_mm - 0.25 * s * s)};
+    // R13 root and the 70° flank tangent to it.
+    const double sin_f = std::sin(kFlankAngle_rad);
+    const double cos_f = std::cos(kFlankAngle_rad);
+    const Point e1{root_centre.y - kRootRadius_mm * sin_f, root_centre.z - kRootRadius_mm * cos_f};
+    // Flange outer arc: radius 20 + 0.75 dh, tangent to the flank (centre on the parallel at that
+    // distance, on the flange side) and internally tangent to the face-side R12 arc.
+    const double rf = 20.0 + 0.75 * dh;
+    const Point dir{-cos_f, sin_f};   // along the flank, upward
+    const Point nrm{-sin_f, -cos_f};  // from the flank toward the arc centre
+    const double by = e1.y + rf * nrm.y - tip_face.y;
+    const double bz = e1.z + rf * nrm.z - tip_face.z;
+    const double qb = 2.0 * (by * dir.y + bz * dir.z);
+    const double qc = by * by + bz * bz - (rf - kTipRadius_mm) * (rf - kTipRadius_mm);
+    const double t = 0.5 * (-qb - std::sqrt(qb * qb - 4.0 * qc));
+    const Point fm{tip_face.y + by + t * dir.y, tip_face.z + bz + t * dir.z};
+    const Point f1{fm.y - rf * nrm.y, fm.z - rf * nrm.z};
+    const double k_g = rf / (rf - kTipRadius_mm);
+    const Point g1{fm.y + k_g * (tip_face.y - fm.y), fm.z + k_g * (tip_face.z - fm.z)};
+    mark("Hm", back_centre);
+    mark("H1", h1);
+    mark("RIm", tip_back);
+    mark("S", s_point);
+    mark("REm", tip_face);
+    mark("G1", g1);
+    mark("Fm", fm);
+    mark("F1", f1);
+    mark("E1", e1);
+    mark("Dm", root_centre);
+
+    add(arc_piece("flange back R20.5", back_centre, kBackRadius_mm, 1.0, kBackY_mm, h1.y), "",
+        true);
+    add(arc_piece("flange tip R12 (back)", tip_back, kTipRadius_mm, 1.0, 0.0, s_point.y), "H1",
+        true);
+    if (s > 0.0) {
+      add(arc_piece("flange tip R12 (face)", tip_face, kTipRadius_mm, 1.0, 0.0, g1.y), "S", false);
+    } else {
+      w_.pieces_.back().y1 = g1.y;  // the two R12 arcs coincide
     }
-    case WheelFamily::kEps: {
-      const double k = (e - en13715::kEpsTableFirstE_mm) / en13715::kEpsTableStep_mm;
-      const double k_round = std::round(k);
-      if (std::fabs(k - k_round) > 1e-9) {
-        throw std::invalid_argument(
-            "EPS is defined by Table D.1 only for e = 28.5, 29.0, … 32.5 mm, got " +
-            std::to_string(e));
-      }
-      const auto column = static_cast<std::size_t>(k_round);
-      const double z_flat = -0.5474;  // C12 – B1b (EN 15302 wheel C: -0.5474)
-      const Point j330{19.0, z_flat + 330.0};
-      const Point j100{-6.5, j330.z - std::sqrt(230.0 * 230.0 - 25.5 * 25.5)};
-      const Point c11b{j330.y + 330.0 / 230.0 * (j100.y - j330.y),
-                       j330.z + 330.0 / 230.0 * (j100.z - j330.z)};
-      mark("Jm", j100);
-      mark("Jm1", j330);
-      mark("C11b", c11b);
-      const std::size_t n = en13715::kEpsTableCount[column];
-      std::vector<double> xs(n);
-      std::vector<double> zs(n);
-      for (std::size_t i = 0; i < n; ++i) {
-        xs[i] = d1_y + 0.5 * static_cast<double>(i);
-        zs[i] = en13715::kEpsTableZ_mm[column][i];
-      }
-      xs.back() = -26.0;
-      // Through every tabulated point. The table's end values differ from the adjoining arcs by
-      // its rounding (D1: root arc 6.86750 vs 6.867; C1b: R100 2.79023 vs 2.790), < 1 µm jumps.
-      cubics_.emplace_back(xs, zs, arc_tan(root_centre, kRootRadius_mm, -1.0, d1_y));
-      add(arc_piece("flange root R13", root_centre, kRootRadius_mm, -1.0, 0.0, d1_y), "E1", true);
-      Piece cubic;
-      cubic.name = "EPS transition (Table D.1, monotone cubic)";
-      cubic.kind = Kind::kCubic;
-      cubic.y1 = -26.0;
-      cubic.cubic = cubics_.size() - 1;
-      add(cubic, "D1", true);
-      add(arc_piece("EPS R100", j100, 100.0, -1.0, 0.0, c11b.y), "C1b", false);
-      add(arc_piece("EPS R330", j330, 330.0, -1.0, 0.0, 19.0), "C11b", true);
-      add(line_piece("EPS flat", {19.0, z_flat}, 0.0, 29.0), "C12", true);
-      b1 = {29.0, z_flat};
-      break;
+    add(arc_piece("flange outer arc", fm, rf, 1.0, 0.0, f1.y), "G1", true);
+    add(line_piece("flank 70°", f1, -std::tan(kFlankAngle_rad), e1.y), "F1", true);
+    w_.pieces_.back().y0 = f1.y;
+  }
+
+  /// S1002 (Annex B): R13 root, the UIC throat and tread polynomials; a thinner flange (s > 0)
+  /// shifts the throat and joins the shifted tread to the unshifted one by a line T1–D0.
+  /// @return B1, where the outer slope starts.
+  Point s1002_throat_and_tread() {
+    const double s = s_;
+    add(arc_piece("flange root R13", root_centre_, kRootRadius_mm, -1.0, 0.0, d1_y_), "E1", true);
+    add(polynomial_piece("S1002 throat (UIC C)", uic_s1002::kC, s, 0.0, uic_s1002::kYBC - s), "D1",
+        true);
+    const bool uic_slope = w_.parameters_.outer_slope.uic_1in15;
+    const double b1_y = uic_slope ? uic_s1002::kYAB : 32.158;
+    if (s > 0.0) {
+      add(polynomial_piece("S1002 tread (UIC B, shifted)", uic_s1002::kB, s, 0.0, -0.5 - s), "C1",
+          true);
+      const double t1_z = polynomial(uic_s1002::kB, -0.5);
+      add(line_piece("T1-D0 line", {-0.5 - s, t1_z}, -t1_z / (0.5 + s), 0.0), "T1", false);
+      add(polynomial_piece("S1002 tread (UIC B)", uic_s1002::kB, 0.0, 0.0, b1_y), "D0", false);
+    } else {
+      add(polynomial_piece("S1002 tread (UIC B)", uic_s1002::kB, 0.0, 0.0, b1_y), "C1", true);
+    }
+    return uic_slope ? Point{b1_y, uic_s1002::kAA - uic_s1002::kBA * b1_y} : Point{32.158, -0.780};
+  }
+
+  /// 1/40 (Annex C): R13 root, an R36 transition tangent to it and to the 1:40 tread line.
+  /// @return B1, where the outer slope starts.
+  Point throat_and_tread_1in40() {
+    const double s = s_;
+    const Point& root_centre = root_centre_;
+    // R36 tangent to the R13 root (internally) and to the 1:40 line z = -(y + s)/40.
+    const double q = std::sqrt(1.0 + 1.0 / 1600.0);
+    const double rj = 36.0;
+    const double dd = rj - kRootRadius_mm;
+    // In the e = 32.5 frame: (u - Dm.y)² + (-u/40 + rj q - Dm.z)² = dd².
+    const double dmy = -uic_s1002::kCD;
+    const double c0 = rj * q - uic_s1002::kAD;
+    const double qa = 1.0 + 1.0 / 1600.0;
+    const double qbb = -2.0 * dmy - 2.0 * c0 / 40.0;
+    const double qcc = dmy * dmy + c0 * c0 - dd * dd;
+    const double u = (-qbb + std::sqrt(qbb * qbb - 4.0 * qa * qcc)) / (2.0 * qa);
+    const Point jm{u - s, -u / 40.0 + rj * q};
+    const Point d1a{jm.y + rj / dd * (root_centre.y - jm.y),
+                    jm.z + rj / dd * (root_centre.z - jm.z)};
+    const Point c11a{jm.y - rj * (1.0 / 40.0) / q, jm.z - rj / q};
+    mark("Jm", jm);
+    mark("D1a", d1a);
+    mark("C11a", c11a);
+    add(arc_piece("flange root R13", root_centre, kRootRadius_mm, -1.0, 0.0, d1_y_), "E1", true);
+    add(arc_piece("1/40 root R13", root_centre, kRootRadius_mm, -1.0, 0.0, d1a.y), "D1", true);
+    add(arc_piece("1/40 transition R36", jm, rj, -1.0, 0.0, c11a.y), "D1a", true);
+    if (s > 0.0) {
+      add(line_piece("1/40 inner tread", c11a, -1.0 / 40.0, -0.5 - s), "C11a", true);
+      const double t1_z = c11a.z - (-0.5 - s - c11a.y) / 40.0;
+      add(line_piece("T1-D0 line", {-0.5 - s, t1_z}, -t1_z / (0.5 + s), 0.0), "T1", false);
+      add(line_piece("1/40 outer tread", {0.0, 0.0}, -1.0 / 40.0, 35.0), "D0", false);
+    } else {
+      add(line_piece("1/40 tread", c11a, -1.0 / 40.0, 35.0), "C11a", true);
+    }
+    return {35.0, -35.0 / 40.0};
+  }
+
+  /// EPS (Annex D): R13 root, the tabulated transition of Table D.1 (a monotone cubic through its
+  /// points), R100, R330 and a flat tread.
+  /// @return B1, where the outer slope starts.
+  Point eps_throat_and_tread() {
+    const double e = w_.parameters_.flange_thickness_mm;
+    const Point& root_centre = root_centre_;
+    const double k = (e - en13715::kEpsTableFirstE_mm) / en13715::kEpsTableStep_mm;
+    const double k_round = std::round(k);
+    if (std::fabs(k - k_round) > 1e-9) {
+      throw std::invalid_argument(
+          "EPS is defined by Table D.1 only for e = 28.5, 29.0, … 32.5 mm, got " +
+          std::to_string(e));
+    }
+    const auto column = static_cast<std::size_t>(k_round);
+    const double z_flat = -0.5474;  // C12 – B1b (EN 15302 wheel C: -0.5474)
+    const Point j330{19.0, z_flat + 330.0};
+    const Point j100{-6.5, j330.z - std::sqrt(230.0 * 230.0 - 25.5 * 25.5)};
+    const Point c11b{j330.y + 330.0 / 230.0 * (j100.y - j330.y),
+                     j330.z + 330.0 / 230.0 * (j100.z - j330.z)};
+    mark("Jm", j100);
+    mark("Jm1", j330);
+    mark("C11b", c11b);
+    const std::size_t n = en13715::kEpsTableCount[column];
+    std::vector<double> xs(n);
+    std::vector<double> zs(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      xs[i] = d1_y_ + 0.5 * static_cast<double>(i);
+      zs[i] = en13715::kEpsTableZ_mm[column][i];
+    }
+    xs.back() = -26.0;
+    // Through every tabulated point. The table's end values differ from the adjoining arcs by
+    // its rounding (D1: root arc 6.86750 vs 6.867; C1b: R100 2.79023 vs 2.790), < 1 µm jumps.
+    w_.cubics_.emplace_back(xs, zs, arc_tan(root_centre, kRootRadius_mm, -1.0, d1_y_));
+    add(arc_piece("flange root R13", root_centre, kRootRadius_mm, -1.0, 0.0, d1_y_), "E1", true);
+    WheelProfile::Piece cubic;
+    cubic.name = "EPS transition (Table D.1, monotone cubic)";
+    cubic.kind = WheelProfile::Kind::kCubic;
+    cubic.y1 = -26.0;
+    cubic.cubic = w_.cubics_.size() - 1;
+    add(cubic, "D1", true);
+    add(arc_piece("EPS R100", j100, 100.0, -1.0, 0.0, c11b.y), "C1b", false);
+    add(arc_piece("EPS R330", j330, 330.0, -1.0, 0.0, 19.0), "C11b", true);
+    add(line_piece("EPS flat", {19.0, z_flat}, 0.0, 29.0), "C12", true);
+    return {29.0, z_flat};
+  }
+
+  /// The outer slope from B1 to the front face, less the 5 mm chamfer where there is one.
+  void outer_slope_and_chamfer(Point b1) {
+    const WheelParameters& parameters = w_.parameters_;
+    const double p = outer_slope_gradient(parameters.outer_slope);
+    const double front_y = parameters.width_mm - 70.0;
+    const double a1_y = parameters.chamfer ? front_y - kChamfer_mm : front_y;
+    const bool tangent_b1 =
+        parameters.family == WheelFamily::kS1002 && parameters.outer_slope.uic_1in15;
+    add(line_piece("outer slope", b1, -p, a1_y), "B1", tangent_b1);
+    if (parameters.chamfer) {
+      const Point a1{a1_y, b1.z - p * (a1_y - b1.y)};
+      add(line_piece("chamfer", a1, -1.0, front_y), "A1", false);
     }
   }
-  // Outer slope and chamfer.
-  const double front_y = parameters.width_mm - 70.0;
-  const double a1_y = parameters.chamfer ? front_y - kChamfer_mm : front_y;
-  const bool tangent_b1 =
-      parameters.family == WheelFamily::kS1002 && parameters.outer_slope.uic_1in15;
-  add(line_piece("outer slope", b1, -p, a1_y), "B1", tangent_b1);
-  if (parameters.chamfer) {
-    const Point a1{a1_y, b1.z - p * (a1_y - b1.y)};
-    add(line_piece("chamfer", a1, -1.0, front_y), "A1", false);
-  }
+
+  WheelProfile& w_;
+  double s_;           ///< 32.5 - e, how much thinner the flange is than the nominal one
+  double dh_;          ///< h - 28
+  Point root_centre_;  ///< Dm, the centre of the R13 flange root
+  double d1_y_;        ///< where the R13 root ends (D1)
+};
+
+WheelProfile::WheelProfile(const WheelParameters& parameters) : parameters_(parameters) {
+  check_parameters(parameters);
+  WheelProfileBuilder(*this).build();
 }
 
 std::string WheelProfile::name() const {

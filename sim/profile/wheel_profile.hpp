@@ -26,6 +26,7 @@
 //   percentage slopes start at the tabulated B1 = (32.158, -0.780).
 
 #include <cstddef>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -79,6 +80,13 @@ std::string to_string(OuterSlope slope);
 /// rounded, so "6.7" gives exactly 0.067). Throws std::invalid_argument for malformed text and for
 /// gradients outside 6.7 … 15 %, naming the allowed range.
 OuterSlope parse_outer_slope(const std::string& text);
+
+/// A wheel written as FAMILY[:key=value,...] with the keys h, e, slope, width and chamfer
+/// ("S1002:h=30,e=31.5,slope=1:15"); what is not written keeps WheelParameters' default. Throws
+/// std::invalid_argument naming `option` (the command-line option it came from, e.g. "--wheel"),
+/// the spec and the key. The keys written are added to `given` where it is not null.
+WheelParameters parse_wheel_spec(const std::string& spec, const std::string& option,
+                                 std::set<std::string>* given = nullptr);
 
 struct ProfileValue {
   double z_mm;
@@ -142,6 +150,7 @@ class WheelProfile {
   };
 
  private:
+  friend class WheelProfileBuilder;  // the construction, part by part (wheel_profile.cpp)
   void add(Piece piece, const std::string& junction_name, bool tangent);
   WheelParameters parameters_;
   std::vector<Piece> pieces_;
