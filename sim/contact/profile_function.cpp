@@ -1,7 +1,9 @@
 #include "contact/profile_function.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -47,42 +49,52 @@ double ProfileFunction::z_at(double y_mm) const {
 
 namespace {
 
-struct LocalParabola {
-  double slope;
-  double curvature;
-};
-
-/// Least-squares parabola z = c0 + c1 d + c2 d^2 in d = y_i - y through samples lo..hi: the slope
-/// c1 and the second derivative 2 c2 at y (exact for parabolas, symmetric window or not). With
-/// fewer than 3 samples: the chord and 0.
-LocalParabola fit_parabola(std::span<const double> ys, std::span<const double> zs, std::size_t lo,
-                           std::size_t hi, double y) {
-  const LocalParabola chord{(zs[hi] - zs[lo]) / (ys[hi] - ys[lo]), 0.0};
-  if (hi - lo + 1 < 3) {
-    return chord;
-  }
+/// The least-squares quadratic z = c0 + c1 d + c2 d^2 in d = y_k - y through samples lo..hi
+/// (Cramer's rule on the normal equations); none where they are singular.
+std::optional<std::array<double, 3>> local_quadratic(std::span<const double> ys,
+                                                     std::span<const double> zs, std::size_t lo,
+                                                     std::size_t hi, double y) {
   double m0 = 0, m1 = 0, m2 = 0, m3 = 0, m4 = 0, r0 = 0, r1 = 0, r2 = 0;
-  for (std::size_t i = lo; i <= hi; ++i) {
-    const double d = ys[i] - y;
+  for (std::size_t k = lo; k <= hi; ++k) {
+    const double d = ys[k] - y;
     const double d2 = d * d;
     m0 += 1.0;
     m1 += d;
     m2 += d2;
     m3 += d2 * d;
     m4 += d2 * d2;
-    r0 += zs[i];
-    r1 += zs[i] * d;
-    r2 += zs[i] * d2;
+    r0 += zs[k];
+    r1 += zs[k] * d;
+    r2 += zs[k] * d2;
   }
   const double det = m0 * (m2 * m4 - m3 * m3) - m1 * (m1 * m4 - m3 * m2) + m2 * (m1 * m3 - m2 * m2);
   if (!(std::abs(det) > 0.0)) {
+    return std::nullopt;
+  }
+  return std::array<double, 3>{
+      (r0 * (m2 * m4 - m3 * m3) - m1 * (r1 * m4 - m3 * r2) + m2 * (r1 * m3 - m2 * r2)) / det,
+      (m0 * (r1 * m4 - m3 * r2) - r0 * (m1 * m4 - m3 * m2) + m2 * (m1 * r2 - r1 * m2)) / det,
+      (m0 * (m2 * r2 - r1 * m3) - m1 * (m1 * r2 - r1 * m2) + r0 * (m1 * m3 - m2 * m2)) / det};
+}
+
+struct LocalParabola {
+  double slope;
+  double curvature;
+};
+
+/// Least-squares parabola through samples lo..hi: the slope c1 and the second derivative 2 c2 at
+/// y (exact for parabolas, symmetric window or not). With fewer than 3 samples: the chord and 0.
+LocalParabola fit_parabola(std::span<const double> ys, std::span<const double> zs, std::size_t lo,
+                           std::size_t hi, double y) {
+  const LocalParabola chord{(zs[hi] - zs[lo]) / (ys[hi] - ys[lo]), 0.0};
+  if (hi - lo + 1 < 3) {
     return chord;
   }
-  const double c1 =
-      (m0 * (r1 * m4 - m3 * r2) - r0 * (m1 * m4 - m3 * m2) + m2 * (m1 * r2 - r1 * m2)) / det;
-  const double c2 =
-      (m0 * (m2 * r2 - r1 * m3) - m1 * (m1 * r2 - r1 * m2) + r0 * (m1 * m3 - m2 * m2)) / det;
-  return {c1, 2.0 * c2};
+  const auto c = local_quadratic(ys, zs, lo, hi, y);
+  if (!c) {
+    return chord;
+  }
+  return {(*c)[1], 2.0 * (*c)[2]};
 }
 
 }  // namespace
@@ -145,28 +157,9 @@ profile::SampledProfile smooth_profile(const profile::SampledProfile& profile,
       out.z_mm[i] = z[i];
       continue;
     }
-    // Quadratic z = c0 + c1 d + c2 d^2 in d = y - y_i; out = c0 (Cramer's rule on the normal eqs).
-    double m0 = 0, m1 = 0, m2 = 0, m3 = 0, m4 = 0, r0 = 0, r1 = 0, r2 = 0;
-    for (std::size_t k = a; k <= b; ++k) {
-      const double d = y[k] - y[i];
-      const double d2 = d * d;
-      m0 += 1.0;
-      m1 += d;
-      m2 += d2;
-      m3 += d2 * d;
-      m4 += d2 * d2;
-      r0 += z[k];
-      r1 += z[k] * d;
-      r2 += z[k] * d2;
-    }
-    const double det =
-        m0 * (m2 * m4 - m3 * m3) - m1 * (m1 * m4 - m3 * m2) + m2 * (m1 * m3 - m2 * m2);
-    if (!(std::abs(det) > 0.0)) {
-      out.z_mm[i] = z[i];
-      continue;
-    }
-    out.z_mm[i] =
-        (r0 * (m2 * m4 - m3 * m3) - m1 * (r1 * m4 - m3 * r2) + m2 * (r1 * m3 - m2 * r2)) / det;
+    // The quadratic's value at y_i.
+    const auto c = local_quadratic(y, z, a, b, y[i]);
+    out.z_mm[i] = c ? (*c)[0] : z[i];
   }
   return out;
 }
