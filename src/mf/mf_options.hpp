@@ -1,10 +1,10 @@
 #pragma once
 // Options of a Magic Formula evaluation, after MFeval's three-digit useMode:
 //   hundreds: 1 = input limits on (FZMAX, KPUMIN/KPUMAX, ALPMIN/ALPMAX, CAMMIN/CAMMAX,
-//   PRESMIN/PRESMAX,
-//                 low-speed model below VXLOW), 2 = off;
+//             PRESMIN/PRESMAX, low-speed model below VXLOW), 2 = off;
 //   tens:     1 = alpha* = alpha (TNO), 2 = alpha* = tan(alpha)·sign(Vx), gamma* = sin(gamma)
-//   (book); units:    1 = combined slip without turn slip, 2 = with turn slip.
+//             (book);
+//   units:    1 = combined slip without turn slip, 2 = with turn slip.
 
 #include <cstdint>
 
