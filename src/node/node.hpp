@@ -20,7 +20,9 @@
 #include "node/node_config.hpp"
 #include "node/node_counters.hpp"
 #include "proto/codec.hpp"
+#include "proto/data_model.hpp"
 #include "proto/e2e_profile1.hpp"
+#include "proto/role_table.hpp"
 
 namespace tread::node {
 
@@ -167,7 +169,7 @@ class Node {
       if (!is_due(due, i)) continue;
       WheelOutput& out = outputs_.wheels[i];
       const BasicTyreResult<Scalar>& r = results[i];
-      out = WheelOutput{r.fx_n, r.fy_n, r.mz_nm, r.mx_nm, r.my_nm, r.rl_m, 0};
+      out = WheelOutput{r, 0};
       if (r.clamped) {
         out.status = proto::kStatusClamped;
         clamp_mask = static_cast<std::uint8_t>(clamp_mask | bit);
@@ -194,8 +196,7 @@ class Node {
         continue;
       }
       const BasicContactResult<Scalar> r = contacts_[j].evaluate(latest_.wheelsets[j]);
-      out = WheelsetOutput{r.r_left_mm,      r.r_right_mm,      r.delta_r_mm,
-                           r.gamma_left_rad, r.gamma_right_rad, 0};
+      out = WheelsetOutput{r, 0};
       if (r.clamped) {
         out.status = proto::kStatusClamped;
         clamp_mask = static_cast<std::uint8_t>(clamp_mask | bit);
@@ -223,9 +224,7 @@ class Node {
       }
       const BasicRailForceResult<Scalar> r = forces_[j].evaluate(latest_.wheelsets[j]);
       for (std::size_t side = 0; side < 2U; ++side) {
-        const BasicRailWheelForces<Scalar>& w = r.wheel[side];
-        out[side] = RailWheelOutput{w.fx_n, w.y_n,      w.q_n,          w.mz_nm, w.n1_n,
-                                    w.n2_n, w.y_over_q, w.nadal_margin, 0};
+        out[side] = RailWheelOutput{r.wheel[side], 0};
         if (r.clamped) {
           out[side].status = proto::kStatusClamped;
         }
@@ -298,36 +297,11 @@ class Node {
   static bool finite(float x) noexcept { return std::isfinite(x); }
   static bool finite(fixed::Fixed64 x) noexcept { return x.valid(); }
 
-  static bool is_wheel_role(proto::Role r) noexcept {
-    using proto::Role;
-    return r == Role::kappa || r == Role::alpha || r == Role::gamma || r == Role::fz ||
-           r == Role::vx || r == Role::omega || r == Role::omega_valid || r == Role::fx ||
-           r == Role::fy || r == Role::mz || r == Role::mx || r == Role::my || r == Role::rl ||
-           r == Role::wheel_status;
-  }
-  /// The wheelset's geometry inputs feed both its channels; its outputs the geometry channel.
-  static bool is_wheelset_input_role(proto::Role r) noexcept {
-    using proto::Role;
-    return r == Role::ws_lateral || r == Role::ws_yaw || r == Role::ws_yaw_valid;
-  }
-  static bool is_wheelset_output_role(proto::Role r) noexcept {
-    using proto::Role;
-    return r == Role::r_left || r == Role::r_right || r == Role::delta_r || r == Role::gamma_left ||
-           r == Role::gamma_right || r == Role::ws_status;
-  }
-  static bool is_forces_input_role(proto::Role r) noexcept {
-    using proto::Role;
-    return r == Role::ws_speed || r == Role::ws_lateral_velocity || r == Role::ws_yaw_rate ||
-           r == Role::ws_load_left || r == Role::ws_load_right;
-  }
-  static bool is_rail_wheel_role(proto::Role r) noexcept {
-    using proto::Role;
-    return r == Role::rw_fx || r == Role::rw_y || r == Role::rw_q || r == Role::rw_mz ||
-           r == Role::rw_n1 || r == Role::rw_n2 || r == Role::rw_y_over_q ||
-           r == Role::rw_nadal_margin || r == Role::rw_status;
-  }
-  /// The channel bits a message carries data of (see kWheelsetBit, kForcesBit).
+  /// The channel bits a message carries data of (see kWheelsetBit, kForcesBit). A wheelset's
+  /// geometry inputs feed both of its channels, its geometry outputs the geometry channel.
   static std::uint8_t channel_mask(const proto::MessageSpec& m) noexcept {
+    using proto::RoleScope;
+    const bool input = m.direction == proto::Direction::rig_to_node;
     unsigned mask = 0;
     for (const proto::SignalSpec& s : m.signals) {
       const std::int8_t i = m.instance_of(s);
@@ -335,16 +309,21 @@ class Node {
         continue;
       }
       const auto n = static_cast<unsigned>(i);
-      if (is_wheel_role(s.role)) {
-        mask |= 1U << n;
-      } else if (is_wheelset_input_role(s.role)) {
-        mask |= (1U << (kWheelsetBit + n)) | (1U << (kForcesBit + n));
-      } else if (is_wheelset_output_role(s.role)) {
-        mask |= 1U << (kWheelsetBit + n);
-      } else if (is_forces_input_role(s.role)) {
-        mask |= 1U << (kForcesBit + n);
-      } else if (is_rail_wheel_role(s.role)) {
-        mask |= 1U << (kForcesBit + n / 2U);
+      switch (proto::role_scope(s.role)) {
+        case RoleScope::wheel:
+          mask |= 1U << n;
+          break;
+        case RoleScope::wheelset:
+          mask |= (1U << (kWheelsetBit + n)) | (input ? 1U << (kForcesBit + n) : 0U);
+          break;
+        case RoleScope::wheelset_motion:
+          mask |= 1U << (kForcesBit + n);
+          break;
+        case RoleScope::rail_wheel:
+          mask |= 1U << (kForcesBit + n / 2U);
+          break;
+        default:
+          break;
       }
     }
     return static_cast<std::uint8_t>(mask & 0xFFU);
