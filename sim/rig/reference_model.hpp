@@ -3,7 +3,7 @@
 // to compare the node's float answers with.
 
 #include "mf/mf_evaluate.hpp"
-#include "proto/codec.hpp"
+#include "proto/data_model.hpp"
 
 namespace tread::host {
 

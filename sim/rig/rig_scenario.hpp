@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "proto/codec.hpp"
+#include "proto/data_model.hpp"
 
 namespace tread::host {
 

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "contact/equivalent_conicity.hpp"
+#include "proto/role_table.hpp"
 #include "rig/reference_model.hpp"
 
 namespace tread::host {
@@ -41,14 +42,11 @@ ScenarioRunner::ScenarioRunner(RigScenario& scenario, proto::RigLink& link, prot
     }
     bool sent = all[m].id == proto::kNodeStatusId;
     for (const proto::SignalSpec& sig : all[m].signals) {
-      const auto role = static_cast<unsigned>(sig.role);
+      const proto::RoleScope scope = proto::role_scope(sig.role);
       const int channel = all[m].instance_of(sig);
-      const bool wheel = role >= static_cast<unsigned>(proto::Role::fx) &&
-                         role <= static_cast<unsigned>(proto::Role::wheel_status);
-      const bool wheelset = role >= static_cast<unsigned>(proto::Role::r_left) &&
-                            role <= static_cast<unsigned>(proto::Role::ws_status);
-      const bool rail_wheel = role >= static_cast<unsigned>(proto::Role::rw_fx) &&
-                              role <= static_cast<unsigned>(proto::Role::rw_status);
+      const bool wheel = scope == proto::RoleScope::wheel;
+      const bool wheelset = scope == proto::RoleScope::wheelset;
+      const bool rail_wheel = scope == proto::RoleScope::rail_wheel;
       sent = sent || (wheel && channel >= 0 && channel < wheels) ||
              (wheelset && channel >= 0 && channel < wheelsets) ||
              (rail_wheel && channel >= 0 && channel / 2 < wheelset_forces);

@@ -6,7 +6,7 @@
 //   wheel 2: combined κ and α sweeps at 4 kN          wheel 3: Fz sweep 1…7 kN at α = 0.05 rad
 //   wheelset j: lateral displacement 8 mm · sin(2π t / 2 s + j·π/2)
 
-#include "proto/codec.hpp"
+#include "proto/data_model.hpp"
 
 namespace tread::host {
 

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "contact/contact_mechanics.hpp"
-#include "proto/codec.hpp"
+#include "proto/data_model.hpp"
 #include "rail/wheelset_model.hpp"
 
 namespace tread::host {

@@ -9,19 +9,14 @@
 #include <span>
 
 #include "fixed/fixed64.hpp"
-#include "proto/codec.hpp"
+#include "proto/data_model.hpp"
 
 namespace tread::node {
 
-/// The results in the channel's scalar: float, or fixed::Fixed64 on the integer-only path.
+/// The results in the channel's scalar: float, or fixed::Fixed64 on the integer-only path. Each is
+/// the output's values (data_model.hpp) and what the model says about them.
 template <typename S>
-struct BasicTyreResult {
-  S fx_n{};
-  S fy_n{};
-  S mz_nm{};
-  S mx_nm{};
-  S my_nm{};
-  S rl_m{};
+struct BasicTyreResult : proto::BasicWheelValues<S> {
   bool clamped{false};  ///< an input was outside the model's limits and was clamped to them
   /// the model gave a non-finite output (defective parameters, a NaN input): not to be sent
   bool non_finite{false};
@@ -30,28 +25,15 @@ using TyreResult = BasicTyreResult<float>;
 using TyreResultFixed = BasicTyreResult<fixed::Fixed64>;
 
 template <typename S>
-struct BasicContactResult {
-  S r_left_mm{};
-  S r_right_mm{};
-  S delta_r_mm{};
-  S gamma_left_rad{};
-  S gamma_right_rad{};
+struct BasicContactResult : proto::BasicWheelsetValues<S> {
   bool clamped{false};  ///< the displacement lay outside the table and was clamped to its range
 };
 using ContactResult = BasicContactResult<float>;
 using ContactResultFixed = BasicContactResult<fixed::Fixed64>;
 
-/// One rail wheel's contact forces (the fields of proto::BasicRailWheelOutput but the status).
+/// One rail wheel's contact forces (the values of proto::BasicRailWheelOutput).
 template <typename S>
-struct BasicRailWheelForces {
-  S fx_n{};
-  S y_n{};
-  S q_n{};
-  S mz_nm{};
-  S n1_n{};
-  S n2_n{};
-  S y_over_q{};
-  S nadal_margin{};
+struct BasicRailWheelForces : proto::BasicRailWheelValues<S> {
   bool lifted{false};  ///< no load on the wheel: no Y/Q (reported 0, margin = the limit)
 };
 

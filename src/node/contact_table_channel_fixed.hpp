@@ -11,7 +11,7 @@
 #include "core/status.hpp"
 #include "fixed/fixed64.hpp"
 #include "node/channels.hpp"
-#include "proto/codec.hpp"
+#include "proto/data_model.hpp"
 #include "rail/contact_lookup.hpp"
 
 namespace tread::node {

@@ -14,7 +14,7 @@
 #include "mf/mf_fixed.hpp"
 #include "mf/mf_transient.hpp"
 #include "node/channels.hpp"
-#include "proto/codec.hpp"
+#include "proto/data_model.hpp"
 
 namespace tread::node {
 

@@ -20,7 +20,9 @@
 #include "node/node_config.hpp"
 #include "node/node_counters.hpp"
 #include "proto/codec.hpp"
+#include "proto/data_model.hpp"
 #include "proto/e2e_profile1.hpp"
+#include "proto/role_table.hpp"
 
 namespace tread::node {
 
@@ -129,146 +131,14 @@ class Node {
     ++counters_.cycles;
     const Scalar dt_s = last_compute_ns_ == kNever ? Scalar{} : seconds(now_ns - last_compute_ns_);
     last_compute_ns_ = now_ns;
-
-    std::uint8_t stale_mask = 0;
-    std::uint8_t clamp_mask = 0;
-    std::uint8_t due = 0;  // wheels to compute this cycle
-    for (std::size_t i = 0; i < config_.wheels; ++i) {
-      WheelOutput& out = outputs_.wheels[i];
-      const auto bit = static_cast<std::uint8_t>(1U << i);
-      if (!enabled_) {
-        out = WheelOutput{};
-        out.status = proto::kStatusDisabled;
-        tyres_[i].reset();  // restart transients cleanly when the node is enabled again
-        continue;
-      }
-      if (!fresh(bit, now_ns)) {
-        out = WheelOutput{};
-        out.status = proto::kStatusStale;
-        stale_mask = static_cast<std::uint8_t>(stale_mask | bit);
-        tyres_[i].reset();  // restart transients cleanly when inputs return
-        continue;
-      }
-      due = static_cast<std::uint8_t>(due | bit);
-    }
-    std::array<BasicTyreResult<Scalar>, proto::kMaxWheels> results{};
-    if constexpr (BatchTyreChannel<Tyre>) {
-      Tyre::evaluate_wheels(
-          tyres_.first(config_.wheels),
-          std::span<const proto::BasicWheelInput<Scalar>>(latest_.wheels).first(config_.wheels),
-          due, dt_s, results);
-    } else {
-      for (std::size_t i = 0; i < config_.wheels; ++i) {
-        if (is_due(due, i)) results[i] = tyres_[i].evaluate(latest_.wheels[i], dt_s);
-      }
-    }
-    for (std::size_t i = 0; i < config_.wheels; ++i) {
-      const auto bit = static_cast<std::uint8_t>(1U << i);
-      if (!is_due(due, i)) continue;
-      WheelOutput& out = outputs_.wheels[i];
-      const BasicTyreResult<Scalar>& r = results[i];
-      out = WheelOutput{r.fx_n, r.fy_n, r.mz_nm, r.mx_nm, r.my_nm, r.rl_m, 0};
-      if (r.clamped) {
-        out.status = proto::kStatusClamped;
-        clamp_mask = static_cast<std::uint8_t>(clamp_mask | bit);
-      }
-      if (r.non_finite || !all_finite(out)) {  // zeros, flagged as an output that did not fit
-        ++counters_.non_finite_outputs;
-        const std::uint8_t status = out.status;
-        out = WheelOutput{};
-        out.status = static_cast<std::uint8_t>(status | proto::kStatusOutOfRange);
-      }
-    }
-    for (std::size_t j = 0; j < config_.wheelsets; ++j) {
-      WheelsetOutput& out = outputs_.wheelsets[j];
-      const auto bit = static_cast<std::uint8_t>(1U << (kWheelsetBit + j));
-      if (!enabled_) {
-        out = WheelsetOutput{};
-        out.status = proto::kStatusDisabled;
-        continue;
-      }
-      if (!fresh(bit, now_ns)) {
-        out = WheelsetOutput{};
-        out.status = proto::kStatusStale;
-        stale_mask = static_cast<std::uint8_t>(stale_mask | bit);
-        continue;
-      }
-      const BasicContactResult<Scalar> r = contacts_[j].evaluate(latest_.wheelsets[j]);
-      out = WheelsetOutput{r.r_left_mm,      r.r_right_mm,      r.delta_r_mm,
-                           r.gamma_left_rad, r.gamma_right_rad, 0};
-      if (r.clamped) {
-        out.status = proto::kStatusClamped;
-        clamp_mask = static_cast<std::uint8_t>(clamp_mask | bit);
-      }
-      if (!all_finite(out)) {  // zeros, flagged as an output that did not fit
-        ++counters_.non_finite_outputs;
-        const std::uint8_t status = out.status;
-        out = WheelsetOutput{};
-        out.status = static_cast<std::uint8_t>(status | proto::kStatusOutOfRange);
-      }
-    }
-    for (std::size_t j = 0; j < config_.wheelset_forces; ++j) {
-      const auto bit = static_cast<std::uint8_t>(1U << (kForcesBit + j));
-      RailWheelOutput* out = &outputs_.rail_wheels[2U * j];
-      if (!enabled_ || !fresh(bit, now_ns)) {
-        const std::uint8_t status = enabled_ ? proto::kStatusStale : proto::kStatusDisabled;
-        out[0] = RailWheelOutput{};
-        out[1] = RailWheelOutput{};
-        out[0].status = status;
-        out[1].status = status;
-        if (enabled_) {
-          stale_mask = static_cast<std::uint8_t>(stale_mask | bit);
-        }
-        continue;
-      }
-      const BasicRailForceResult<Scalar> r = forces_[j].evaluate(latest_.wheelsets[j]);
-      for (std::size_t side = 0; side < 2U; ++side) {
-        const BasicRailWheelForces<Scalar>& w = r.wheel[side];
-        out[side] = RailWheelOutput{w.fx_n, w.y_n,      w.q_n,          w.mz_nm, w.n1_n,
-                                    w.n2_n, w.y_over_q, w.nadal_margin, 0};
-        if (r.clamped) {
-          out[side].status = proto::kStatusClamped;
-        }
-        if (!all_finite(out[side])) {  // zeros, flagged as an output that did not fit
-          ++counters_.non_finite_outputs;
-          const std::uint8_t status = out[side].status;
-          out[side] = RailWheelOutput{};
-          out[side].status = static_cast<std::uint8_t>(status | proto::kStatusOutOfRange);
-        }
-      }
-      if (r.clamped) {
-        clamp_mask = static_cast<std::uint8_t>(clamp_mask | bit);
-      }
-    }
-    counters_.stale_events += static_cast<std::uint64_t>(std::popcount(stale_mask));
-    counters_.clamp_events += static_cast<std::uint64_t>(std::popcount(clamp_mask));
-
-    proto::NodeStatusData& st = outputs_.status;
-    st.state =
-        static_cast<std::uint8_t>((enabled_ ? proto::kNodeEnabled : 0U) |
-                                  (config_.schedule == Schedule::sync ? proto::kNodeSyncMode : 0U) |
-                                  (counters_.overruns > 0U ? proto::kNodeOverrun : 0U) |
-                                  (config_.layout == proto::Layout::fd ? proto::kNodeFd : 0U));
-    st.cycle = static_cast<std::uint16_t>(counters_.cycles & 0xFFFFU);
-    st.overruns = saturate8(counters_.overruns);
-    st.rejected = saturate8(counters_.rx_rejected());
-    st.stale_mask = stale_mask;
-    st.clamp_mask = clamp_mask;
-
-    const auto all = proto::messages(config_.layout);
-    std::size_t written = 0;
-    for (std::size_t k = 0; k < tx_count_ && written < tx.size(); ++k) {
-      const std::size_t m = tx_list_[k];
-      if (proto::encode(all[m], outputs_, tx_counters_[m], tx[written]) != Status::ok) {
-        ++counters_.saturated_outputs;
-        mark_saturated(all[m], tx[written]);
-      }
-      tx_counters_[m] =
-          static_cast<std::uint8_t>((tx_counters_[m] + 1U) % proto::kE2eCounterModulo);
-      ++written;
-    }
-    counters_.tx_frames += written;
-    return written;
+    ChannelMasks masks;
+    compute_wheels(now_ns, dt_s, masks);
+    compute_wheelsets(now_ns, masks);
+    compute_wheelset_forces(now_ns, masks);
+    counters_.stale_events += static_cast<std::uint64_t>(std::popcount(masks.stale));
+    counters_.clamp_events += static_cast<std::uint64_t>(std::popcount(masks.clamped));
+    update_status(masks);
+    return encode_outputs(tx);
   }
 
   /// The runner reports a missed deadline.
@@ -286,6 +156,171 @@ class Node {
   using WheelsetOutput = proto::BasicWheelsetOutput<Scalar>;
   using RailWheelOutput = proto::BasicRailWheelOutput<Scalar>;
 
+  /// The channel bits (see kWheelsetBit, kForcesBit) that went stale or clamped this cycle.
+  struct ChannelMasks {
+    std::uint8_t stale{0};
+    std::uint8_t clamped{0};
+  };
+
+  /// Wheels: which are due (enabled and fresh; the others zeroed with their status), their tyre
+  /// channels (in one call where the channel type has it), their outputs.
+  void compute_wheels(std::int64_t now_ns, Scalar dt_s, ChannelMasks& masks) noexcept {
+    const std::uint8_t due = due_wheels(now_ns, masks);
+    std::array<BasicTyreResult<Scalar>, proto::kMaxWheels> results{};
+    if constexpr (BatchTyreChannel<Tyre>) {
+      Tyre::evaluate_wheels(
+          tyres_.first(config_.wheels),
+          std::span<const proto::BasicWheelInput<Scalar>>(latest_.wheels).first(config_.wheels),
+          due, dt_s, results);
+    } else {
+      for (std::size_t i = 0; i < config_.wheels; ++i) {
+        if (is_due(due, i)) results[i] = tyres_[i].evaluate(latest_.wheels[i], dt_s);
+      }
+    }
+    for (std::size_t i = 0; i < config_.wheels; ++i) {
+      if (is_due(due, i)) store_wheel(i, results[i], masks);
+    }
+  }
+
+  /// The wheels to compute this cycle (bit i: wheel i); the others' outputs are zero, with the
+  /// disabled or stale status, and their tyres restart cleanly when they are computed again.
+  std::uint8_t due_wheels(std::int64_t now_ns, ChannelMasks& masks) noexcept {
+    std::uint8_t due = 0;
+    for (std::size_t i = 0; i < config_.wheels; ++i) {
+      const auto bit = static_cast<std::uint8_t>(1U << i);
+      if (!enabled_) {
+        outputs_.wheels[i] = WheelOutput{};
+        outputs_.wheels[i].status = proto::kStatusDisabled;
+        tyres_[i].reset();
+      } else if (!fresh(bit, now_ns)) {
+        outputs_.wheels[i] = WheelOutput{};
+        outputs_.wheels[i].status = proto::kStatusStale;
+        masks.stale = static_cast<std::uint8_t>(masks.stale | bit);
+        tyres_[i].reset();
+      } else {
+        due = static_cast<std::uint8_t>(due | bit);
+      }
+    }
+    return due;
+  }
+
+  void store_wheel(std::size_t i, const BasicTyreResult<Scalar>& r, ChannelMasks& masks) noexcept {
+    WheelOutput& out = outputs_.wheels[i];
+    out = WheelOutput{r, 0};
+    if (r.clamped) {
+      out.status = proto::kStatusClamped;
+      masks.clamped = static_cast<std::uint8_t>(masks.clamped | (1U << i));
+    }
+    if (r.non_finite || !all_finite(out)) {
+      zero_non_finite(out);
+    }
+  }
+
+  void compute_wheelsets(std::int64_t now_ns, ChannelMasks& masks) noexcept {
+    for (std::size_t j = 0; j < config_.wheelsets; ++j) {
+      WheelsetOutput& out = outputs_.wheelsets[j];
+      const auto bit = static_cast<std::uint8_t>(1U << (kWheelsetBit + j));
+      if (!enabled_) {
+        out = WheelsetOutput{};
+        out.status = proto::kStatusDisabled;
+        continue;
+      }
+      if (!fresh(bit, now_ns)) {
+        out = WheelsetOutput{};
+        out.status = proto::kStatusStale;
+        masks.stale = static_cast<std::uint8_t>(masks.stale | bit);
+        continue;
+      }
+      const BasicContactResult<Scalar> r = contacts_[j].evaluate(latest_.wheelsets[j]);
+      out = WheelsetOutput{r, 0};
+      if (r.clamped) {
+        out.status = proto::kStatusClamped;
+        masks.clamped = static_cast<std::uint8_t>(masks.clamped | bit);
+      }
+      if (!all_finite(out)) {
+        zero_non_finite(out);
+      }
+    }
+  }
+
+  /// Per wheelset with forces: its two rail wheels (2 j: left, 2 j + 1: right).
+  void compute_wheelset_forces(std::int64_t now_ns, ChannelMasks& masks) noexcept {
+    for (std::size_t j = 0; j < config_.wheelset_forces; ++j) {
+      const auto bit = static_cast<std::uint8_t>(1U << (kForcesBit + j));
+      RailWheelOutput* out = &outputs_.rail_wheels[2U * j];
+      if (!enabled_ || !fresh(bit, now_ns)) {
+        const std::uint8_t status = enabled_ ? proto::kStatusStale : proto::kStatusDisabled;
+        out[0] = RailWheelOutput{};
+        out[1] = RailWheelOutput{};
+        out[0].status = status;
+        out[1].status = status;
+        if (enabled_) {
+          masks.stale = static_cast<std::uint8_t>(masks.stale | bit);
+        }
+        continue;
+      }
+      const BasicRailForceResult<Scalar> r = forces_[j].evaluate(latest_.wheelsets[j]);
+      for (std::size_t side = 0; side < 2U; ++side) {
+        store_rail_wheel(out[side], r.wheel[side], r.clamped);
+      }
+      if (r.clamped) {
+        masks.clamped = static_cast<std::uint8_t>(masks.clamped | bit);
+      }
+    }
+  }
+
+  void store_rail_wheel(RailWheelOutput& out, const BasicRailWheelForces<Scalar>& forces,
+                        bool clamped) noexcept {
+    out = RailWheelOutput{forces, 0};
+    if (clamped) {
+      out.status = proto::kStatusClamped;
+    }
+    if (!all_finite(out)) {
+      zero_non_finite(out);
+    }
+  }
+
+  /// An output that did not fit: zeros, flagged out of range (keeping the status it had).
+  template <typename Output>
+  void zero_non_finite(Output& out) noexcept {
+    ++counters_.non_finite_outputs;
+    const std::uint8_t status = out.status;
+    out = Output{};
+    out.status = static_cast<std::uint8_t>(status | proto::kStatusOutOfRange);
+  }
+
+  void update_status(const ChannelMasks& masks) noexcept {
+    proto::NodeStatusData& st = outputs_.status;
+    st.state =
+        static_cast<std::uint8_t>((enabled_ ? proto::kNodeEnabled : 0U) |
+                                  (config_.schedule == Schedule::sync ? proto::kNodeSyncMode : 0U) |
+                                  (counters_.overruns > 0U ? proto::kNodeOverrun : 0U) |
+                                  (config_.layout == proto::Layout::fd ? proto::kNodeFd : 0U));
+    st.cycle = static_cast<std::uint16_t>(counters_.cycles & 0xFFFFU);
+    st.overruns = saturate8(counters_.overruns);
+    st.rejected = saturate8(counters_.rx_rejected());
+    st.stale_mask = masks.stale;
+    st.clamp_mask = masks.clamped;
+  }
+
+  /// Every output message of the configured channels, each with its own E2E counter.
+  std::size_t encode_outputs(std::span<proto::CanFrame> tx) noexcept {
+    const auto all = proto::messages(config_.layout);
+    std::size_t written = 0;
+    for (std::size_t k = 0; k < tx_count_ && written < tx.size(); ++k) {
+      const std::size_t m = tx_list_[k];
+      if (proto::encode(all[m], outputs_, tx_counters_[m], tx[written]) != Status::ok) {
+        ++counters_.saturated_outputs;
+        mark_saturated(all[m], tx[written]);
+      }
+      tx_counters_[m] =
+          static_cast<std::uint8_t>((tx_counters_[m] + 1U) % proto::kE2eCounterModulo);
+      ++written;
+    }
+    counters_.tx_frames += written;
+    return written;
+  }
+
   /// Integer nanoseconds to seconds: in float without double arithmetic (soft-float on
   /// Cortex-M4F); in Q31.32 as ns·2^−32 × (2^32·10^−9), integer only.
   static Scalar seconds(std::int64_t ns) noexcept {
@@ -298,36 +333,11 @@ class Node {
   static bool finite(float x) noexcept { return std::isfinite(x); }
   static bool finite(fixed::Fixed64 x) noexcept { return x.valid(); }
 
-  static bool is_wheel_role(proto::Role r) noexcept {
-    using proto::Role;
-    return r == Role::kappa || r == Role::alpha || r == Role::gamma || r == Role::fz ||
-           r == Role::vx || r == Role::omega || r == Role::omega_valid || r == Role::fx ||
-           r == Role::fy || r == Role::mz || r == Role::mx || r == Role::my || r == Role::rl ||
-           r == Role::wheel_status;
-  }
-  /// The wheelset's geometry inputs feed both its channels; its outputs the geometry channel.
-  static bool is_wheelset_input_role(proto::Role r) noexcept {
-    using proto::Role;
-    return r == Role::ws_lateral || r == Role::ws_yaw || r == Role::ws_yaw_valid;
-  }
-  static bool is_wheelset_output_role(proto::Role r) noexcept {
-    using proto::Role;
-    return r == Role::r_left || r == Role::r_right || r == Role::delta_r || r == Role::gamma_left ||
-           r == Role::gamma_right || r == Role::ws_status;
-  }
-  static bool is_forces_input_role(proto::Role r) noexcept {
-    using proto::Role;
-    return r == Role::ws_speed || r == Role::ws_lateral_velocity || r == Role::ws_yaw_rate ||
-           r == Role::ws_load_left || r == Role::ws_load_right;
-  }
-  static bool is_rail_wheel_role(proto::Role r) noexcept {
-    using proto::Role;
-    return r == Role::rw_fx || r == Role::rw_y || r == Role::rw_q || r == Role::rw_mz ||
-           r == Role::rw_n1 || r == Role::rw_n2 || r == Role::rw_y_over_q ||
-           r == Role::rw_nadal_margin || r == Role::rw_status;
-  }
-  /// The channel bits a message carries data of (see kWheelsetBit, kForcesBit).
+  /// The channel bits a message carries data of (see kWheelsetBit, kForcesBit). A wheelset's
+  /// geometry inputs feed both of its channels, its geometry outputs the geometry channel.
   static std::uint8_t channel_mask(const proto::MessageSpec& m) noexcept {
+    using proto::RoleScope;
+    const bool input = m.direction == proto::Direction::rig_to_node;
     unsigned mask = 0;
     for (const proto::SignalSpec& s : m.signals) {
       const std::int8_t i = m.instance_of(s);
@@ -335,16 +345,21 @@ class Node {
         continue;
       }
       const auto n = static_cast<unsigned>(i);
-      if (is_wheel_role(s.role)) {
-        mask |= 1U << n;
-      } else if (is_wheelset_input_role(s.role)) {
-        mask |= (1U << (kWheelsetBit + n)) | (1U << (kForcesBit + n));
-      } else if (is_wheelset_output_role(s.role)) {
-        mask |= 1U << (kWheelsetBit + n);
-      } else if (is_forces_input_role(s.role)) {
-        mask |= 1U << (kForcesBit + n);
-      } else if (is_rail_wheel_role(s.role)) {
-        mask |= 1U << (kForcesBit + n / 2U);
+      switch (proto::role_scope(s.role)) {
+        case RoleScope::wheel:
+          mask |= 1U << n;
+          break;
+        case RoleScope::wheelset:
+          mask |= (1U << (kWheelsetBit + n)) | (input ? 1U << (kForcesBit + n) : 0U);
+          break;
+        case RoleScope::wheelset_motion:
+          mask |= 1U << (kForcesBit + n);
+          break;
+        case RoleScope::rail_wheel:
+          mask |= 1U << (kForcesBit + n / 2U);
+          break;
+        default:
+          break;
       }
     }
     return static_cast<std::uint8_t>(mask & 0xFFU);

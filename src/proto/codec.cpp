@@ -1,11 +1,11 @@
 #include "proto/codec.hpp"
 
-#include <array>
 #include <concepts>
+#include <cstdint>
 #include <type_traits>
-#include <utility>
 
 #include "proto/e2e_profile1.hpp"
+#include "proto/role_table.hpp"
 #include "proto/signal_fixed.hpp"
 
 namespace tread::proto {
@@ -17,234 +17,54 @@ std::size_t index_of(const MessageSpec& m, const SignalSpec& s, std::size_t coun
   return idx < count ? idx : count - 1U;
 }
 
-// Where each role's physical (float) value lives in the data model: a member of a wheel, of a
-// wheelset or of a rail wheel (or none: an integer-valued role). Tables indexed by role, built at
-// compile time, so the per-signal lookup is a load instead of a switch.
-template <typename S, typename Wheel, typename Wheelset, typename RailWheel>
-struct FloatMember {
-  S Wheel::*wheel = nullptr;
-  S Wheelset::*wheelset = nullptr;
-  S RailWheel::*rail_wheel = nullptr;
-};
-
-/// The rig's data has no rail-wheel outputs: a placeholder type for the unused member.
-template <typename S>
-struct NoRailWheel {
-  S unused{};
-};
-
-template <typename S>
-using RigMember = FloatMember<S, BasicWheelInput<S>, BasicWheelsetInput<S>, NoRailWheel<S>>;
-template <typename S>
-using NodeMember =
-    FloatMember<S, BasicWheelOutput<S>, BasicWheelsetOutput<S>, BasicRailWheelOutput<S>>;
-
-template <typename S>
-constexpr RigMember<S> rig_member(Role role) noexcept {
-  using WheelInput = BasicWheelInput<S>;
-  using WheelsetInput = BasicWheelsetInput<S>;
-  switch (role) {
-    case Role::kappa:
-      return {&WheelInput::kappa, nullptr};
-    case Role::alpha:
-      return {&WheelInput::alpha_rad, nullptr};
-    case Role::gamma:
-      return {&WheelInput::gamma_rad, nullptr};
-    case Role::fz:
-      return {&WheelInput::fz_n, nullptr};
-    case Role::vx:
-      return {&WheelInput::vx_mps, nullptr};
-    case Role::omega:
-      return {&WheelInput::omega_radps, nullptr};
-    case Role::ws_lateral:
-      return {nullptr, &WheelsetInput::lateral_mm};
-    case Role::ws_yaw:
-      return {nullptr, &WheelsetInput::yaw_rad};
-    case Role::ws_speed:
-      return {nullptr, &WheelsetInput::speed_mps};
-    case Role::ws_lateral_velocity:
-      return {nullptr, &WheelsetInput::lateral_velocity_mps};
-    case Role::ws_yaw_rate:
-      return {nullptr, &WheelsetInput::yaw_rate_radps};
-    case Role::ws_load_left:
-      return {nullptr, &WheelsetInput::load_left_n};
-    case Role::ws_load_right:
-      return {nullptr, &WheelsetInput::load_right_n};
-    default:
-      return {};
-  }
-}
-
-template <typename S>
-constexpr NodeMember<S> node_member(Role role) noexcept {
-  using WheelOutput = BasicWheelOutput<S>;
-  using WheelsetOutput = BasicWheelsetOutput<S>;
-  using RailWheelOutput = BasicRailWheelOutput<S>;
-  switch (role) {
-    case Role::fx:
-      return {&WheelOutput::fx_n, nullptr};
-    case Role::fy:
-      return {&WheelOutput::fy_n, nullptr};
-    case Role::mz:
-      return {&WheelOutput::mz_nm, nullptr};
-    case Role::mx:
-      return {&WheelOutput::mx_nm, nullptr};
-    case Role::my:
-      return {&WheelOutput::my_nm, nullptr};
-    case Role::rl:
-      return {&WheelOutput::rl_m, nullptr};
-    case Role::r_left:
-      return {nullptr, &WheelsetOutput::r_left_mm};
-    case Role::r_right:
-      return {nullptr, &WheelsetOutput::r_right_mm};
-    case Role::delta_r:
-      return {nullptr, &WheelsetOutput::delta_r_mm};
-    case Role::gamma_left:
-      return {nullptr, &WheelsetOutput::gamma_left_rad};
-    case Role::gamma_right:
-      return {nullptr, &WheelsetOutput::gamma_right_rad};
-    case Role::rw_fx:
-      return {nullptr, nullptr, &RailWheelOutput::fx_n};
-    case Role::rw_y:
-      return {nullptr, nullptr, &RailWheelOutput::y_n};
-    case Role::rw_q:
-      return {nullptr, nullptr, &RailWheelOutput::q_n};
-    case Role::rw_mz:
-      return {nullptr, nullptr, &RailWheelOutput::mz_nm};
-    case Role::rw_n1:
-      return {nullptr, nullptr, &RailWheelOutput::n1_n};
-    case Role::rw_n2:
-      return {nullptr, nullptr, &RailWheelOutput::n2_n};
-    case Role::rw_y_over_q:
-      return {nullptr, nullptr, &RailWheelOutput::y_over_q};
-    case Role::rw_nadal_margin:
-      return {nullptr, nullptr, &RailWheelOutput::nadal_margin};
-    default:
-      return {};
-  }
-}
-
-template <typename Member, Member (*member_of)(Role)>
-constexpr std::array<Member, kRoleCount> make_members() noexcept {
-  std::array<Member, kRoleCount> table{};
-  for (std::size_t r = 0; r < kRoleCount; ++r) table[r] = member_of(static_cast<Role>(r));
-  return table;
-}
-
-template <typename S>
-constexpr auto kRigMembers = make_members<RigMember<S>, rig_member<S>>();
-template <typename S>
-constexpr auto kNodeMembers = make_members<NodeMember<S>, node_member<S>>();
-
-template <typename D>
-inline constexpr bool kIsRigData = std::same_as<std::remove_const_t<D>, RigData> ||
-                                   std::same_as<std::remove_const_t<D>, RigDataFixed>;
-template <typename D>
-inline constexpr bool kIsNodeData = std::same_as<std::remove_const_t<D>, NodeData> ||
-                                    std::same_as<std::remove_const_t<D>, NodeDataFixed>;
-
 /// The scalar of a data model (float or fixed::Fixed64).
 template <typename D>
-using ScalarOf = std::remove_cvref_t<decltype(std::declval<D&>().wheels[0].fx_n)>;
-
+struct scalar_of;
+template <typename S>
+struct scalar_of<BasicRigData<S>> {
+  using type = S;
+};
+template <typename S>
+struct scalar_of<BasicNodeData<S>> {
+  using type = S;
+};
 template <typename D>
-constexpr const auto& members_for() noexcept {
-  if constexpr (kIsRigData<D>) {
-    return kRigMembers<std::remove_cvref_t<decltype(std::declval<D&>().wheels[0].kappa)>>;
-  } else {
-    return kNodeMembers<ScalarOf<D>>;
+using ScalarOf = typename scalar_of<std::remove_const_t<D>>::type;
+
+/// Calls fn(field) when `member` is a member of `object` (a row of the other direction is not).
+template <typename Object, typename Member, typename Fn>
+void apply_member(Object& object, Member member, Fn& fn) noexcept {
+  if constexpr (requires { object.*member; }) {
+    fn(object.*member);
   }
 }
 
-// A physical (float) field of the data model, or nullptr for integer-valued roles.
-template <typename D>
-requires kIsRigData<D> || kIsNodeData<D>
-auto float_field(D& d, const MessageSpec& m, const SignalSpec& s) noexcept
-    -> decltype(&(d.wheels[0].*members_for<D>()[0].wheel)) {
-  const auto& member = members_for<D>()[static_cast<std::size_t>(s.role)];
-  if (member.wheel != nullptr) {
-    return &(d.wheels[index_of(m, s, kMaxWheels)].*member.wheel);
-  }
-  if (member.wheelset != nullptr) {
-    return &(d.wheelsets[index_of(m, s, kMaxWheelsets)].*member.wheelset);
-  }
-  if constexpr (kIsNodeData<D>) {
-    if (member.rail_wheel != nullptr) {
-      return &(d.rail_wheels[index_of(m, s, kMaxRailWheels)].*member.rail_wheel);
+/// Calls fn(field) with the field of `d` that signal `s` of message `m` carries (role_table.hpp),
+/// if `d` has one.
+template <typename D, typename Fn>
+void with_field(D& d, const MessageSpec& m, const SignalSpec& s, Fn&& fn) noexcept {
+  visit_role<ScalarOf<D>>(s.role, [&](const auto& row) {
+    constexpr RoleScope scope = std::remove_cvref_t<decltype(row)>::scope;
+    if constexpr (scope == RoleScope::wheel) {
+      apply_member(d.wheels[index_of(m, s, kMaxWheels)], row.member, fn);
+    } else if constexpr (scope == RoleScope::wheelset || scope == RoleScope::wheelset_motion) {
+      apply_member(d.wheelsets[index_of(m, s, kMaxWheelsets)], row.member, fn);
+    } else if constexpr (scope == RoleScope::rail_wheel) {
+      if constexpr (requires { d.rail_wheels; }) {
+        apply_member(d.rail_wheels[index_of(m, s, kMaxRailWheels)], row.member, fn);
+      }
+    } else if constexpr (scope == RoleScope::rig) {
+      apply_member(d, row.member, fn);
+    } else if constexpr (scope == RoleScope::command) {
+      if constexpr (requires { d.command; }) {
+        apply_member(d.command, row.member, fn);
+      }
+    } else if constexpr (scope == RoleScope::node_status) {
+      if constexpr (requires { d.status; }) {
+        apply_member(d.status, row.member, fn);
+      }
     }
-  }
-  return nullptr;
-}
-
-// Integer-valued roles: read (get) or write (set) through one accessor.
-template <typename D, typename Visit>
-requires kIsRigData<D>
-void int_field(D& d, const MessageSpec& m, const SignalSpec& s, Visit&& visit) noexcept {
-  auto& w = d.wheels[index_of(m, s, kMaxWheels)];
-  auto& ws = d.wheelsets[index_of(m, s, kMaxWheelsets)];
-  switch (s.role) {
-    case Role::omega_valid:
-      visit(w.omega_valid);
-      break;
-    case Role::ws_yaw_valid:
-      visit(ws.yaw_valid);
-      break;
-    case Role::rig_cycle:
-      visit(d.rig_cycle);
-      break;
-    case Role::cmd_enable:
-      visit(d.command.enable);
-      break;
-    case Role::cmd_reset:
-      visit(d.command.reset);
-      break;
-    case Role::cmd_tyre_set:
-      visit(d.command.tyre_set);
-      break;
-    case Role::cmd_profile_set:
-      visit(d.command.profile_set);
-      break;
-    default:
-      break;
-  }
-}
-
-template <typename D, typename Visit>
-requires kIsNodeData<D>
-void int_field(D& d, const MessageSpec& m, const SignalSpec& s, Visit&& visit) noexcept {
-  auto& w = d.wheels[index_of(m, s, kMaxWheels)];
-  auto& ws = d.wheelsets[index_of(m, s, kMaxWheelsets)];
-  switch (s.role) {
-    case Role::wheel_status:
-      visit(w.status);
-      break;
-    case Role::ws_status:
-      visit(ws.status);
-      break;
-    case Role::rw_status:
-      visit(d.rail_wheels[index_of(m, s, kMaxRailWheels)].status);
-      break;
-    case Role::node_state:
-      visit(d.status.state);
-      break;
-    case Role::node_cycle:
-      visit(d.status.cycle);
-      break;
-    case Role::node_overruns:
-      visit(d.status.overruns);
-      break;
-    case Role::node_rejected:
-      visit(d.status.rejected);
-      break;
-    case Role::node_stale_mask:
-      visit(d.status.stale_mask);
-      break;
-    case Role::node_clamp_mask:
-      visit(d.status.clamp_mask);
-      break;
-    default:
-      break;
-  }
+  });
 }
 
 // The float or the integer-only route, by the data model's scalar.
@@ -278,17 +98,17 @@ Status encode_impl(const MessageSpec& message, const Data& data, std::uint8_t co
     if (s.role == Role::crc || s.role == Role::counter) {
       continue;
     }
-    if (const auto* f = float_field(data, message, s); f != nullptr) {
-      if (encode_physical(s, *f, bytes) != Status::ok) {
+    with_field(data, message, s, [&](const auto& field) {
+      Status fitted = Status::ok;
+      if constexpr (std::same_as<std::remove_cvref_t<decltype(field)>, ScalarOf<Data>>) {
+        fitted = encode_physical(s, field, bytes);
+      } else {
+        fitted = encode_raw_signal(s, static_cast<std::int64_t>(field), bytes);
+      }
+      if (fitted != Status::ok) {
         status = Status::out_of_range;
       }
-      continue;
-    }
-    std::int64_t raw = 0;
-    int_field(data, message, s, [&raw](auto& field) { raw = static_cast<std::int64_t>(field); });
-    if (encode_raw_signal(s, raw, bytes) != Status::ok) {
-      status = Status::out_of_range;
-    }
+    });
   }
   e2e_protect(frame, message.data_id(), counter);
   return status;
@@ -304,13 +124,13 @@ Status decode_impl(const MessageSpec& message, const CanFrame& frame, Data& data
     if (s.role == Role::crc || s.role == Role::counter) {
       continue;
     }
-    if (auto* f = float_field(data, message, s); f != nullptr) {
-      *f = decode_physical<std::remove_cvref_t<decltype(*f)>>(s, bytes);
-      continue;
-    }
-    const std::int64_t raw = decode_raw_signal(s, bytes);
-    int_field(data, message, s, [raw](auto& field) {
-      field = static_cast<std::remove_reference_t<decltype(field)>>(raw);
+    with_field(data, message, s, [&](auto& field) {
+      using Field = std::remove_reference_t<decltype(field)>;
+      if constexpr (std::same_as<Field, ScalarOf<Data>>) {
+        field = decode_physical<Field>(s, bytes);
+      } else {
+        field = static_cast<Field>(decode_raw_signal(s, bytes));
+      }
     });
   }
   return Status::ok;

@@ -3,6 +3,7 @@
 #include <span>
 
 #include "proto/e2e_profile1.hpp"
+#include "proto/role_table.hpp"
 
 namespace tread::proto {
 

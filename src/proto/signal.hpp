@@ -9,96 +9,9 @@
 
 #include "core/status.hpp"
 #include "proto/can_frame.hpp"
+#include "proto/signal_role.hpp"
 
 namespace tread::proto {
-
-/// What a signal carries, so one table-driven codec serves every layout.
-enum class Role : std::uint8_t {
-  crc,
-  counter,
-  // rig -> node
-  kappa,
-  alpha,
-  gamma,
-  fz,
-  vx,
-  omega,
-  omega_valid,
-  ws_lateral,
-  ws_yaw,
-  ws_yaw_valid,
-  rig_cycle,
-  cmd_enable,
-  cmd_reset,
-  cmd_tyre_set,
-  cmd_profile_set,
-  // node -> rig
-  fx,
-  fy,
-  mz,
-  mx,
-  my,
-  rl,
-  wheel_status,
-  r_left,
-  r_right,
-  delta_r,
-  gamma_left,
-  gamma_right,
-  ws_status,
-  node_state,
-  node_cycle,
-  node_overruns,
-  node_rejected,
-  node_stale_mask,
-  node_clamp_mask,
-  // rig -> node: a wheelset's motion and wheel loads (for the wheel-rail forces)
-  ws_speed,
-  ws_lateral_velocity,
-  ws_yaw_rate,
-  ws_load_left,
-  ws_load_right,
-  // node -> rig: per rail wheel (instance 2 j + side: wheelset j, side 0 left, 1 right)
-  rw_fx,
-  rw_y,
-  rw_q,
-  rw_mz,
-  rw_n1,
-  rw_n2,
-  rw_y_over_q,
-  rw_nadal_margin,
-  rw_status,
-};
-
-/// One past the last role (for tables indexed by role).
-inline constexpr std::size_t kRoleCount = static_cast<std::size_t>(Role::rw_status) + 1U;
-
-/// Roles whose values are integers (flags, counters, masks) rather than scaled physical values.
-[[nodiscard]] constexpr bool is_integer_role(Role role) noexcept {
-  switch (role) {
-    case Role::crc:
-    case Role::counter:
-    case Role::omega_valid:
-    case Role::ws_yaw_valid:
-    case Role::rig_cycle:
-    case Role::cmd_enable:
-    case Role::cmd_reset:
-    case Role::cmd_tyre_set:
-    case Role::cmd_profile_set:
-    case Role::wheel_status:
-    case Role::ws_status:
-    case Role::node_state:
-    case Role::node_cycle:
-    case Role::node_overruns:
-    case Role::node_rejected:
-    case Role::node_stale_mask:
-    case Role::node_clamp_mask:
-    case Role::rw_status:
-      return true;
-    default:
-      return false;
-  }
-}
 
 struct SignalSpec {
   Role role;

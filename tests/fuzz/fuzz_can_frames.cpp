@@ -14,6 +14,7 @@
 #include "proto/codec.hpp"
 #include "proto/e2e_profile1.hpp"
 #include "proto/messages.hpp"
+#include "proto/role_table.hpp"
 #include "proto/signal.hpp"
 
 namespace {

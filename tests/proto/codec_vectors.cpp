@@ -14,6 +14,7 @@
 #include "dbc/dbc_writer.hpp"
 #include "proto/codec.hpp"
 #include "proto/e2e_profile1.hpp"
+#include "proto/role_table.hpp"
 
 namespace {
 
