@@ -469,7 +469,7 @@ Fy0Result<T> fy0_args(const MfParameters<P>& p, const Prepared<T>& in, const Bas
   const T r0 = p.unloaded_radius_m;
   const T vcx = in.vx;
   const T eps = T(1e-6);
-  const bool mf52 = p.fit_type == FitType::mf52 || p.fit_type == FitType::pac2002;
+  const bool mf5x = is_mf5x(p);
 
   T zeta2 = T(1);
   T zeta3 = T(1);
@@ -487,7 +487,7 @@ Fy0Result<T> fy0_args(const MfParameters<P>& p, const Prepared<T>& in, const Bas
                  mf_atan((fz / fz0_prime) / ((p.pky2 + p.pky5 * gs2) * (T(1) + p.ppy2 * dpi)))) *
           zeta3 * p.lky;
   const T svyg = fz * (p.pvy3 + p.pvy4 * dfz) * gamma_star * p.lkyc * b.lmuy_prime * zeta2;
-  if (mf52) {
+  if (mf5x) {
     const T kya0 =
         p.pky1 * fz0_prime * mf_sin(p.pky4 * mf_atan(fz / (p.pky2 * fz0_prime))) * p.lkyc;
     r.kyg0 = (p.phy3 * kya0 + fz * (p.pvy3 + p.pvy4 * dfz)) * p.lkyc;
@@ -515,7 +515,7 @@ Fy0Result<T> fy0_args(const MfParameters<P>& p, const Prepared<T>& in, const Bas
     zeta4 = T(1) + shyp - svyg / kya_prime;
   }
 
-  if (mf52) {
+  if (mf5x) {
     r.shy = (p.phy1 + p.phy2 * dfz) * p.lhy + p.phy3 * gamma_star * p.lkyc;
   } else {
     r.shy = (p.phy1 + p.phy2 * dfz) * p.lhy +
@@ -628,7 +628,7 @@ T my(const MfParameters<P>& p, const Prepared<T>& in, const T& fx) {
   const T v = vcx / p.longvl_mps;
   const T v2 = v * v;
   T m;
-  if (p.fit_type == FitType::mf52 || p.fit_type == FitType::pac2002) {
+  if (is_mf5x(p)) {
     m = -r0 * fz * p.lmy * (p.qsy1 + p.qsy2 * (fx / fz0) + p.qsy3 * abs(v) + p.qsy4 * v2 * v2);
   } else {
     const T fz_ratio = fz / fz0;
@@ -1017,7 +1017,7 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
   // calculateMz (combined): the equivalent slip angles and the cores of the trail, Gxa (two) and
   // (MF 6.x) Fy0 at γ = 0 for Fy' (turn slip as in the main evaluation; MFeval evaluates Gyk again
   // at γ = 0 but with the original γ* (its starVar), which is the same Gyk).
-  const bool mf5x = p.fit_type == FitType::mf52 || p.fit_type == FitType::pac2002;
+  const bool mf5x = is_mf5x(p);
   T alphar_eq = T(0);
   CombinedArgs<T> gxa_a{};
   Fy0Result<T> y00{};
@@ -1184,7 +1184,7 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
       fz = if_else(rl_approx - (p.rim_radius_m + p.bottom_offst_m) < T(0),
                    (r0 - p.rim_radius_m - p.bottom_offst_m) * ncz, fz);
       fz = max_of(fz, T(0));
-      if (p.fit_type == FitType::mf52 || p.fit_type == FitType::pac2002) {
+      if (is_mf5x(p)) {
         P q_a1 = p.q_a1;  // a property of the tyre: the same for every lane
         P q_a2 = p.q_a2;
         if (is_zero(q_a1) && is_zero(q_a2)) {
@@ -1210,7 +1210,7 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
                    (T(1) + p.pcfx1 * dfz_r + p.pcfx2 * dfz_r * dfz_r) * (T(1) + p.pcfx3 * dpi);
       out.cy_npm = p.lateral_stiffness_npm * (T(1) + p.pcfy1 * dfz_r + p.pcfy2 * dfz_r * dfz_r) *
                    (T(1) + p.pcfy3 * dpi);
-      if (p.fit_type == FitType::mf52 || p.fit_type == FitType::pac2002) {
+      if (is_mf5x(p)) {
         out.sigmax_m =
             (p.ptx1 + p.ptx2 * dfz_r) * exp(-p.ptx3 * dfz_r) * p.lsgkp * r0 * in.fz / fz0;
         const T sigmayg = T(1) - p.pky3 * abs(in.gamma);
