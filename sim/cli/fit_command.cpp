@@ -69,8 +69,7 @@ void run_staged(const FitCliState& s) {
   }
   tir::TirFile file = tir::read_tir(s.start);
   mf::MfParameters<double> start = tyre::mf_parameters_from_tir(file).params;
-  const bool from_mf52 = model == fit::MfFitModel::mf61 && (start.fit_type == mf::FitType::mf52 ||
-                                                            start.fit_type == mf::FitType::pac2002);
+  const bool from_mf52 = model == fit::MfFitModel::mf61 && mf::is_mf5x(start);
   if (from_mf52) {
     std::vector<std::string> notes;
     start = fit::mf61_start_from_mf52(start, notes);

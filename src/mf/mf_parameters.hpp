@@ -295,6 +295,13 @@ struct MfParameters {
 #undef TREAD_MF_DECLARE_MEMBER
 };
 
+/// Whether the parameters take the MF 5.2 equations: FITTYP 6 (MF-Tyre 5.2) and PAC2002, which
+/// shares them in steady state.
+template <typename T>
+constexpr bool is_mf5x(const MfParameters<T>& p) {
+  return p.fit_type == FitType::mf52 || p.fit_type == FitType::pac2002;
+}
+
 /// The number of coefficients in TREAD_MF_PARAMETER_LIST.
 inline constexpr int kMfParameterCount = 0
 #define TREAD_MF_COUNT_MEMBER(member, section, key, value, description) +1
