@@ -311,9 +311,11 @@ MfCsvReport evaluate_csv(const mf::MfParameters<double>& params, const mf::MfOpt
   }};
 
   EvalSetup setup{table, in_name, limits, options, csv.strict, csv.columns, 0};
-  // The extras (radii, contact patch, relaxation) change no force or moment: skipped when no
-  // selected column shows them.
+  // The extras (radii, contact patch, relaxation) change no force or moment, and Mx and My no
+  // other output: each skipped when no selected column shows it (the status then covers what is
+  // computed and shown).
   if (!needs_extras(csv.columns)) setup.options.extras = false;
+  if (!needs_moments_xy(csv.columns)) setup.options.moments_xy = false;
   constexpr std::size_t kStatusBytes = 32;  // "non-finite result" and its '\n'
   setup.row_bytes = csv.columns.size() * (host::kShortestNumberMaxChars + 1) + kStatusBytes;
 

@@ -109,4 +109,11 @@ bool needs_extras(const std::vector<std::size_t>& columns) {
   return false;
 }
 
+bool needs_moments_xy(const std::vector<std::size_t>& columns) {
+  for (const std::size_t c : columns) {
+    if (kColumns[c].name == "Mx_Nm" || kColumns[c].name == "My_Nm") return true;
+  }
+  return false;
+}
+
 }  // namespace tread::tyre

@@ -86,5 +86,7 @@ EvalColumnSelection select_eval_columns(std::string_view list);
 
 /// Whether any of `columns` needs MfOptions::extras.
 bool needs_extras(const std::vector<std::size_t>& columns);
+/// Whether the columns show Mx or My (mf::MfOptions::moments_xy).
+bool needs_moments_xy(const std::vector<std::size_t>& columns);
 
 }  // namespace tread::tyre

@@ -228,8 +228,10 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
   out.fx_n = fx;
   out.fy_n = fy;
   out.fz_n = in.ufz;
-  out.mx_nm = mx(p, in, b, fy);
-  out.my_nm = my(p, in, fx);
+  if (options.moments_xy) {
+    out.mx_nm = mx(p, in, b, fy);
+    out.my_nm = my(p, in, fx);
+  }
   out.mz_nm = mz;
   out.kappa = in.ukappa_low;
   out.alpha_rad = in.ualpha;

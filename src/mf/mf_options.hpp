@@ -26,6 +26,10 @@ struct MfOptions {
   /// Combined slip (MFeval, Adams USE_MODE 4). False: uncombined (Adams USE_MODE 3): Fx = Fx0,
   /// Fy = Fy0, Mz = Mz0 = −t0·Fy0(γ = 0) + Mzr0, as MFeval's calculateMz0.
   bool combined = true;
+  /// Also compute the overturning and rolling resistance moments Mx and My. No other output
+  /// depends on them; false leaves both 0, for a caller that does not use them (a table of Fx, Fy
+  /// and Mz saves their atan, sin, cos and pow).
+  bool moments_xy = true;
   /// Also compute Re, Rl, rho, contact patch, Cx/Cy/Cz and relaxation lengths. Forces and moments
   /// do not need them (except the turn-slip spin, which needs the rolling speed from Re).
   bool extras = true;
