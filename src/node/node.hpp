@@ -22,6 +22,7 @@
 #include "proto/codec.hpp"
 #include "proto/data_model.hpp"
 #include "proto/e2e_profile1.hpp"
+#include "proto/field_map.hpp"
 #include "proto/role_table.hpp"
 
 namespace tread::node {
@@ -49,7 +50,12 @@ class Node {
   /// config.wheelset_forces; all outlive the node.
   Node(const NodeConfig& config, std::span<Tyre> tyres, std::span<Contact> contacts,
        std::span<Forces> forces = {}) noexcept
-      : config_(config), tyres_(tyres), contacts_(contacts), forces_(forces) {
+      : config_(config),
+        tyres_(tyres),
+        contacts_(contacts),
+        forces_(forces),
+        rx_fields_(config.layout),
+        tx_fields_(config.layout) {
     config_.wheels = std::min<std::uint8_t>(
         {config_.wheels, proto::kMaxWheels, static_cast<std::uint8_t>(tyres.size())});
     config_.wheelsets = std::min<std::uint8_t>(
@@ -116,7 +122,7 @@ class Node {
     }
     counters_.lost_frames += rx.lost_frames - lost_before;
     ++counters_.rx_accepted;
-    static_cast<void>(proto::decode(*m, frame, latest_));
+    static_cast<void>(rx_fields_.decode(index, frame, latest_));
     last_valid_ns_[index] = now_ns;
     if (m->id == proto::kCommandId) {
       apply_command();
@@ -309,7 +315,7 @@ class Node {
     std::size_t written = 0;
     for (std::size_t k = 0; k < tx_count_ && written < tx.size(); ++k) {
       const std::size_t m = tx_list_[k];
-      if (proto::encode(all[m], outputs_, tx_counters_[m], tx[written]) != Status::ok) {
+      if (tx_fields_.encode(m, outputs_, tx_counters_[m], tx[written]) != Status::ok) {
         ++counters_.saturated_outputs;
         mark_saturated(all[m], tx[written]);
       }
@@ -427,6 +433,9 @@ class Node {
   std::span<Tyre> tyres_;
   std::span<Contact> contacts_;
   std::span<Forces> forces_;
+  /// Each signal's field in latest_ and outputs_, looked up once (the codec would per frame).
+  proto::FieldMap<RigData> rx_fields_;
+  proto::FieldMap<NodeData> tx_fields_;
   bool enabled_{true};
   RigData latest_{};
   NodeData outputs_{};

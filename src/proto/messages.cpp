@@ -372,6 +372,16 @@ constexpr std::array kFd{
 
 static_assert(kClassic.size() <= kMaxMessages && kFd.size() <= kMaxMessages);
 
+constexpr std::size_t signal_count(std::span<const MessageSpec> all) {
+  std::size_t n = 0;
+  for (const MessageSpec& m : all) {
+    n += m.signals.size();
+  }
+  return n;
+}
+static_assert(signal_count(kClassic) <= kMaxLayoutSignals && signal_count(kFd) <= kMaxLayoutSignals,
+              "a layout's signals must fit kMaxLayoutSignals (field_map.hpp)");
+
 // Every signal lies inside its frame and no two signals of a message overlap.
 constexpr bool layout_is_sound(std::span<const MessageSpec> all) {
   for (const MessageSpec& m : all) {

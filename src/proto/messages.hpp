@@ -55,4 +55,7 @@ struct MessageSpec {
 /// Upper bound of messages(layout).size() over both layouts.
 inline constexpr std::size_t kMaxMessages = 48;
 
+/// Upper bound of the signals of all messages of one layout, over both layouts.
+inline constexpr std::size_t kMaxLayoutSignals = 256;
+
 }  // namespace tread::proto
