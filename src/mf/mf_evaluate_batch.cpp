@@ -32,12 +32,17 @@ template <int N>
   using L = lanes::Lanes<N>;
   static_assert(std::is_standard_layout_v<MfOutput<L>> &&
                 offsetof(MfOutput<L>, status) == kOutputFields * sizeof(L));
-  std::array<lanes::FloatVec<N>, kInputFields> packed{};
-  for (int i = 0; i < N; ++i) {
-    float row[kInputFields];
-    std::memcpy(row, reinterpret_cast<const char*>(&inputs[i]), sizeof(row));
-    for (std::size_t f = 0; f < kInputFields; ++f) packed[f][i] = row[f];
+  // Transposed through plain float arrays in memory: element access of a vector held in registers
+  // would be one insert or extract instruction per float.
+  constexpr auto kWheels = static_cast<std::size_t>(N);
+  float rows_in[kWheels][kInputFields];
+  std::memcpy(rows_in, reinterpret_cast<const char*>(inputs), sizeof(rows_in));
+  float columns_in[kInputFields][kWheels];
+  for (std::size_t i = 0; i < kWheels; ++i) {
+    for (std::size_t f = 0; f < kInputFields; ++f) columns_in[f][i] = rows_in[i][f];
   }
+  std::array<lanes::FloatVec<N>, kInputFields> packed;
+  std::memcpy(packed.data(), columns_in, sizeof(packed));
   MfInput<L> in;
   in.fz_n = L(packed[0]);
   in.kappa = L(packed[1]);
@@ -52,13 +57,13 @@ template <int N>
   lane_options.side = MountedSide::as_measured;
   MfOutput<L> out = evaluate(params, detail::mirror_input(in, flip), lane_options);
   detail::mirror_output(out, flip);
-  std::array<lanes::FloatVec<N>, kOutputFields> fields;
-  std::memcpy(fields.data(), reinterpret_cast<const char*>(&out), sizeof(fields));
-  for (int i = 0; i < N; ++i) {
+  float columns_out[kOutputFields][kWheels];
+  std::memcpy(columns_out, reinterpret_cast<const char*>(&out), sizeof(columns_out));
+  for (std::size_t i = 0; i < kWheels; ++i) {
     float row[kOutputFields];
-    for (std::size_t f = 0; f < kOutputFields; ++f) row[f] = fields[f][i];
+    for (std::size_t f = 0; f < kOutputFields; ++f) row[f] = columns_out[f][i];
     std::memcpy(reinterpret_cast<char*>(&outputs[i]), row, sizeof(row));
-    outputs[i].status = out.status[i];
+    outputs[i].status = out.status[static_cast<int>(i)];
   }
 }
 

@@ -135,6 +135,9 @@ void BM_Mf62_Float_Combined_Extras(benchmark::State& s) {
 void BM_Mf62_FloatFour_Combined_Extras(benchmark::State& s) {
   bench_four(s, kMf62, true, true);
 }
+void BM_Mf62_FloatFour_Combined(benchmark::State& s) {
+  bench_four(s, kMf62, true, false);
+}
 void BM_Mf61_FloatFour_Combined(benchmark::State& s) {
   bench_four(s, kMf61, true, false);
 }
@@ -167,6 +170,7 @@ BENCHMARK(BM_Mf52_Double_Combined);
 BENCHMARK(BM_Mf62_Double_Combined_Extras);
 BENCHMARK(BM_Mf62_Float_Combined_Extras);
 BENCHMARK(BM_Mf62_FloatFour_Combined_Extras);
+BENCHMARK(BM_Mf62_FloatFour_Combined);
 
 }  // namespace
 }  // namespace tread::mf
