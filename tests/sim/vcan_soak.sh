@@ -16,7 +16,7 @@
 # Checked (each a FAIL line, exit 1):
 #  - every frame on the bus is accounted for: vcan0's transmitted frames = the node's sent frames +
 #    the node's received frames + its receive-queue overflows + the injected frames that its filter
-#    drops (flood, markers), short by no more than the kernel's backlog drops; the node's counters add up
+#    drops (flood, markers), within the kernel's backlog drops either way; the node's counters add up
 #    (received = accepted + rejected + ignored + error frames) and count each injected fault
 #    (error frames, wrong lengths, bad CRCs; bad counters at most one per message per rig restart
 #    and link down, where the rig's counters jump);
@@ -30,10 +30,12 @@
 #    those windows the overrun rate is not above the fault-free baseline's (2x + 3: the guest's timer
 #    jitter, measured in the same run, is the environment's, not the node's) or under 5 % of the
 #    cycles (the host's load may change during the run); in all, no more than the injected ones and
-#    5 % of the cycles (a node that a fault left degraded misses most of its deadlines). Where a status
+#    5 % of the cycles, or twice the baseline's rate where that is more, + 3 (a node that a fault
+#    left degraded misses most of its deadlines). Where a status
 #    frame is late itself (the emulator held the guest back), stale and recovery are not timed by it;
 #  - node and rig exit cleanly (the node on SIGTERM, with its report).
-# The summary is written to OUT/soak_summary.txt (OUT: TREAD_OUT_DIR or /work/out).
+# Each check's lines go to the console and to OUT/soak_summary.txt (OUT: TREAD_OUT_DIR or
+# /work/out).
 tread=$1
 tir=$2
 duration=${3:-600}
@@ -45,6 +47,11 @@ timeout_ms=25
 status=0
 fail() { echo "vcan_soak: FAIL: $*" | tee -a "$out/soak_summary.txt"; status=1; }
 say() { echo "$*" | tee -a "$out/soak_summary.txt"; }
+# report NAME FILE: a check's lines to the console and the summary; its FAIL lines fail NAME.
+report() {
+  tee -a "$out/soak_summary.txt" <"$2"
+  grep -q FAIL "$2" && fail "$1 (the lines above)"
+}
 : >"$out/soak_summary.txt"
 injected_dropped=0  # injected frames the node's filter drops (flood, markers)
 injected_error=0
@@ -138,49 +145,19 @@ restarts=$round_rig
 
 n=$out/soak_node.txt
 cat "$n" | tee -a "$out/soak_summary.txt" >/dev/null
-# Accounting of every frame on the bus.
-awk -v tx=$((tx1 - tx0)) -v dropped=$injected_dropped -v backlog=$((drop1 - drop0)) \
-  -v err=$injected_error -v badlen=$injected_bad_length -v badcrc=$injected_bad_crc \
-  -v restarts=$restarts -v rounds=$rounds -v period=$period_us '
-  /^frames received/ { gsub(/[(),]/, " "); rx = $3; acc = $5; ign = $7; errf = $10 }
-  /^frames rejected/ { gsub(/[(),]/, " "); rej = $3; crc = $6; cnt = $9; len = $12 }
-  /^rx queue overflow/ { ovfl = $4 }
-  /^frames sent/ { gsub(/[(),]/, " "); sent = $3; refused = $6 }
-  /^cycles/ { cycles = $2 }
-  /^overruns/ { overruns = $2 }
-  END {
-    bad = 0
-    node_tx = sent - refused
-    # A frame the kernel dropped from its receive backlog (netdev_max_backlog, during the flood)
-    # reached no socket: the sum may fall short of the bus by at most those.
-    sum = node_tx + rx + ovfl + dropped
-    printf "accounting: frames on the bus %d; node sent %d + node received %d + overflowed %d + injected, filtered out %d = %d (kernel backlog drops %d)\n", tx, node_tx, rx, ovfl, dropped, sum, backlog
-    if (sum > tx || sum < tx - backlog) { print "FAIL: the frames on the bus are not accounted for"; bad = 1 }
-    # Overruns in all: those the node stalls inject (50 ms at the period, each) and under 5 % of
-    # the cycles besides.
-    printf "overruns: %d in %d cycles (%.2f %%)\n", overruns, cycles, 100 * overruns / (cycles > 0 ? cycles : 1)
-    if (overruns > rounds * (50000 / period + 2) + 0.05 * cycles) { print "FAIL: overruns beyond the injected ones and 5 % of the cycles"; bad = 1 }
-    if (acc < 1000) { printf "FAIL: the node accepted %d frames: the rig did not run\n", acc; bad = 1 }
-    if (rx != acc + rej + ign + errf) { print "FAIL: the node'\''s received frames do not add up"; bad = 1 }
-    if (errf != err) { printf "FAIL: error frames %d, injected %d\n", errf, err; bad = 1 }
-    if (len != badlen) { printf "FAIL: bad length %d, injected %d\n", len, badlen; bad = 1 }
-    if (crc != badcrc) { printf "FAIL: bad CRC %d, injected %d\n", crc, badcrc; bad = 1 }
-    # A restarted rig, or one whose sends the link refused while it was down (its counters ran on):
-    # the first frame of each of its 9 messages after it may be out of sequence (rejected until a
-    # second one confirms the new counter); a smaller jump is accepted and counted as lost frames
-    # (counter gaps: frames that never reached the bus, not frames the bus lost).
-    if (cnt > 9 * (restarts + rounds)) { printf "FAIL: bad counters %d, more than 9 per rig restart and link down (%d)\n", cnt, restarts + rounds; bad = 1 }
-    exit bad }' "$n" | tee -a "$out/soak_summary.txt" | grep -q FAIL && fail "frame accounting (above)"
-
 # Stale -> safe, recovery, overruns: from the capture (candump -L: "(sec.usec) vcan0 ID#DATA").
 # WheelSlip_0 (0x100) stands for the rig's inputs (wheel 0's channel: stale bit 0 of NodeStatus'
 # StaleMask, byte 6; Overruns is byte 4, saturating at 255).
 grep -q DROPCOUNT "$tmp/capture.log" && fail "candump dropped frames: the capture is incomplete ($(grep DROPCOUNT "$tmp/capture.log" | tail -1))"
-awk -v timeout=$((timeout_ms * 1000)) -v period=$period_us -v rounds=$rounds '
+awk -v timeout=$((timeout_ms * 1000)) -v period=$period_us -v rounds=$rounds \
+  -v rate_file="$tmp/baseline_rate.txt" '
   function hex(s,   i, v) { v = 0; for (i = 1; i <= length(s); i++) v = v * 16 + index("0123456789ABCDEF", substr(s, i, 1)) - 1; return v }
   BEGIN { onset_bound = timeout + 2 * period + 20000; recovery_bound = 2 * period + 20000; fresh = timeout - 10000 }
   /^\(/ {
-    t = substr($1, 2, length($1) - 2); split(t, p, "."); us = p[1] * 1000000 + p[2]
+    # The microseconds without their leading zeros: busybox awk (in the guest) reads "073336" as
+    # octal.
+    t = substr($1, 2, length($1) - 2); split(t, p, "."); frac = p[2]; sub(/^0+/, "", frac)
+    us = p[1] * 1000000 + (frac == "" ? 0 : frac)
     split($3, f, "#"); id = f[1]; d = f[2]
   }
   id == "7F0" {
@@ -196,7 +173,10 @@ awk -v timeout=$((timeout_ms * 1000)) -v period=$period_us -v rounds=$rounds '
     if (have_in && us - last_in > onset_bound) long_gaps++
     # A gap that the node status frames covered without a break of their own (the bus up, the guest
     # not frozen: no two of them more than 2 periods + 10 ms apart) must have shown stale.
-    if (have_in && us - last_in > onset_bound && last_status > last_in + onset_bound && max_spacing <= 2 * period + 10000 && !stale_since_in) missed_onsets++
+    if (have_in && us - last_in > onset_bound && last_status > last_in + onset_bound && max_spacing <= 2 * period + 10000 && !stale_since_in) {
+      missed_onsets++
+      printf "missed onset: no input from %.6f s to %.6f s (%.1f ms); status frames up to %.1f ms after the last input, at most %.1f ms apart, none stale\n", last_in / 1e6, us / 1e6, (us - last_in) / 1000, (last_status - last_in) / 1000, max_spacing / 1000
+    }
     if (in_gap) { gap_back = us; waiting_recovery = 1; in_gap = 0 }
     last_in = us; have_in = 1; max_spacing = 0; stale_since_in = 0; next
   }
@@ -244,6 +224,9 @@ awk -v timeout=$((timeout_ms * 1000)) -v period=$period_us -v rounds=$rounds '
     printf "stale: %d onsets (input gaps over the timeout: %d, over the bound: %d), max %.1f ms after the last input (bound %.1f ms; %d not timed: no status frames to time them by); %d late, %d missed, %d while inputs arrived\n", onsets, gaps, long_gaps, max_onset / 1000, onset_bound / 1000, untimed, late_onsets, missed_onsets, false_stale
     printf "recovery: %d, max %.1f ms after the inputs returned (bound %.1f ms; %d not timed); %d late\n", recoveries, max_recovery / 1000, recovery_bound / 1000, untimed_recoveries, late_recoveries
     base_s = (base_end - first_status) / 1e6; run_s = (tail_end - base_end) / 1e6
+    # Overruns per cycle in the fault-free baseline: the environment (the emulator timer jitter
+    # under the host load), for the overall bound of the accounting.
+    printf "%.6f\n", (base_s > 0 ? base / (base_s * 1e6 / period) : 0) > rate_file
     if (saturated) run_s = (saturated_at - base_end) / 1e6
     printf "overruns: baseline %d in %.0f s; node stalls %d (injected, %d stalls); elsewhere %d in %.0f s%s\n", base, base_s, injected, stall_windows, spont, run_s, saturated ? " (then the status counter saturated at 255: the node report has the total)" : ""
     # Each round stops the inputs three times (link down, rig stalled, rig killed).
@@ -253,15 +236,61 @@ awk -v timeout=$((timeout_ms * 1000)) -v period=$period_us -v rounds=$rounds '
     # After the faults, overruns at no more than twice the baseline rate + 3, or, the emulator jitter
     # being the host load, in under 5 % of the cycles (a node left degraded by a fault misses most).
     if (base_s <= 0 || (spont > 2 * base * run_s / base_s + 3 && spont > 0.05 * run_s * 1e6 / period)) { print "FAIL: more overruns after the faults than the baseline rate allows"; bad = 1 }
-    exit bad }' "$tmp/capture.log" | tee -a "$out/soak_summary.txt" | grep -q FAIL && fail "stale/recovery/overruns (above)"
+    exit bad }' "$tmp/capture.log" >"$tmp/check_capture.txt"
+report "stale/recovery/overruns" "$tmp/check_capture.txt"
+
+
+# Accounting of every frame on the bus.
+base_rate=$(cat "$tmp/baseline_rate.txt" 2>/dev/null || echo 0)
+awk -v tx=$((tx1 - tx0)) -v dropped=$injected_dropped -v backlog=$((drop1 - drop0)) \
+  -v base_rate="$base_rate" \
+  -v err=$injected_error -v badlen=$injected_bad_length -v badcrc=$injected_bad_crc \
+  -v restarts=$restarts -v rounds=$rounds -v period=$period_us '
+  /^frames received/ { gsub(/[(),]/, " "); rx = $3; acc = $5; ign = $7; errf = $10 }
+  /^frames rejected/ { gsub(/[(),]/, " "); rej = $3; crc = $6; cnt = $9; len = $12 }
+  /^rx queue overflow/ { ovfl = $4 }
+  /^frames sent/ { gsub(/[(),]/, " "); sent = $3; refused = $6 }
+  /^cycles/ { cycles = $2 }
+  /^overruns/ { overruns = $2 }
+  END {
+    bad = 0
+    node_tx = sent - refused
+    # A frame the kernel dropped from its receive backlog (netdev_max_backlog, during the flood)
+    # is off by one either way: it reached no socket (the sum falls short), or, as a run on
+    # 2026-11-26 showed (sum = bus + 9 with 9 backlog drops, the flood being the injected frames
+    # counted as filtered), it never counted on the bus. So the sum is the bus within those drops.
+    sum = node_tx + rx + ovfl + dropped
+    printf "accounting: frames on the bus %d; node sent %d + node received %d + overflowed %d + injected, filtered out %d = %d (kernel backlog drops %d)\n", tx, node_tx, rx, ovfl, dropped, sum, backlog
+    if (sum > tx + backlog || sum < tx - backlog) { print "FAIL: the frames on the bus are not accounted for"; bad = 1 }
+    # Overruns in all: those the node stalls inject (50 ms at the period, each), and besides them
+    # 5 % of the cycles or, where the fault-free baseline of the same run already missed more (the
+    # emulated guest on a loaded host), twice the baseline rate, + 3.
+    allowed = 0.05; if (2 * base_rate > allowed) allowed = 2 * base_rate
+    printf "overruns: %d in %d cycles (%.2f %%; baseline %.2f %%, allowed beyond the injected %.2f %%)\n", overruns, cycles, 100 * overruns / (cycles > 0 ? cycles : 1), 100 * base_rate, 100 * allowed
+    if (overruns > rounds * (50000 / period + 2) + allowed * cycles + 3) { print "FAIL: overruns beyond the injected ones and the allowed share of the cycles"; bad = 1 }
+    if (acc < 1000) { printf "FAIL: the node accepted %d frames: the rig did not run\n", acc; bad = 1 }
+    if (rx != acc + rej + ign + errf) { print "FAIL: the node'\''s received frames do not add up"; bad = 1 }
+    if (errf != err) { printf "FAIL: error frames %d, injected %d\n", errf, err; bad = 1 }
+    if (len != badlen) { printf "FAIL: bad length %d, injected %d\n", len, badlen; bad = 1 }
+    if (crc != badcrc) { printf "FAIL: bad CRC %d, injected %d\n", crc, badcrc; bad = 1 }
+    # A restarted rig, or one whose sends the link refused while it was down (its counters ran on):
+    # the first frame of each of its 9 messages after it may be out of sequence (rejected until a
+    # second one confirms the new counter); a smaller jump is accepted and counted as lost frames
+    # (counter gaps: frames that never reached the bus, not frames the bus lost).
+    if (cnt > 9 * (restarts + rounds)) { printf "FAIL: bad counters %d, more than 9 per rig restart and link down (%d)\n", cnt, restarts + rounds; bad = 1 }
+    exit bad }' "$n" >"$tmp/check_accounting.txt"
+report "frame accounting" "$tmp/check_accounting.txt"
 
 # Memory and file descriptors flat from the end of the first round to the end.
 awk '{ rss[$1] = $2; anon[$1] = $3; fds[$1] = $4 }
   END {
     printf "resources (RSS kB / anonymous kB / fds): baseline %d / %d / %d, after round 1 %d / %d / %d, end %d / %d / %d\n", rss["baseline"], anon["baseline"], fds["baseline"], rss["round1"], anon["round1"], fds["round1"], rss["end"], anon["end"], fds["end"]
     if (rss["end"] > rss["round1"] || anon["end"] > anon["round1"] || fds["end"] != fds["round1"]) { print "FAIL: memory or file descriptors grew"; exit 1 } }' \
-  "$tmp/resources.txt" | tee -a "$out/soak_summary.txt" | grep -q FAIL && fail "resources (above)"
+  "$tmp/resources.txt" >"$tmp/check_resources.txt"
+report "resources" "$tmp/check_resources.txt"
 grep -q "dropped" "$tmp/candump.err" 2>/dev/null && say "note: candump: $(cat "$tmp/candump.err")"
 say "rig restarts: $restarts; markers $marker_n"
+# On a failure the capture is kept beside the summary (a few MB) for a look at what happened.
+[ $status -eq 0 ] || cp "$tmp/capture.log" "$out/soak_capture.log"
 [ $status -eq 0 ] && say "soak: PASS" || say "soak: FAIL"
 exit $status
