@@ -18,12 +18,7 @@ using detail::with_field;
 template <typename Data>
 Status encode_impl(const MessageSpec& message, const Data& data, std::uint8_t counter,
                    CanFrame& frame) noexcept {
-  frame = CanFrame{};
-  frame.id = message.id;
-  frame.fd = message.fd;
-  frame.bit_rate_switch = message.fd;
-  frame.len = message.len;
-  const std::span<std::uint8_t> bytes(frame.data.data(), frame.len);
+  const std::span<std::uint8_t> bytes = detail::start_frame(message, frame);
   Status status = Status::ok;
   for (const SignalSpec& s : message.signals) {
     if (s.role == Role::crc || s.role == Role::counter) {

@@ -9,6 +9,7 @@
 #include <span>
 #include <type_traits>
 
+#include "proto/can_frame.hpp"
 #include "proto/data_model.hpp"
 #include "proto/messages.hpp"
 #include "proto/role_table.hpp"
@@ -71,6 +72,16 @@ void with_field(D& d, const MessageSpec& m, const SignalSpec& s, Fn&& fn) noexce
       }
     }
   });
+}
+
+/// `frame` cleared and given the message's identifier, length and FD flags; its payload bytes.
+inline std::span<std::uint8_t> start_frame(const MessageSpec& message, CanFrame& frame) noexcept {
+  frame = CanFrame{};
+  frame.id = message.id;
+  frame.fd = message.fd;
+  frame.bit_rate_switch = message.fd;
+  frame.len = message.len;
+  return {frame.data.data(), frame.len};
 }
 
 // The float or the integer-only route, by the data model's scalar.

@@ -77,12 +77,7 @@ Status FieldMap<D>::encode(std::size_t index, const D& data, std::uint8_t counte
   }
   using S = ScalarOf<D>;
   const MessageSpec& message = messages_[index];
-  frame = CanFrame{};
-  frame.id = message.id;
-  frame.fd = message.fd;
-  frame.bit_rate_switch = message.fd;
-  frame.len = message.len;
-  const std::span<std::uint8_t> bytes(frame.data.data(), frame.len);
+  const std::span<std::uint8_t> bytes = detail::start_frame(message, frame);
   const auto* base = reinterpret_cast<const std::byte*>(&data);
   const FieldSlot* slot = &slots_[first_[index]];
   Status status = Status::ok;
