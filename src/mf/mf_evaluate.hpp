@@ -106,29 +106,20 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
   }
 
   // Aligning moment: calculateMz0's trail and residual-moment coefficients.
+  const MzTrail<T> tr = mz_trail(p, in, b, options, y0);
   const T r0 = p.unloaded_radius_m;
-  const T eps = T(1e-6);
-  T fz_mz = in.fz;
-  if (options.use_limits) fz_mz = if_else(in.fz > T(0), in.fz_low_limit, T(0));
+  const T fz_mz = tr.fz_mz;
   const T dfz = b.dfz;
   const T dpi = b.dpi;
   const T gs = b.gamma_star_z;
   const T g = b.gamma_z;
-  const T sht = p.qhz1 + p.qhz2 * dfz + (p.qhz3 + p.qhz4 * dfz) * gs;
-  const T kya_prime = y0.kya + eps * sgn_nz(y0.kya);
-  const T shf = y0.shy + y0.svy / kya_prime;
-  const T alphar = b.alpha_star + shf;
-  const T alphat = b.alpha_star + sht;
-  T zeta5 = T(1);
-  if (options.use_turn_slip) zeta5 = cos_atan(p.qdtp1 * r0 * in.phi);
-  const T dt = (p.qdz1 + p.qdz2 * dfz) * (T(1) - p.ppz1 * dpi) *
-               (T(1) + p.qdz3 * g + p.qdz4 * g * g) * fz_mz * (r0 / b.fz0_prime) * p.ltr * zeta5;
-  const T bt = (p.qbz1 + p.qbz2 * dfz + p.qbz3 * dfz * dfz) *
-               (T(1) + p.qbz4 * g + p.qbz5 * abs(g)) * p.lky / b.lmuy_star;
-  const T ct = p.qcz1;
-  T et = (p.qez1 + p.qez2 * dfz + p.qez3 * dfz * dfz) *
-         (T(1) + (p.qez4 + p.qez5 * gs) * (T(2) / pi<T>()) * mf_atan(bt * ct * alphat));
-  if (options.use_limits) et = min_of(et, T(1));
+  const T kya_prime = tr.kya_prime;
+  const T alphar = tr.alphar;
+  const T alphat = tr.alphat;
+  const T dt = tr.dt;
+  const T bt = tr.bt;
+  const T ct = tr.ct;
+  const T et = tr.et;
 
   // calculateMz (combined): the equivalent slip angles and the cores of the trail, Gxa (two) and
   // (MF 6.x) Fy0 at γ = 0 for Fy' (turn slip as in the main evaluation; MFeval evaluates Gyk again
