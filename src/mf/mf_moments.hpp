@@ -9,6 +9,7 @@
 #include "mf/mf_options.hpp"
 #include "mf/mf_parameters.hpp"
 #include "mf/mf_prepared.hpp"
+#include "mf/mf_turn_slip.hpp"
 
 namespace tread::mf::detail {
 
@@ -69,14 +70,6 @@ T my(const MfParameters<P>& p, const Prepared<T>& in, const T& fx) {
   m = if_else(kappa < low_limit, -m, m);
   return if_else(stopped, T(0), m);
 }
-
-/// The pneumatic trail's coefficients (calculateMz0): Dt, Bt, Ct, Et, the slip angles αt of the
-/// trail and αr of the residual moment, the load Mz is computed with (FZMIN as its lower limit
-/// with the limits on) and Kyα' (Kyα kept away from 0).
-template <typename T>
-struct MzTrail {
-  T fz_mz, kya_prime, alphar, alphat, dt, bt, ct, et;
-};
 
 /// calculateMz0's trail coefficients, from Fy0's Kyα, SHy and SVy (ζ5 with turn slip).
 template <typename T, typename P>
