@@ -2,6 +2,8 @@
 // The overturning moment Mx (calculateMx, Besselink's form with QSX12…14) and the rolling
 // resistance moment My (calculateMy: MF 6.x with the camber and pressure terms, MF 5.2 / PAC2002
 // without; MFeval's low-speed reduction).
+// The aligning moment's trail coefficients (calculateMz0's Dt, Bt, Ct, Et); the rest of Mz is
+// assembled in mf_evaluate.hpp.
 
 #include "mf/mf_detail_common.hpp"
 #include "mf/mf_forces.hpp"
