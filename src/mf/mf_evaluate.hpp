@@ -106,29 +106,18 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
   }
 
   // Aligning moment: calculateMz0's trail and residual-moment coefficients.
+  const MzTrail<T> tr = mz_trail(p, in, b, options, y0);
   const T r0 = p.unloaded_radius_m;
-  const T eps = T(1e-6);
-  T fz_mz = in.fz;
-  if (options.use_limits) fz_mz = if_else(in.fz > T(0), in.fz_low_limit, T(0));
+  const T fz_mz = tr.fz_mz;
   const T dfz = b.dfz;
-  const T dpi = b.dpi;
-  const T gs = b.gamma_star_z;
   const T g = b.gamma_z;
-  const T sht = p.qhz1 + p.qhz2 * dfz + (p.qhz3 + p.qhz4 * dfz) * gs;
-  const T kya_prime = y0.kya + eps * sgn_nz(y0.kya);
-  const T shf = y0.shy + y0.svy / kya_prime;
-  const T alphar = b.alpha_star + shf;
-  const T alphat = b.alpha_star + sht;
-  T zeta5 = T(1);
-  if (options.use_turn_slip) zeta5 = cos_atan(p.qdtp1 * r0 * in.phi);
-  const T dt = (p.qdz1 + p.qdz2 * dfz) * (T(1) - p.ppz1 * dpi) *
-               (T(1) + p.qdz3 * g + p.qdz4 * g * g) * fz_mz * (r0 / b.fz0_prime) * p.ltr * zeta5;
-  const T bt = (p.qbz1 + p.qbz2 * dfz + p.qbz3 * dfz * dfz) *
-               (T(1) + p.qbz4 * g + p.qbz5 * abs(g)) * p.lky / b.lmuy_star;
-  const T ct = p.qcz1;
-  T et = (p.qez1 + p.qez2 * dfz + p.qez3 * dfz * dfz) *
-         (T(1) + (p.qez4 + p.qez5 * gs) * (T(2) / pi<T>()) * mf_atan(bt * ct * alphat));
-  if (options.use_limits) et = min_of(et, T(1));
+  const T kya_prime = tr.kya_prime;
+  const T alphar = tr.alphar;
+  const T alphat = tr.alphat;
+  const T dt = tr.dt;
+  const T bt = tr.bt;
+  const T ct = tr.ct;
+  const T et = tr.et;
 
   // calculateMz (combined): the equivalent slip angles and the cores of the trail, Gxa (two) and
   // (MF 6.x) Fy0 at γ = 0 for Fy' (turn slip as in the main evaluation; MFeval evaluates Gyk again
@@ -167,38 +156,18 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
                    : fx_pure;
   const T fy = options.combined ? gyk * y0.fy0 + svyk : y0.fy0;
 
-  T zeta0 = T(1), zeta2 = T(1), zeta6 = T(1), zeta7 = T(1), zeta8 = T(1);
-  if (options.use_turn_slip) {
-    zeta0 = T(0);
-    zeta2 = y0.zeta2;
-    zeta6 = cos_atan(p.qbrp1 * r0 * in.phi);
-    T mzp_inf = p.qcrp1 * abs(y0.muy) * r0 * fz_mz * sqrt(fz_mz / b.fz0_prime) * p.lmp;
-    mzp_inf = if_else(mzp_inf < T(0), T(1e-6), mzp_inf);
-    const T cdrp = p.qdrp1;
-    const T ddrp = div_or(mzp_inf, mf_sin(T(0.5) * pi<T>() * cdrp), T(0));
-    const T kzgr0 =
-        fz_mz * r0 * (p.qdz8 * p.qdz9 * dfz + (p.qdz10 + p.qdz11 * dfz * abs(g))) * p.lkzc;
-    const T bdrp = div_or(kzgr0, cdrp * ddrp * (T(1) - in.epsilong), T(0));
-    const T drp = ddrp * mf_sin(cdrp * mf_atan(bdrp * r0 * in.phit));
-    const T mzp90 = mzp_inf * (T(2) / pi<T>()) * mf_atan(p.qcrp2 * r0 * abs(in.phit)) * gyk;
-    // MFeval: acos(Mzp90/|Drp|), NaN for a ratio above 1 (e.g. 0/0 at φt = 0). Here the ratio
-    // is clamped to [−1, 1]; Drp = 0 gives the turn-slip-free Cr = 1 where Mzp90 = 0 too (φt = 0),
-    // and otherwise the limit of the clamped ratio, sign(Mzp90) (Cr = 0 or 2): Drp is 0 at φt ≠ 0
-    // when Kzγr0 is (e.g. at Fz = FNOMIN for a file without QDZ10/QDZ11), and Cr must not jump
-    // there.
-    const T ratio = max_of(T(-1), min_of(T(1), div_or(mzp90, abs(drp), sgn(mzp90))));
-    zeta7 = if_else(is_zero(drp) && is_zero(mzp90), T(1), (T(2) / pi<T>()) * acos(ratio));
-    zeta8 = T(1) + drp;
-  }
+  const MzTurnSlip<T> zeta = mz_turn_slip(p, in, b, options, tr, y0, gyk);
+  const T dpi = b.dpi;
+  const T gs = b.gamma_star_z;
   const T dr =
       fz_mz * r0 *
-          ((p.qdz6 + p.qdz7 * dfz) * p.lres * zeta2 +
+          ((p.qdz6 + p.qdz7 * dfz) * p.lres * zeta.zeta2 +
            ((p.qdz8 + p.qdz9 * dfz) * (T(1) + p.ppz2 * dpi) + (p.qdz10 + p.qdz11 * dfz) * abs(gs)) *
-               gs * p.lkzc * zeta0) *
+               gs * p.lkzc * zeta.zeta0) *
           b.lmuy_star * sgn(in.vx) * mf_cos(b.alpha_star) +
-      zeta8 - T(1);
-  const T br = (p.qbz9 * p.lky / b.lmuy_star + p.qbz10 * y0.by * y0.cy) * zeta6;
-  const T cr = zeta7;
+      zeta.zeta8 - T(1);
+  const T br = (p.qbz9 * p.lky / b.lmuy_star + p.qbz10 * y0.by * y0.cy) * zeta.zeta6;
+  const T cr = zeta.zeta7;
 
   T mz;
   T t;
