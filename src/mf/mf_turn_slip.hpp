@@ -32,9 +32,6 @@ template <typename T, typename P>
   in.phi = div_or(psi_dot - (T(1) - in.epsilong) * in.omega * mf_sin(gamma), vc_prime, T(0));
 }
 
-/// The pneumatic trail's coefficients (calculateMz0, mz_trail in mf_moments.hpp): Dt, Bt, Ct, Et, the slip angles αt of the
-/// trail and αr of the residual moment, the load Mz is computed with (FZMIN as its lower limit
-/// with the limits on) and Kyα' (Kyα kept away from 0).
 /// The pneumatic trail's coefficients (calculateMz0; mz_trail in mf_moments.hpp): Dt, Bt, Ct, Et,
 /// the slip angles αt of the trail and αr of the residual moment, the load Mz is computed with
 /// (FZMIN as its lower limit with the limits on) and Kyα' (Kyα kept away from 0). Here because the
