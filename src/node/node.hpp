@@ -19,11 +19,12 @@
 #include "node/channels.hpp"
 #include "node/node_config.hpp"
 #include "node/node_counters.hpp"
-#include "proto/codec.hpp"
 #include "proto/data_model.hpp"
 #include "proto/e2e_profile1.hpp"
 #include "proto/field_map.hpp"
+#include "proto/messages.hpp"
 #include "proto/role_table.hpp"
+#include "proto/signal.hpp"
 
 namespace tread::node {
 
