@@ -16,6 +16,12 @@
 //     only) go lane by lane through libm.
 //   - MfOutput<Lanes<N>>::status is a LaneStatus<N>: two masks, the lanes whose input left the
 //     finite-arithmetic envelope and the lanes with a non-finite output.
+//   - Every operator and function takes its lanes and masks by const reference. Passed by value, a
+//     Lanes<16> (64 bytes) is an aggregate copy that GCC sometimes leaves stored to memory after
+//     inlining, and a product that is also stored is not contracted into an FMA: the 16-lane
+//     batch then rounded a few a·b + c differently from the 8- and 4-lane code, depending on how
+//     evaluate() happened to be cut into functions. By reference, 8 and 16 lanes contract the same
+//     expressions (tests/mf/mf_evaluate_batch_test.cpp).
 // Not for the ECU's scalar build (Cortex-M4F): there the node evaluates wheel by wheel.
 
 #include <array>
@@ -47,15 +53,15 @@ using VI = IntVec<4>;
 template <int N>
 struct Mask {
   IntVec<N> m{};
-  friend Mask operator&&(Mask a, Mask b) { return {a.m & b.m}; }
-  friend Mask operator||(Mask a, Mask b) { return {a.m | b.m}; }
-  friend Mask operator!(Mask a) { return {~a.m}; }
+  friend Mask operator&&(const Mask& a, const Mask& b) { return {a.m & b.m}; }
+  friend Mask operator||(const Mask& a, const Mask& b) { return {a.m | b.m}; }
+  friend Mask operator!(const Mask& a) { return {~a.m}; }
   bool operator[](int i) const { return m[i] != 0; }
 };
 using Mask4 = Mask<4>;
 
 template <int N>
-bool any_lane(Mask<N> a) {
+bool any_lane(const Mask<N>& a) {
   if constexpr (N == 4) {
 #if defined(__SSE2__)
     return _mm_movemask_ps(__m128(a.m)) != 0;
@@ -83,15 +89,15 @@ struct Lanes {
       : Lanes(static_cast<float>(x)) {}
   float operator[](int i) const { return v[i]; }
 
-  friend Lanes operator+(Lanes a, Lanes b) { return Lanes(a.v + b.v); }
-  friend Lanes operator-(Lanes a, Lanes b) { return Lanes(a.v - b.v); }
-  friend Lanes operator*(Lanes a, Lanes b) { return Lanes(a.v * b.v); }
-  friend Lanes operator/(Lanes a, Lanes b) { return Lanes(a.v / b.v); }
-  friend Lanes operator-(Lanes a) { return Lanes(-a.v); }
-  friend Mask<N> operator<(Lanes a, Lanes b) { return {a.v < b.v}; }
-  friend Mask<N> operator>(Lanes a, Lanes b) { return {a.v > b.v}; }
-  friend Mask<N> operator<=(Lanes a, Lanes b) { return {a.v <= b.v}; }
-  friend Mask<N> operator>=(Lanes a, Lanes b) { return {a.v >= b.v}; }
+  friend Lanes operator+(const Lanes& a, const Lanes& b) { return Lanes(a.v + b.v); }
+  friend Lanes operator-(const Lanes& a, const Lanes& b) { return Lanes(a.v - b.v); }
+  friend Lanes operator*(const Lanes& a, const Lanes& b) { return Lanes(a.v * b.v); }
+  friend Lanes operator/(const Lanes& a, const Lanes& b) { return Lanes(a.v / b.v); }
+  friend Lanes operator-(const Lanes& a) { return Lanes(-a.v); }
+  friend Mask<N> operator<(const Lanes& a, const Lanes& b) { return {a.v < b.v}; }
+  friend Mask<N> operator>(const Lanes& a, const Lanes& b) { return {a.v > b.v}; }
+  friend Mask<N> operator<=(const Lanes& a, const Lanes& b) { return {a.v <= b.v}; }
+  friend Mask<N> operator>=(const Lanes& a, const Lanes& b) { return {a.v >= b.v}; }
 
  private:
   static FloatVec<N> broadcast(float x) {
@@ -105,21 +111,21 @@ using F8 = Lanes<8>;
 using F16 = Lanes<16>;
 
 template <int N>
-Lanes<N> if_else(Mask<N> m, Lanes<N> a, Lanes<N> b) {
+Lanes<N> if_else(const Mask<N>& m, const Lanes<N>& a, const Lanes<N>& b) {
   return Lanes<N>(m.m ? a.v : b.v);
 }
 
 /// The evaluation's max_of/min_of (a < b ? b : a and b < a ? b : a) as single instructions where
 /// the target has them (x86 maxps(b, a) is exactly a < b ? b : a, NaN included).
 template <int N>
-Lanes<N> max_of(Lanes<N> a, Lanes<N> b) {
+Lanes<N> max_of(const Lanes<N>& a, const Lanes<N>& b) {
 #if defined(__SSE2__)
   if constexpr (N == 4) return Lanes<N>(V(_mm_max_ps(__m128(b.v), __m128(a.v))));
 #endif
   return Lanes<N>(a.v < b.v ? b.v : a.v);
 }
 template <int N>
-Lanes<N> min_of(Lanes<N> a, Lanes<N> b) {
+Lanes<N> min_of(const Lanes<N>& a, const Lanes<N>& b) {
 #if defined(__SSE2__)
   if constexpr (N == 4) return Lanes<N>(V(_mm_min_ps(__m128(b.v), __m128(a.v))));
 #endif
@@ -127,13 +133,13 @@ Lanes<N> min_of(Lanes<N> a, Lanes<N> b) {
 }
 
 template <int N>
-Lanes<N> abs(Lanes<N> x) {
+Lanes<N> abs(const Lanes<N>& x) {
   return Lanes<N>(
       std::bit_cast<FloatVec<N>>(IntVec<N>(std::bit_cast<IntVec<N>>(x.v) & 0x7fffffff)));
 }
 
 template <int N>
-Lanes<N> sqrt(Lanes<N> x) {
+Lanes<N> sqrt(const Lanes<N>& x) {
   if constexpr (N == 4) {
 #if defined(__SSE2__)
     return Lanes<N>(V(_mm_sqrt_ps(__m128(x.v))));
@@ -154,21 +160,21 @@ Lanes<N> sqrt(Lanes<N> x) {
 
 /// libm lane by lane (the rare paths).
 template <int N, typename F>
-Lanes<N> per_lane(Lanes<N> x, F f) {
+Lanes<N> per_lane(const Lanes<N>& x, F f) {
   Lanes<N> r;
   for (int i = 0; i < N; ++i) r.v[i] = f(x.v[i]);
   return r;
 }
 
 template <int N>
-Lanes<N> acos(Lanes<N> x) {
+Lanes<N> acos(const Lanes<N>& x) {
   return per_lane(x, [](float a) { return std::acos(a); });
 }
 
 /// e^x: x = n·ln 2 + r, |r| ≤ ln2/2, Cephes' expf polynomial, 2^n applied in two halves so that
 /// results near the overflow and underflow thresholds come out as expf's (inf, denormals, 0).
 template <int N>
-Lanes<N> exp(Lanes<N> x) {
+Lanes<N> exp(const Lanes<N>& x) {
   using W = FloatVec<N>;
   using WI = IntVec<N>;
   W a = x.v;
@@ -195,7 +201,7 @@ Lanes<N> exp(Lanes<N> x) {
 /// Natural logarithm for x > 0 (denormals included): Cephes' logf polynomial on the mantissa in
 /// [√½, √2). x ≤ 0, inf and NaN give unspecified finite values or NaN: callers select them away.
 template <int N>
-Lanes<N> log(Lanes<N> x) {
+Lanes<N> log(const Lanes<N>& x) {
   using W = FloatVec<N>;
   using WI = IntVec<N>;
   W a = x.v;
@@ -225,14 +231,14 @@ Lanes<N> log(Lanes<N> x) {
 
 /// x^y for x > 0 as exp(y·log x), like the scalar float path.
 template <int N>
-Lanes<N> pow(Lanes<N> x, Lanes<N> y) {
+Lanes<N> pow(const Lanes<N>& x, const Lanes<N>& y) {
   return exp(y * log(x));
 }
 
 // The Magic Formula's elementary functions (found by ADL from mf_evaluate.hpp).
 /// sin (cosine false) or cos of lanes; lanes beyond the reduction's range go through libm.
 template <int N>
-Lanes<N> sin_or_cos(Lanes<N> y, bool cosine) {
+Lanes<N> sin_or_cos(const Lanes<N>& y, bool cosine) {
   const IntVec<N> turns = IntVec<N>{} + (cosine ? 1 : 0);
   Lanes<N> r(detail::fast::sin_cos_lanes(y.v, turns));
   const Mask<N> out_of_range = !(abs(y) <= Lanes<N>(detail::fast::kTrigMax));
@@ -243,19 +249,19 @@ Lanes<N> sin_or_cos(Lanes<N> y, bool cosine) {
   return r;
 }
 template <int N>
-Lanes<N> mf_sin(Lanes<N> x) {
+Lanes<N> mf_sin(const Lanes<N>& x) {
   return sin_or_cos(x, false);
 }
 template <int N>
-Lanes<N> mf_cos(Lanes<N> x) {
+Lanes<N> mf_cos(const Lanes<N>& x) {
   return sin_or_cos(x, true);
 }
 template <int N>
-Lanes<N> mf_atan(Lanes<N> x) {
+Lanes<N> mf_atan(const Lanes<N>& x) {
   return Lanes<N>(detail::fast::atan_lanes(x.v));
 }
 template <int N>
-Lanes<N> mf_tan(Lanes<N> x) {
+Lanes<N> mf_tan(const Lanes<N>& x) {
   Lanes<N> t(detail::fast::tan_lanes(x.v));
   const Mask<N> out_of_range = !(abs(x) <= Lanes<N>(detail::fast::kTrigMax));
   if (any_lane(out_of_range)) {
@@ -292,15 +298,15 @@ void mf_cores(const detail::Cores<Lanes<N>>& in, Lanes<N> (&out)[detail::kMaxCor
 
 /// cos(atan x) = 1/√(1+x²) (x² = inf gives the limit 0).
 template <int N>
-Lanes<N> cos_atan(Lanes<N> x) {
+Lanes<N> cos_atan(const Lanes<N>& x) {
   return Lanes<N>(1.0f) / sqrt(Lanes<N>(1.0f) + x * x);
 }
 template <int N>
-Lanes<N> mf_exp(Lanes<N> x) {
+Lanes<N> mf_exp(const Lanes<N>& x) {
   return exp(x);
 }
 template <int N>
-Lanes<N> mf_pow(Lanes<N> x, Lanes<N> y) {
+Lanes<N> mf_pow(const Lanes<N>& x, const Lanes<N>& y) {
   return pow(x, y);
 }
 
