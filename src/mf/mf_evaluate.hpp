@@ -107,37 +107,21 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
 
   // Aligning moment: calculateMz0's trail and residual-moment coefficients.
   const MzTrail<T> tr = mz_trail(p, in, b, options, y0);
-  const T r0 = p.unloaded_radius_m;
-  const T fz_mz = tr.fz_mz;
-  const T dfz = b.dfz;
-  const T g = b.gamma_z;
-  const T kya_prime = tr.kya_prime;
-  const T alphar = tr.alphar;
-  const T alphat = tr.alphat;
-  const T dt = tr.dt;
-  const T bt = tr.bt;
-  const T ct = tr.ct;
-  const T et = tr.et;
 
   // calculateMz (combined): the equivalent slip angles and the cores of the trail, Gxa (two) and
   // (MF 6.x) Fy0 at γ = 0 for Fy' (turn slip as in the main evaluation; MFeval evaluates Gyk again
   // at γ = 0 but with the original γ* (its starVar), which is the same Gyk).
   const bool mf5x = is_mf5x(p);
-  T alphar_eq = T(0);
+  MzEquivalentSlip<T> eq{T(0), T(0)};
   CombinedArgs<T> gxa_a{};
   Fy0Result<T> y00{};
   int lane_trail = 0;
   int lane_gxa = 0;
   int lane_fy00 = 0;
   if (options.combined) {
-    const T kk = div_or(kxk, kya_prime, T(0)) * in.kappa;
-    const T tan_r = mf_tan(alphar);
-    const T tan_t = mf_tan(alphat);
-    alphar_eq = mf_atan(hypot_of(tan_r, kk)) * sgn(alphar);
-    const T alphat_eq = mf_atan(hypot_of(tan_t, kk)) * sgn(alphat);
-    const T bta = bt * alphat_eq;
+    eq = mz_equivalent_slip(in, tr, kxk);
     gxa_a = gxa_args(p, in, b, options);
-    lane_trail = cores.add(ct, bta, et, true);
+    lane_trail = cores.add(tr.ct, tr.bt * eq.alphat_eq, tr.et, true);
     lane_gxa = cores.add(gxa_a.c, gxa_a.s0, gxa_a.e, true);
     static_cast<void>(cores.add(gxa_a.c, gxa_a.s1, gxa_a.e, true));
     if (!mf5x) {
@@ -156,42 +140,20 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
                    : fx_pure;
   const T fy = options.combined ? gyk * y0.fy0 + svyk : y0.fy0;
 
-  const MzTurnSlip<T> zeta = mz_turn_slip(p, in, b, options, tr, y0, gyk);
-  const T dpi = b.dpi;
-  const T gs = b.gamma_star_z;
-  const T dr =
-      fz_mz * r0 *
-          ((p.qdz6 + p.qdz7 * dfz) * p.lres * zeta.zeta2 +
-           ((p.qdz8 + p.qdz9 * dfz) * (T(1) + p.ppz2 * dpi) + (p.qdz10 + p.qdz11 * dfz) * abs(gs)) *
-               gs * p.lkzc * zeta.zeta0) *
-          b.lmuy_star * sgn(in.vx) * mf_cos(b.alpha_star) +
-      zeta.zeta8 - T(1);
-  const T br = (p.qbz9 * p.lky / b.lmuy_star + p.qbz10 * y0.by * y0.cy) * zeta.zeta6;
-  const T cr = zeta.zeta7;
-
-  T mz;
-  T t;
-  T mzr;
+  const MzResidual<T> res =
+      mz_residual(p, in, b, tr, y0, mz_turn_slip(p, in, b, options, tr, y0, gyk));
+  MzResult<T> m;
   if (!options.combined) {
-    // Pure slip: calculateMz0's Mz0 = −t0·Fy0(γ = 0, no turn slip) + Mzr0.
-    const T bta = bt * alphat;
-    t = dt * mf_cos(ct * mf_atan(bta - et * (bta - mf_atan(bta)))) * b.cos_alpha_prime;
-    mzr = dr * mf_cos(cr * mf_atan(br * alphar)) * b.cos_alpha_prime;
-    const Fy0Result<T> y00_pure = fy0(p, in, b, options, T(0), false);
-    mz = -t * y00_pure.fy0 + mzr;
+    m = mz_pure(p, in, b, options, tr, res);
   } else {
-    const T s = r0 * (p.ssz1 + p.ssz2 * (fy / p.fnomin_n) + (p.ssz3 + p.ssz4 * dfz) * g) * p.ls;
-    mzr = dr * mf_cos(cr * mf_atan(br * alphar_eq));
-    t = dt * core_out[lane_trail] * b.cos_alpha_prime;
-    t = t * p.lfzo;
-    t = if_else(in.is_low_speed, t * in.reduction_smooth, t);
-    mzr = if_else(in.is_low_speed, mzr * in.reduction_smooth, mzr);
+    T fy_prime;
     if (mf5x) {
-      mz = -t * (fy - svyk) + mzr + s * fx;
+      fy_prime = fy - svyk;
     } else {
       fy0_finish(in, options, core_out[lane_fy00], y00);  // Fy' = Gyk·Fy0(γ = 0)
-      mz = -t * (gyk * y00.fy0) + mzr + s * fx;
+      fy_prime = gyk * y00.fy0;
     }
+    m = mz_combined(p, in, b, tr, res, eq.alphar_eq, core_out[lane_trail], fx, fy, fy_prime);
   }
 
   out.fx_n = fx;
@@ -201,30 +163,21 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
     out.mx_nm = mx(p, in, b, fy);
     out.my_nm = my(p, in, fx);
   }
-  out.mz_nm = mz;
+  out.mz_nm = m.mz;
   out.kappa = in.ukappa_low;
   out.alpha_rad = in.ualpha;
   out.gamma_rad = in.ugamma;
   out.phit_1pm = in.phit;
   out.vx_mps = in.vx;
   out.p_pa = in.p;
-  out.t_m = t;
+  out.t_m = m.t;
   out.mux = mux;
   out.muy = options.use_limits ? abs(y0.muy) : y0.muy;
-  out.mzr_nm = mzr;
+  out.mzr_nm = m.mzr;
   out.kya_nprad = y0.kya;
   out.kxk_n = kxk;
 
-  const auto lifted = !(in.ufz > T(0));  // Fz ≤ 0: no contact, no forces (MFeval: 0 as well)
-  if (any_lane(lifted)) {
-    out.fx_n = if_else(lifted, T(0), out.fx_n);
-    out.fy_n = if_else(lifted, T(0), out.fy_n);
-    out.mx_nm = if_else(lifted, T(0), out.mx_nm);
-    out.my_nm = if_else(lifted, T(0), out.my_nm);
-    out.mz_nm = if_else(lifted, T(0), out.mz_nm);
-    out.t_m = if_else(lifted, T(0), out.t_m);
-    out.mzr_nm = if_else(lifted, T(0), out.mzr_nm);
-  }
+  zero_lifted(out, !(in.ufz > T(0)));  // Fz ≤ 0: no contact
 
   if (options.extras) {
     loaded_radius(p, in, b, out);

@@ -4,10 +4,9 @@
 // pairs), 16 on request where the CPU has AVX-512 (x86-64-v4; the same bits, not faster on every
 // CPU: see mf_evaluate_batch.cpp); 4 (NEON) on aarch64 and plain code elsewhere. For offline work
 // over millions of operating points (`tread mf eval --batch`, sweeps). Each wheel's results are
-// those evaluate_four gives it on the same CPU within 1e-5 of each output's scale, with the same
-// status (about 9 wheels in 10 bit for bit: GCC contracts a few a·b + c into FMAs differently at
-// the wider widths; tests/mf/mf_evaluate_batch_test.cpp), and do not depend on the batch's length
-// or the wheel's place in it (bit for bit).
+// those evaluate_four gives it on the same CPU, bit for bit and with the same status
+// (tests/mf/mf_evaluate_batch_test.cpp), and do not depend on the batch's length or the wheel's
+// place in it (bit for bit).
 
 #include <cstddef>
 #include <span>

@@ -20,8 +20,8 @@
 //     Lanes<16> (64 bytes) is an aggregate copy that GCC sometimes leaves stored to memory after
 //     inlining, and a product that is also stored is not contracted into an FMA: the 16-lane
 //     batch then rounded a few a·b + c differently from the 8- and 4-lane code, depending on how
-//     evaluate() happened to be cut into functions. By reference, 8 and 16 lanes contract the same
-//     expressions (tests/mf/mf_evaluate_batch_test.cpp).
+//     evaluate() happened to be cut into functions. By reference, every width contracts the same
+//     expressions, and the batch gives evaluate_four's bits (tests/mf/mf_evaluate_batch_test.cpp).
 // Not for the ECU's scalar build (Cortex-M4F): there the node evaluates wheel by wheel.
 
 #include <array>

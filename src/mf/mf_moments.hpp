@@ -2,8 +2,9 @@
 // The overturning moment Mx (calculateMx, Besselink's form with QSX12…14) and the rolling
 // resistance moment My (calculateMy: MF 6.x with the camber and pressure terms, MF 5.2 / PAC2002
 // without; MFeval's low-speed reduction).
-// The aligning moment's trail coefficients (calculateMz0's Dt, Bt, Ct, Et); the rest of Mz is
-// assembled in mf_evaluate.hpp.
+// The aligning moment Mz (calculateMz0 in pure slip, calculateMz in combined slip): the trail's
+// coefficients (Dt, Bt, Ct, Et), the residual moment's (Dr, Br, Cr) and the assembly of Mz from the
+// pneumatic trail t, the residual moment Mzr, Fy' and (combined) the arm s of Fx.
 
 #include "mf/mf_detail_common.hpp"
 #include "mf/mf_forces.hpp"
@@ -101,6 +102,84 @@ MzTrail<T> mz_trail(const MfParameters<P>& p, const Prepared<T>& in, const Basic
          (T(1) + (p.qez4 + p.qez5 * gs) * (T(2) / pi<T>()) * mf_atan(bt * ct * alphat));
   if (options.use_limits) et = min_of(et, T(1));
   return {fz_mz, kya_prime, alphar, alphat, dt, bt, ct, et};
+}
+
+/// calculateMz's equivalent slip angles αr,eq and αt,eq: combined slip turns κ into an angle with
+/// Kxκ/Kyα'.
+template <typename T>
+struct MzEquivalentSlip {
+  T alphar_eq, alphat_eq;
+};
+
+template <typename T>
+MzEquivalentSlip<T> mz_equivalent_slip(const Prepared<T>& in, const MzTrail<T>& tr, const T& kxk) {
+  const T kk = div_or(kxk, tr.kya_prime, T(0)) * in.kappa;
+  const T tan_r = mf_tan(tr.alphar);
+  const T tan_t = mf_tan(tr.alphat);
+  const T alphar_eq = mf_atan(hypot_of(tan_r, kk)) * sgn(tr.alphar);
+  const T alphat_eq = mf_atan(hypot_of(tan_t, kk)) * sgn(tr.alphat);
+  return {alphar_eq, alphat_eq};
+}
+
+/// The residual aligning moment's Dr, Br and Cr (calculateMz0), with the turn-slip factors ζ.
+template <typename T>
+struct MzResidual {
+  T dr, br, cr;
+};
+
+template <typename T, typename P>
+MzResidual<T> mz_residual(const MfParameters<P>& p, const Prepared<T>& in, const Basic<T>& b,
+                          const MzTrail<T>& tr, const Fy0Result<T>& y0, const MzTurnSlip<T>& zeta) {
+  const T r0 = p.unloaded_radius_m;
+  const T fz_mz = tr.fz_mz;
+  const T dfz = b.dfz;
+  const T dpi = b.dpi;
+  const T gs = b.gamma_star_z;
+  const T dr =
+      fz_mz * r0 *
+          ((p.qdz6 + p.qdz7 * dfz) * p.lres * zeta.zeta2 +
+           ((p.qdz8 + p.qdz9 * dfz) * (T(1) + p.ppz2 * dpi) + (p.qdz10 + p.qdz11 * dfz) * abs(gs)) *
+               gs * p.lkzc * zeta.zeta0) *
+          b.lmuy_star * sgn(in.vx) * mf_cos(b.alpha_star) +
+      zeta.zeta8 - T(1);
+  const T br = (p.qbz9 * p.lky / b.lmuy_star + p.qbz10 * y0.by * y0.cy) * zeta.zeta6;
+  const T cr = zeta.zeta7;
+  return {dr, br, cr};
+}
+
+/// Mz with its pneumatic trail t and residual moment Mzr.
+template <typename T>
+struct MzResult {
+  T mz, t, mzr;
+};
+
+/// Pure slip: calculateMz0's Mz0 = −t0·Fy0(γ = 0, no turn slip) + Mzr0.
+template <typename T, typename P>
+MzResult<T> mz_pure(const MfParameters<P>& p, const Prepared<T>& in, const Basic<T>& b,
+                    const MfOptions& options, const MzTrail<T>& tr, const MzResidual<T>& r) {
+  const T bta = tr.bt * tr.alphat;
+  const T t =
+      tr.dt * mf_cos(tr.ct * mf_atan(bta - tr.et * (bta - mf_atan(bta)))) * b.cos_alpha_prime;
+  const T mzr = r.dr * mf_cos(r.cr * mf_atan(r.br * tr.alphar)) * b.cos_alpha_prime;
+  const Fy0Result<T> y00_pure = fy0(p, in, b, options, T(0), false);
+  return {-t * y00_pure.fy0 + mzr, t, mzr};
+}
+
+/// Combined slip (calculateMz): Mz = −t·Fy' + Mzr + s·Fx, from the trail's core at αt,eq, the
+/// residual moment at αr,eq, Fy' (MF 5.x: Fy − SVyκ; MF 6.x: Gyκ·Fy0(γ = 0)) and the forces.
+template <typename T, typename P>
+MzResult<T> mz_combined(const MfParameters<P>& p, const Prepared<T>& in, const Basic<T>& b,
+                        const MzTrail<T>& tr, const MzResidual<T>& r, const T& alphar_eq,
+                        const T& trail_core, const T& fx, const T& fy, const T& fy_prime) {
+  const T r0 = p.unloaded_radius_m;
+  const T s =
+      r0 * (p.ssz1 + p.ssz2 * (fy / p.fnomin_n) + (p.ssz3 + p.ssz4 * b.dfz) * b.gamma_z) * p.ls;
+  T mzr = r.dr * mf_cos(r.cr * mf_atan(r.br * alphar_eq));
+  T t = tr.dt * trail_core * b.cos_alpha_prime;
+  t = t * p.lfzo;
+  t = if_else(in.is_low_speed, t * in.reduction_smooth, t);
+  mzr = if_else(in.is_low_speed, mzr * in.reduction_smooth, mzr);
+  return {-t * fy_prime + mzr + s * fx, t, mzr};
 }
 
 }  // namespace tread::mf::detail

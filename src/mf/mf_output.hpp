@@ -82,6 +82,16 @@ MaskOf<T> replace_non_finite(MfOutput<T>& out) {
   return non_finite;
 }
 
+/// A lifted wheel (Fz ≤ 0, where `lifted` is set) has no contact and no forces: its forces and
+/// moments, trail and Mzr become 0 (MFeval gives 0 as well).
+template <typename T, typename M>
+void zero_lifted(MfOutput<T>& out, const M& lifted) {
+  if (!any_lane(lifted)) return;
+  for (T* y : {&out.fx_n, &out.fy_n, &out.mx_nm, &out.my_nm, &out.mz_nm, &out.t_m, &out.mzr_nm}) {
+    *y = if_else(lifted, T(0), *y);
+  }
+}
+
 /// TYRESIDE mirroring, y → −y, where `mirror` is set (per lane for lanes): the lateral inputs
 /// (α, γ, φt) on the way in, the lateral outputs on the way out.
 template <typename T, typename M>
