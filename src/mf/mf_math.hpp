@@ -198,16 +198,19 @@ template <>
 struct VectorOf<4> {
   using F = float __attribute__((vector_size(16)));
   using I = std::int32_t __attribute__((vector_size(16)));
+  using U = std::uint32_t __attribute__((vector_size(16)));
 };
 template <>
 struct VectorOf<8> {
   using F = float __attribute__((vector_size(32)));
   using I = std::int32_t __attribute__((vector_size(32)));
+  using U = std::uint32_t __attribute__((vector_size(32)));
 };
 template <>
 struct VectorOf<16> {
   using F = float __attribute__((vector_size(64)));
   using I = std::int32_t __attribute__((vector_size(64)));
+  using U = std::uint32_t __attribute__((vector_size(64)));
 };
 using F4 = VectorOf<4>::F;
 using I4 = VectorOf<4>::I;
