@@ -118,20 +118,20 @@ __attribute__((flatten)) void evaluate_four_lanes(const MfParameters<float>& par
 
 }  // namespace
 
-int batch_lanes() noexcept {
-#if TREAD_WIDE_LANES
-  return 8;
-#else
-  return 4;
-#endif
-}
-
 bool sixteen_lanes_available() noexcept {
 #if TREAD_WIDE_LANES
   static const bool wide = has_avx512();
   return wide;
 #else
   return false;
+#endif
+}
+
+int batch_lanes() noexcept {
+#if TREAD_WIDE_LANES
+  return sixteen_lanes_available() ? 16 : 8;
+#else
+  return 4;
 #endif
 }
 

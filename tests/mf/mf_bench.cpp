@@ -92,8 +92,8 @@ void bench_batch(benchmark::State& state, int lanes, const char* tir, bool extra
     benchmark::DoNotOptimize(out);
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(kInputs) * state.iterations());
-  state.SetLabel(std::to_string(lanes == 16 && !sixteen_lanes_available() ? batch_lanes() : lanes) +
-                 " lanes");
+  const int ran = batch_lanes() == 4 ? 4 : (lanes == 16 && !sixteen_lanes_available() ? 8 : lanes);
+  state.SetLabel(std::to_string(ran) + " lanes");
 }
 
 constexpr const char* kMf61 = "MagicFormula61_Parameters.tir";
@@ -148,6 +148,9 @@ void BM_Mf61_FloatFour_Combined_Extras(benchmark::State& s) {
 void BM_Mf61_FloatBatch_Combined_Extras(benchmark::State& s) {
   bench_batch(s, batch_lanes(), "MagicFormula61_Parameters.tir", true);
 }
+void BM_Mf61_FloatBatch8_Combined_Extras(benchmark::State& s) {
+  bench_batch(s, 8, "MagicFormula61_Parameters.tir", true);
+}
 void BM_Mf61_FloatBatch16_Combined_Extras(benchmark::State& s) {
   bench_batch(s, 16, "MagicFormula61_Parameters.tir", true);
 }
@@ -155,6 +158,7 @@ void BM_Mf62_FloatBatch_Combined_Extras(benchmark::State& s) {
   bench_batch(s, batch_lanes(), "MagicFormula62_Parameters.tir", true);
 }
 BENCHMARK(BM_Mf61_FloatBatch_Combined_Extras);
+BENCHMARK(BM_Mf61_FloatBatch8_Combined_Extras);
 BENCHMARK(BM_Mf61_FloatBatch16_Combined_Extras);
 BENCHMARK(BM_Mf62_FloatBatch_Combined_Extras);
 BENCHMARK(BM_Mf61_Float_Combined);
