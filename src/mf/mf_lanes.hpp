@@ -159,10 +159,11 @@ Lanes<N> sqrt(const Lanes<N>& x) {
     return r;
 #endif
   } else {
-    // Half by half (correctly rounded either way).
-    auto halves = std::bit_cast<std::array<FloatVec<N / 2>, 2>>(x.v);
-    for (auto& h : halves) h = sqrt(Lanes<N / 2>(h)).v;
-    return Lanes<N>(std::bit_cast<FloatVec<N>>(halves));
+    // Lane by lane in the source: GCC turns the loop into one vsqrtps of the caller's width
+    // (ymm with AVX2, zmm with AVX-512, two xmm on the baseline). Correctly rounded either way.
+    Lanes<N> r;
+    for (int i = 0; i < N; ++i) r.v[i] = std::sqrt(x.v[i]);
+    return r;
   }
 }
 
