@@ -63,8 +63,9 @@ template <int N>
     float row[kOutputFields];
     for (std::size_t f = 0; f < kOutputFields; ++f) row[f] = columns_out[f][i];
     std::memcpy(reinterpret_cast<char*>(&outputs[i]), row, sizeof(row));
-    outputs[i].status = out.status[static_cast<int>(i)];
   }
+  const auto status = out.status.each();
+  for (std::size_t i = 0; i < kWheels; ++i) outputs[i].status = status[i];
 }
 
 template <int N>

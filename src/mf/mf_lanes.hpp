@@ -29,6 +29,7 @@
 #include <cmath>
 #include <concepts>
 #include <cstdint>
+#include <cstring>
 
 #include "mf/mf_math.hpp"
 #include "mf/mf_types.hpp"
@@ -333,6 +334,18 @@ struct LaneStatus {
   Status operator[](int i) const {
     if (non_finite[i]) return Status::non_finite;
     return out_of_range[i] ? Status::out_of_range : Status::ok;
+  }
+  /// Every lane's operator[] at once: selected as a vector, read out through memory.
+  std::array<Status, static_cast<std::size_t>(N)> each() const {
+    using I = IntVec<N>;
+    const I code = non_finite.m ? I{} + static_cast<int>(Status::non_finite)
+                                : (out_of_range.m ? I{} + static_cast<int>(Status::out_of_range)
+                                                  : I{} + static_cast<int>(Status::ok));
+    std::array<std::int32_t, static_cast<std::size_t>(N)> codes;
+    std::memcpy(codes.data(), &code, sizeof(codes));
+    std::array<Status, static_cast<std::size_t>(N)> s;
+    for (std::size_t i = 0; i < s.size(); ++i) s[i] = static_cast<Status>(codes[i]);
+    return s;
   }
 };
 }  // namespace lanes
