@@ -97,8 +97,8 @@ struct Tally {
   int first_line = 0;
 };
 
-// Rows evaluated together by --batch: 16 blocks of 16 lanes (32 of 8), their rows, inputs and outputs
-// (≈ 60 KiB) staying in the core's cache between parsing, evaluating and formatting.
+// Rows evaluated together by --batch: 16 blocks of 16 lanes (32 of 8), their rows, inputs and
+// outputs (≈ 60 KiB) staying in the core's cache between parsing, evaluating and formatting.
 constexpr std::size_t kBatchRows = 256;
 
 // A batch's rows as read, their inputs and their outputs.

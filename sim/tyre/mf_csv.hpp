@@ -37,7 +37,7 @@ namespace tread::tyre {
 
 struct MfCsvOptions {
   bool use_float = false;  ///< evaluate in float (parameters converted once), as on the ECU
-  /// Evaluate in float many rows at once on wide lanes (mf::evaluate_batch: 8 with AVX2): the
+  /// Evaluate in float many rows at once on wide lanes (mf::evaluate_batch: 16 with AVX-512): the
   /// status of use_float and its values within 1e-5 of each column's scale, not bit for bit
   /// (use_float is the ECU's scalar path). Before use_float; use_fixed before it.
   bool use_batch = false;

@@ -30,18 +30,19 @@ static_assert(offsetof(MfOutput<float>, kxk_n) == (kOutputFields - 1) * sizeof(f
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 /// The 16-lane outputs into 16 wheels' rows, 16 fields at a time: a 16 × 16 transpose in AVX-512
 /// registers (unpack, in-lane shuffle, two 128-bit-lane shuffles: 64 instructions) and one
-/// (masked, for the last 13 fields) store per wheel, instead of 29 × 16 scalar moves. Inlined
+/// (masked for the last 13 fields) store per wheel and group, instead of 29 × 16 scalar moves. Inlined
 /// into evaluate_sixteen only (the same target). GCC 12 warns that the _mm512_undefined_ps()
 /// inside its own shuffle intrinsics may be used uninitialized (a known false positive).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-__attribute__((target("arch=x86-64-v4"))) inline void store_rows16(const float* columns,
+__attribute__((target("arch=x86-64-v4"))) inline void store_rows16(const char* lanes,
                                                                    MfOutput<float>* outputs) {
   for (std::size_t first = 0; first < kOutputFields; first += 16) {
     const std::size_t fields = std::min<std::size_t>(16, kOutputFields - first);
     __m512 r[16];
     for (std::size_t f = 0; f < 16; ++f) {
-      r[f] = f < fields ? _mm512_loadu_ps(columns + (first + f) * 16) : _mm512_setzero_ps();
+      r[f] =
+          f < fields ? _mm512_loadu_ps(lanes + (first + f) * sizeof(__m512)) : _mm512_setzero_ps();
     }
     __m512 t[16];
     for (std::size_t k = 0; k < 16; k += 2) {
@@ -84,8 +85,8 @@ template <int N>
   using L = lanes::Lanes<N>;
   static_assert(std::is_standard_layout_v<MfOutput<L>> &&
                 offsetof(MfOutput<L>, status) == kOutputFields * sizeof(L));
-  // Transposed through plain float arrays in memory: element access of a vector held in registers
-  // would be one insert or extract instruction per float.
+  // The inputs (and below 16 lanes the outputs) transposed through plain float arrays in memory:
+  // element access of a vector held in registers would be one insert or extract per float.
   constexpr auto kWheels = static_cast<std::size_t>(N);
   float rows_in[kWheels][kInputFields];
   std::memcpy(rows_in, reinterpret_cast<const char*>(inputs), sizeof(rows_in));
@@ -112,7 +113,7 @@ template <int N>
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
   if constexpr (N == 16) {
     // _mm512_loadu_ps reads through a may_alias type: straight from the lanes.
-    store_rows16(reinterpret_cast<const float*>(&out), outputs);
+    store_rows16(reinterpret_cast<const char*>(&out), outputs);
   } else
 #endif
   {
@@ -161,11 +162,11 @@ __attribute__((flatten, target_clones("arch=x86-64-v3", "default"))) void evalua
     const MfOptions& options, std::span<MfOutput<float>> outputs) {
   evaluate_blocks<8>(params, inputs, options, outputs);
 }
+/// Everything evaluate_sixteen is compiled for (x86-64-v4: AVX-512 F/BW/CD/DQ/VL and all of v3,
+/// BMI2, MOVBE, ... included), not only the AVX-512 flags.
 bool has_avx512() {
   __builtin_cpu_init();
-  return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
-         __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512vl") &&
-         __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  return __builtin_cpu_supports("x86-64-v4");
 }
 #else
 #define TREAD_WIDE_LANES 0

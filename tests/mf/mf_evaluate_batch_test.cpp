@@ -6,7 +6,7 @@
 //     (GCC contracts the same a·b + c into FMAs at every width since the lane operators take their
 //     operands by reference, mf_lanes.hpp; a difference names the first field that differs.)
 //   - A wheel's outputs do not depend on its neighbours, its place in its block or the batch's
-//     length: bit for bit, batches of every length from 0 to 3 blocks.
+//     length: bit for bit, batches of every length from 0 to 3 blocks, at every width the CPU runs.
 //   - 8 and 16 lanes give the same bits; batch_lanes() (16 with AVX-512, else 8 on x86-64) and
 //     sixteen_lanes_available() say what the CPU runs.
 #include <gtest/gtest.h>
@@ -155,31 +155,46 @@ TEST(MfEvaluateBatch, EqualsEvaluateFour) {
 }
 
 TEST(MfEvaluateBatch, EveryLengthAndPlaceInABlock) {
-  for (const char* tyre : {"MagicFormula61_Parameters.tir", "MagicFormula62_Parameters.tir",
-                           "chrono_Sedan_Pac02Tire.tir"}) {
-    const MfParameters<float> p =
-        convert_parameters<float>(tyre::load_mf_parameters(testing::tyre_file(tyre)).params);
-    const MfOptions o = options_from_use_mode(111).value;
-    std::mt19937_64 rng(5);
-    const std::size_t most = static_cast<std::size_t>(3 * batch_lanes());
-    const std::vector<MfInput<float>> all = inputs(rng, most);
-    // Each wheel alone (its block padded with copies of it).
-    std::vector<MfOutput<float>> alone(most);
-    for (std::size_t i = 0; i < most; ++i) {
-      evaluate_batch(p, std::span<const MfInput<float>>(all).subspan(i, 1), o,
-                     std::span<MfOutput<float>>(alone).subspan(i, 1));
-    }
-    for (std::size_t length = 0; length <= most; ++length) {
-      for (std::size_t start = 0; start + length <= most; start += 1 + most / 7) {
-        std::vector<MfOutput<float>> got(length);
-        evaluate_batch(p, std::span<const MfInput<float>>(all).subspan(start, length), o, got);
-        for (std::size_t i = 0; i < length; ++i) {
-          ASSERT_TRUE(same_bits(got[i], alone[start + i]))
-              << tyre << " length " << length << " start " << start << " wheel " << i;
+  for (const int lanes : widths()) {
+    for (const char* tyre : {"MagicFormula61_Parameters.tir", "MagicFormula62_Parameters.tir",
+                             "chrono_Sedan_Pac02Tire.tir"}) {
+      const MfParameters<float> p =
+          convert_parameters<float>(tyre::load_mf_parameters(testing::tyre_file(tyre)).params);
+      const MfOptions o = options_from_use_mode(111).value;
+      std::mt19937_64 rng(5);
+      const auto most = static_cast<std::size_t>(3 * lanes);
+      const std::vector<MfInput<float>> all = inputs(rng, most);
+      // Each wheel alone (its block padded with copies of it).
+      std::vector<MfOutput<float>> alone(most);
+      for (std::size_t i = 0; i < most; ++i) {
+        evaluate_batch_on(lanes, p, std::span<const MfInput<float>>(all).subspan(i, 1), o,
+                          std::span<MfOutput<float>>(alone).subspan(i, 1));
+      }
+      for (std::size_t length = 0; length <= most; ++length) {
+        for (std::size_t start = 0; start + length <= most; start += 1 + most / 7) {
+          std::vector<MfOutput<float>> got(length);
+          evaluate_batch_on(lanes, p, std::span<const MfInput<float>>(all).subspan(start, length),
+                            o, got);
+          for (std::size_t i = 0; i < length; ++i) {
+            ASSERT_TRUE(same_bits(got[i], alone[start + i]))
+                << tyre << " lanes " << lanes << " length " << length << " start " << start
+                << " wheel " << i;
+          }
         }
       }
     }
   }
+  // evaluate_batch is evaluate_batch_on(batch_lanes(), …).
+  const MfParameters<float> p = convert_parameters<float>(
+      tyre::load_mf_parameters(testing::tyre_file("MagicFormula61_Parameters.tir")).params);
+  std::mt19937_64 rng(9);
+  const std::vector<MfInput<float>> in = inputs(rng, 37);
+  const MfOptions o = options_from_use_mode(111).value;
+  std::vector<MfOutput<float>> a(in.size());
+  std::vector<MfOutput<float>> b(in.size());
+  evaluate_batch(p, in, o, a);
+  evaluate_batch_on(batch_lanes(), p, in, o, b);
+  for (std::size_t i = 0; i < in.size(); ++i) ASSERT_TRUE(same_bits(a[i], b[i])) << i;
 }
 
 TEST(MfEvaluateBatch, SixteenLanesEqualEightBitForBit) {
@@ -206,9 +221,7 @@ TEST(MfEvaluateBatch, SixteenLanesEqualEightBitForBit) {
 TEST(MfEvaluateBatch, LanesForThisCpu) {
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
   __builtin_cpu_init();
-  const bool v4 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
-                  __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512vl") &&
-                  __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  const bool v4 = __builtin_cpu_supports("x86-64-v4");
   EXPECT_EQ(sixteen_lanes_available(), v4);
   EXPECT_EQ(batch_lanes(), v4 ? 16 : 8);
 #else
