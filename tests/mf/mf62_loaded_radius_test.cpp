@@ -257,6 +257,13 @@ MfInput<T> input_at(const MfParameters<double>& p, const EnvelopePoint& e) {
   return in;
 }
 
+/// An envelope point as loaded_radius62 sees it in float, for the four-lane check.
+struct LanePoint {
+  float gamma, omega, romega, dpi, fx, fy, fz_target;
+  double expected;  // the least-deflection root (double)
+  bool use_limits;
+};
+
 TEST(Mf62LoadedRadius, NewtonConvergesWithinItsBudgetOverTheEnvelope) {
   const std::vector<std::string> tyres = fz62_path_tyres();
   ASSERT_GE(tyres.size(), 4U);  // MF 6.2, MF 5.2 and the PAC2002 files
@@ -269,6 +276,7 @@ TEST(Mf62LoadedRadius, NewtonConvergesWithinItsBudgetOverTheEnvelope) {
       std::array<int, 17> steps_float{};
       double worst_double = 0.0;
       double worst_float = 0.0;
+      std::vector<LanePoint> lane_points;
       for (const EnvelopePoint& e : envelope(p)) {
         MfOutput<double> out = evaluate(p, input_at<double>(p, e), o);
         const double dpi = (out.p_pa - p.nompres_pa) / p.nompres_pa;  // P_Pa: limited
@@ -311,6 +319,9 @@ TEST(Mf62LoadedRadius, NewtonConvergesWithinItsBudgetOverTheEnvelope) {
                                outf.fx_n, outf.fy_n),
             static_cast<float>(fz_target));
         ++steps_float[solvedf.fallback ? 0 : static_cast<std::size_t>(solvedf.newton_steps)];
+        lane_points.push_back({static_cast<float>(gamma), outf.omega_radps, romegaf, dpif,
+                               outf.fx_n, outf.fy_n, static_cast<float>(fz_target), expected,
+                               o.use_limits});
         if (o.use_limits) {
           // Within the model's limits: no lane ever needs the fallback, and float lands on the
           // same root (its Fx, Fy differ by ~1e-4 relative).
@@ -320,6 +331,40 @@ TEST(Mf62LoadedRadius, NewtonConvergesWithinItsBudgetOverTheEnvelope) {
           worst_float = std::max(worst_float, std::fabs(double(outf.rl_m) - expected));
         }
       }
+      // Four lanes (their own start: corrected by Fcy's factor), neighbouring envelope points side
+      // by side: each lane lands on the root as float does, and within the limits no group needs
+      // the fallback.
+      std::array<int, 17> steps_lanes{};
+      double worst_lanes = 0.0;
+      for (std::size_t g = 0; g + 4 <= lane_points.size(); g += 4) {
+        lanes::F4 v[7];
+        bool limited = true;
+        for (std::size_t k = 0; k < 4; ++k) {
+          const LanePoint& l = lane_points[g + k];
+          const float fields[7] = {l.gamma, l.omega, l.romega, l.dpi, l.fx, l.fy, l.fz_target};
+          for (int f = 0; f < 7; ++f) v[f].v[k] = fields[f];
+          limited = limited && l.use_limits;
+        }
+        const auto solved4 = detail::loaded_radius62(
+            detail::fz62_curve(pf, v[0], v[1], v[2], v[3], v[4], v[5]), v[6]);
+        ++steps_lanes[solved4.fallback ? 0 : static_cast<std::size_t>(solved4.newton_steps)];
+        if (!limited) continue;
+        EXPECT_FALSE(solved4.fallback) << name << " group " << g;
+        for (std::size_t k = 0; k < 4; ++k) {
+          const double err = std::fabs(static_cast<double>(solved4.rl_m[static_cast<int>(k)]) -
+                                       lane_points[g + k].expected);
+          EXPECT_LT(err, 2e-5) << name << " group " << g << " lane " << k;
+          worst_lanes = std::max(worst_lanes, err);
+        }
+      }
+      std::string lanes_histogram;
+      for (std::size_t k = 0; k < steps_lanes.size(); ++k) {
+        if (steps_lanes[k] == 0) continue;
+        lanes_histogram += " " + (k == 0 ? std::string("fallback") : std::to_string(k)) + ":" +
+                           std::to_string(steps_lanes[k]);
+      }
+      std::printf("%s mode %d: groups of four by Newton steps%s; |Rl - reference| %.1e m\n",
+                  name.c_str(), mode, lanes_histogram.c_str(), worst_lanes);
       std::string histogram;
       for (std::size_t k = 0; k < steps_double.size(); ++k) {
         if (steps_double[k] + steps_float[k] == 0) continue;
