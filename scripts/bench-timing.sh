@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Timing benchmark of the node (not pass/fail: these machines are shared and noisy). In one run, on
-# the same machine and the same CPU:
-#   1. cyclictest: SCHED_FIFO 80, mlockall, 1 kHz, pinned to the last CPU: the machine's own wake-up
-#      latency, the yardstick for everything below;
+# Timing benchmark of the node (not pass/fail: these machines are shared and noisy). On the same
+# machine and the same CPU:
+#   1. cyclictest alone: SCHED_FIFO 80, mlockall, 1 kHz, pinned to the last CPU: the machine's own
+#      wake-up latency when nothing else runs there;
 #   2. the node as it runs on a rig (`tread demo`, real clock): its own thread on that CPU,
 #      SCHED_FIFO 80, mlockall with a prefaulted stack and heap, no I/O on its thread; the rig and
 #      its answer checker on another thread, on another CPU at SCHED_FIFO 70, over the lock-free
@@ -11,8 +11,13 @@
 #   3. the same in sync mode: the node sleeps until the rig's cycle frame and answers it;
 #      CAN-in -> CAN-out latency (the rig's cycle frame to the node's last answer frame);
 #   4. the cycle's compute time from Google Benchmark.
-# Then the figures against the goals of issue 17 (node wake p99 <= 1.2 x cyclictest p99; no overrun
-# when cyclictest stays below the period; CAN-in -> CAN-out p99 <= cyclictest p99 + 30 us).
+# During 2 and 3 a second cyclictest runs on the node's CPU at the same time, one priority above
+# the node, at 1 kHz half a period away from the node's deadlines (those lie on whole milliseconds
+# of CLOCK_MONOTONIC, cyclictest's on whole seconds + 500 us + k ms: --secaligned 500), so neither
+# delays the other: this machine's latency in the very seconds the node ran. A VM's stalls come and go; a yardstick measured in other seconds (1) can miss the stall the
+# node met, or meet one the node did not. The goals of issue 17 (node wake p99 <= 1.2 x cyclictest
+# p99; no overrun when cyclictest stays below the period; CAN-in -> CAN-out p99 <= cyclictest p99
+# + 30 us) are judged against the concurrent cyclictest.
 # Usage: scripts/bench-timing.sh [SECONDS]   (default 10 s each)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -23,24 +28,41 @@ cmake --build --preset host --target tread node_cycle_bench >/dev/null
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-echo "== cyclictest: SCHED_FIFO 80, mlockall, 1 kHz, CPU $cpu, ${seconds} s =="
-if ! cyclictest -m -p 80 -i 1000 -a "$cpu" -t 1 -l $((seconds * 1000)) -q -h 20000 \
-  >"$work/hist" 2>&1; then
-  echo "cyclictest failed (needs root for SCHED_FIFO):"
-  cat "$work/hist"
-fi
-awk '
+# cyclictest's histogram (-h) -> "p50 .. us, p99 .. us, max .. us (n samples)".
+summarize() {
+  awk -v label="$2" '
   /^[0-9]+ +[0-9]+/ { us = $1 + 0; n = $2 + 0; count[us] = n; total += n; if (us > maxus && n > 0) maxus = us }
   /# Max Latencies/ { max = $4 + 0 }
   END {
-    if (total == 0) { print "no histogram"; exit }
+    if (total == 0) { print label " no histogram"; exit }
     split("0.5 0.99", qs, " ")
     for (k = 1; k <= 2; k++) {
       target = qs[k] * total; seen = 0
       for (us = 0; us <= maxus; us++) { seen += count[us]; if (seen >= target) { p[k] = us; break } }
     }
-    printf "cyclictest wake latency  p50 %d us, p99 %d us, max %d us  (%d samples)\n", p[1], p[2], max, total
-  }' "$work/hist" | tee "$work/cyclictest"
+    printf "%s  p50 %d us, p99 %d us, max %d us  (%d samples)\n", label, p[1], p[2], max, total
+  }' "$1"
+}
+echo "== cyclictest alone: SCHED_FIFO 80, mlockall, 1 kHz, CPU $cpu, ${seconds} s =="
+if ! cyclictest -m -p 80 -i 1000 -a "$cpu" -t 1 -l $((seconds * 1000)) -q -h 20000 \
+  >"$work/hist" 2>&1; then
+  echo "cyclictest failed (needs root for SCHED_FIFO):"
+  cat "$work/hist"
+fi
+summarize "$work/hist" "cyclictest wake latency" | tee "$work/cyclictest"
+
+# cyclictest beside the node: same CPU, priority 81, 1 kHz half a period after the node's
+# deadlines, until stopped (SIGINT: it prints its histogram and exits).
+beside_start() {
+  cyclictest -m -p 81 -i 1000 --secaligned 500 -a "$cpu" -t 1 -q -h 20000 >"$work/beside_$1" 2>&1 &
+  beside_pid=$!
+  sleep 0.2
+}
+beside_stop() {
+  kill -INT "$beside_pid" 2>/dev/null || true
+  wait "$beside_pid" 2>/dev/null || true
+  summarize "$work/beside_$1" "cyclictest beside the node" | tee "$work/cyclictest_$1"
+}
 
 demo() {
   build/host/sim/tread demo --scenario sweep --sweep-duration-s "$seconds" --rt-priority 80 --mlock \
@@ -49,11 +71,15 @@ demo() {
 echo
 echo "== tread node, periodic: own thread on CPU $cpu, SCHED_FIFO 80, mlockall; rig on another CPU" \
   "at 70; 4 tyres + 2 wheelsets, ${seconds} s =="
+beside_start periodic
 demo --mode periodic | grep -E "^(cycles|overruns|wake latency|cycle time|deadline|late inputs|rig frames|scheduler|mlockall|affinity|stack|rig thread)|refused" |
   tee "$work/periodic"
+beside_stop periodic
 echo
 echo "== tread node, sync: woken by the rig's cycle frame, ${seconds} s =="
+beside_start sync
 demo --mode sync | grep -E "^(cycles|cycle time|CAN-in|rig frames)|refused" | tee "$work/sync"
+beside_stop sync
 
 echo
 echo "== against the goals (issue 17, part 1) =="
@@ -63,19 +89,24 @@ d = pathlib.Path(sys.argv[1])
 def fig(text, label):
     m = re.search(label + r".*?p50 (\d+) us, p99 (\d+) us, max ([\d.]+) us", text)
     return tuple(float(x) for x in m.groups()) if m else None
-cyc = fig((d / "cyclictest").read_text(), "cyclictest wake latency")
+alone = fig((d / "cyclictest").read_text(), "cyclictest wake latency")
+cyc = fig((d / "cyclictest_periodic").read_text(), "cyclictest beside the node")
+cyc_sync = fig((d / "cyclictest_sync").read_text(), "cyclictest beside the node")
 per = (d / "periodic").read_text()
 syn = (d / "sync").read_text()
 wake = fig(per, "wake latency")
 can = fig(syn, "CAN-in -> CAN-out")
 over = re.search(r"^overruns\s+(\d+)", per, re.M)
-if not (cyc and wake and can and over):
+if not (cyc and cyc_sync and wake and can and over):
     print("figures missing (see above)")
     sys.exit(0)
+if alone:
+    print(f"cyclictest alone p99 {alone[1]:.0f} us, beside the periodic node {cyc[1]:.0f} us, "
+          f"beside the sync node {cyc_sync[1]:.0f} us")
 ratio = wake[1] / max(cyc[1], 1)
-print(f"node wake p99 {wake[1]:.0f} us vs cyclictest p99 {cyc[1]:.0f} us: x{ratio:.2f} (goal <= 1.2)")
-print(f"overruns {over.group(1)} (goal 0 when cyclictest's max {cyc[2]:.0f} us stays below the period of 1000 us)")
-print(f"CAN-in -> CAN-out p99 {can[1]:.0f} us = cyclictest p99 + {can[1] - cyc[1]:.0f} us (goal <= + 30 us)")
+print(f"node wake p99 {wake[1]:.0f} us vs cyclictest p99 {cyc[1]:.0f} us (same seconds): x{ratio:.2f} (goal <= 1.2)")
+print(f"overruns {over.group(1)} (goal 0 when cyclictest's max {cyc[2]:.0f} us, same seconds, stays below the period of 1000 us)")
+print(f"CAN-in -> CAN-out p99 {can[1]:.0f} us = cyclictest p99 {cyc_sync[1]:.0f} us + {can[1] - cyc_sync[1]:.0f} us (goal <= + 30 us)")
 EOF
 
 echo

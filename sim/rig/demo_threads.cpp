@@ -137,7 +137,10 @@ DemoResult run_threads(const DemoSettings& s, NodeRuntime& runtime, NodeBus& nod
   std::cerr << node_rt.messages << std::flush;
   const hal::RealtimeReport rig_rt = hal::apply_realtime(rig_request(s));
   hal::PosixClock clock;
-  const std::int64_t t0 = clock.now_ns() + kStartDelayNs;
+  // The node's deadlines on the clock's grid of periods (whole milliseconds at 1 kHz), so that a
+  // yardstick run beside it (scripts/bench-timing.sh: cyclictest --secaligned 500) wakes half a
+  // period away from the node instead of at a random phase that may sit on its deadlines.
+  const std::int64_t t0 = ((clock.now_ns() + kStartDelayNs) / period_ns + 1) * period_ns;
   first_deadline_ns.store(t0, std::memory_order_release);
 
   std::uint32_t rig_cycle = 0;
