@@ -104,7 +104,7 @@ Fz62Curve<T, P> fz62_curve(const MfParameters<P>& p, const T& gamma, const T& om
   c.fys1_g = p.q_fys1 * gamma;
   c.fys2_g = p.q_fys2 * gamma;
   c.fys3_g = p.q_fys3 * gamma;
-  const T fcx = p.q_fcx * fx / c.fz0;
+  const T fcx = fx * T(p.q_fcx / fz0);
   c.base = T(1) + T(p.q_v2 * (r0 / p.longvl_mps)) * abs(omega) - fcx * fcx;
   c.pressure = T(1) + p.pfz1 * dpi;
   c.fcy_per_force = T(P(p.q_fcy) / fz0);
@@ -163,6 +163,16 @@ template <typename T, typename P>
 [[gnu::always_inline]] inline T fz62_pow(const Fz62Curve<T, P>& c, const T& x, Fz62PowMemo<T>& memo,
                                          T& derivative) {
   constexpr bool coarse = std::is_same_v<T, float> || is_lanes<T> || is_fixed_point<T>;
+  if (!any_lane(memo.base > T(0))) {
+    // No base yet in any lane (the first step, as a rule): pow alone, without the series.
+    const T exact = T(pow(x, T(c.q_fcy2)));
+    const T inv_x = T(1) / x;
+    memo.base = x;
+    memo.inv_base = inv_x;
+    memo.value = exact;
+    derivative = c.pow_c1 * exact * inv_x;
+    return exact;
+  }
   const T delta = x * memo.inv_base - T(1);
   const T d = abs(delta);
   const T d3 = d * d * d;
