@@ -245,7 +245,7 @@ Lanes<N> pow(const Lanes<N>& x, const Lanes<N>& y) {
   return exp(y * log(x));
 }
 
-/// x^q to about 2e-3 relative for |q| ≤ 3 (x clamped to [1e-30, 1e30], NaN to 1e-30): log2 x from
+/// x^q to 1e-3·|q| + 2e-4 relative (x clamped to [1e-30, 1e30], NaN to 1e-30): log2 x from
 /// the exponent bits and a cubic in the mantissa (|error| ≤ 1.4e-3), 2^y from a cubic on [−½, ½]
 /// (relative error ≤ 1.9e-4) moved into the exponent bits. A few instructions where pow costs
 /// tens: the start of an iteration, never a result.

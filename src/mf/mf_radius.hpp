@@ -122,7 +122,9 @@ Fz62Curve<T, P> fz62_curve(const MfParameters<P>& p, const T& gamma, const T& om
   c.pow_c4 = c4;
   c.pow_c5 = c5;
   c.pow_c6 = c6;
-  c.pow_c7_abs = T(c7 < P(0) ? -c7 : c7);
+  // At least 1e-3: at a whole Q_FCY2 C(q,7) is 0 and the series exact in value, but not its
+  // derivative with respect to Q_FCY2 (a fit's Jet), whose truncation this keeps below ε/2e-3.
+  c.pow_c7_abs = T(max_of(c7 < P(0) ? -c7 : c7, P(1e-3)));
   c.pow_d2 = T(P(2) * c2);
   c.pow_d3 = T(P(3) * c3);
   c.pow_d4 = T(P(4) * c4);
@@ -157,8 +159,8 @@ struct Fz62PowMemo {
 };
 
 /// x^q and its derivative q·x^(q−1) from the memo's base b: (b·(1 + δ))^q = b^q·(1 + C(q,1)δ
-/// + … + C(q,6)δ⁶) where the remainder |C(q,7)|·|δ|⁷ is below half of ε (|δ| < ¼), else pow, which
-/// becomes the new base.
+/// + … + C(q,6)δ⁶) where the remainder max(|C(q,7)|, 1e-3)·|δ|⁷ is below half of ε (|δ| < ¼), else
+/// pow, which becomes the new base.
 template <typename T, typename P>
 [[gnu::always_inline]] inline T fz62_pow(const Fz62Curve<T, P>& c, const T& x, Fz62PowMemo<T>& memo,
                                          T& derivative) {
