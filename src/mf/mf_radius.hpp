@@ -165,31 +165,25 @@ template <typename T, typename P>
 [[gnu::always_inline]] inline T fz62_pow(const Fz62Curve<T, P>& c, const T& x, Fz62PowMemo<T>& memo,
                                          T& derivative) {
   constexpr bool coarse = std::is_same_v<T, float> || is_lanes<T> || is_fixed_point<T>;
-  if (!any_lane(memo.base > T(0))) {
-    // No base yet in any lane (the first step, as a rule): pow alone, without the series.
-    const T exact = T(pow(x, T(c.q_fcy2)));
-    const T inv_x = T(1) / x;
-    memo.base = x;
-    memo.inv_base = inv_x;
-    memo.value = exact;
-    derivative = c.pow_c1 * exact * inv_x;
-    return exact;
+  // Without a base in any lane (the first step, as a rule) pow alone, without the series.
+  auto near = memo.base > T(0);
+  T series = T(0);
+  if (any_lane(near)) {
+    const T delta = x * memo.inv_base - T(1);
+    const T d = abs(delta);
+    const T d3 = d * d * d;
+    near = near && d < T(0.25) && c.pow_c7_abs * (d3 * d3 * d) < T(coarse ? 6e-8 : 1.1e-16);
+    // Estrin's scheme: three independent pairs, then δ² and δ⁴ (a shorter chain than Horner's).
+    const T delta2 = delta * delta;
+    const T s12 = c.pow_c1 + delta * c.pow_c2;
+    const T s34 = c.pow_c3 + delta * c.pow_c4;
+    const T s56 = c.pow_c5 + delta * c.pow_c6;
+    series = memo.value * (T(1) + delta * (s12 + delta2 * (s34 + delta2 * s56)));
+    const T d12 = c.pow_c1 + delta * c.pow_d2;
+    const T d34 = c.pow_d3 + delta * c.pow_d4;
+    const T d56 = c.pow_d5 + delta * c.pow_d6;
+    derivative = memo.value * memo.inv_base * (d12 + delta2 * (d34 + delta2 * d56));
   }
-  const T delta = x * memo.inv_base - T(1);
-  const T d = abs(delta);
-  const T d3 = d * d * d;
-  const auto near =
-      memo.base > T(0) && d < T(0.25) && c.pow_c7_abs * (d3 * d3 * d) < T(coarse ? 6e-8 : 1.1e-16);
-  // Estrin's scheme: three independent pairs, then δ² and δ⁴ (a shorter chain than Horner's).
-  const T delta2 = delta * delta;
-  const T s12 = c.pow_c1 + delta * c.pow_c2;
-  const T s34 = c.pow_c3 + delta * c.pow_c4;
-  const T s56 = c.pow_c5 + delta * c.pow_c6;
-  const T series = memo.value * (T(1) + delta * (s12 + delta2 * (s34 + delta2 * s56)));
-  const T d12 = c.pow_c1 + delta * c.pow_d2;
-  const T d34 = c.pow_d3 + delta * c.pow_d4;
-  const T d56 = c.pow_d5 + delta * c.pow_d6;
-  derivative = memo.value * memo.inv_base * (d12 + delta2 * (d34 + delta2 * d56));
   const auto far = !near;
   if (!any_lane(far)) return series;
   const T exact = T(pow(x, T(c.q_fcy2)));
