@@ -256,9 +256,10 @@ struct LoadedRadius62 {
 /// - Start: the MF 6.1-style deflection (the quadratic in ρ/R0 with the Rl-independent
 ///   corrections) less the camber's deflection at Romega. On lanes, where the slowest lane sets
 ///   the number of steps, the quadratic is solved once more with Fcy's factor (ρz/R0)^Q_FCY2
-///   (pow_estimate, ~2e-3) and Sfyg at the first solution, kept within [0.7, 1.5] of it: on the
-///   benchmark's points this takes the groups of four needing 3 steps from 75 % to 13 %. The
-///   scalar paths do without it: there it costs about as much as the step it saves (measured).
+///   (pow_estimate, within 1e-3·|Q_FCY2| + 2e-4) and Sfyg at the first solution, kept within
+///   [0.7, 1.5] of it: on the benchmark's points this takes the groups of four needing 3 steps
+///   from 75 % to 13 %. The scalar paths do without it: there it costs about as much as the step
+///   it saves (measured).
 /// - A step is Newton's where it lands inside the bracket and the slope is negative, else the
 ///   bracket's midpoint (or its far end, not yet evaluated). Converged when a Newton step is at
 ///   most R0·ε^(3/4), ε of the output type: the error after it is of order the step² times
