@@ -55,6 +55,7 @@ void rolling_radius(const MfParameters<P>& p, Prepared<T>& in) {
 template <typename T, typename P>
 struct Fz62Curve {
   P q_fcy2;
+  P pow_q;  // 2·Q_FCY2: Fcy² takes (ρz/R0)^(2·Q_FCY2)
   T r0, fz0, romega, width, inv_r0, inv_romega;
   T q_fz1, q_fz2;
   T q_cam1, q_cam2;
@@ -64,11 +65,14 @@ struct Fz62Curve {
   T fys1_g, fys2_g, fys3_g;  // Q_FYS1…3·γ
   T base;                    // 1 + Q_V2·(R0/V0)·|ω| − (Q_FCX·Fx/Fz0)²
   T pressure;                // 1 + PFZ1·dpi
+  T stiffness_scale;         // (1 + PFZ1·dpi)·Fz0
   T fcy_per_force;           // Q_FCY / Fz0
   T fy;
-  T pow_c1, pow_c2, pow_c3, pow_c4, pow_c5, pow_c6;  // binomial coefficients C(Q_FCY2, k)
-  T pow_c7_abs;                                      // |C(Q_FCY2, 7)|: the series' remainder
-  T pow_d2, pow_d3, pow_d4, pow_d5, pow_d6;          // k·C(Q_FCY2, k): the series' derivative
+  // Fcy² = (ρz/R0)^(2·Q_FCY2)·(Q_FCY·(Fy − Sfyg)/Fz0)²: the power's binomial series in q = 2·Q_FCY2.
+  T pow_c1, pow_c2, pow_c3, pow_c4, pow_c5, pow_c6;  // binomial coefficients C(q, k)
+  T pow_c7_abs;                                      // |C(q, 7)|: the series' remainder
+  T pow_d2, pow_d3, pow_d4, pow_d5, pow_d6;          // k·C(q, k): the series' derivative
+  T pow_e2, pow_e3, pow_e4;  // k·(k − 1)·C(q, k): its second derivative (to δ², for Halley)
 };
 
 template <typename T, typename P>
@@ -80,6 +84,7 @@ Fz62Curve<T, P> fz62_curve(const MfParameters<P>& p, const T& gamma, const T& om
   const P r0 = p.unloaded_radius_m;
   const P fz0 = p.fnomin_n;
   c.q_fcy2 = p.q_fcy2;
+  c.pow_q = P(2) * p.q_fcy2;
   c.r0 = r0;
   c.fz0 = fz0;
   c.romega = romega;
@@ -107,9 +112,10 @@ Fz62Curve<T, P> fz62_curve(const MfParameters<P>& p, const T& gamma, const T& om
   const T fcx = fx * T(p.q_fcx / fz0);
   c.base = T(1) + T(p.q_v2 * (r0 / p.longvl_mps)) * abs(omega) - fcx * fcx;
   c.pressure = T(1) + p.pfz1 * dpi;
+  c.stiffness_scale = c.pressure * fz0;
   c.fcy_per_force = T(P(p.q_fcy) / fz0);
   c.fy = fy;
-  const P q = p.q_fcy2;
+  const P q = c.pow_q;
   const P c2 = q * (q - P(1)) / P(2);
   const P c3 = c2 * (q - P(2)) / P(3);
   const P c4 = c3 * (q - P(3)) / P(4);
@@ -122,7 +128,7 @@ Fz62Curve<T, P> fz62_curve(const MfParameters<P>& p, const T& gamma, const T& om
   c.pow_c4 = c4;
   c.pow_c5 = c5;
   c.pow_c6 = c6;
-  // At least 1e-3: at a whole Q_FCY2 C(q,7) is 0 and the series exact in value, but not its
+  // At least 1e-3: at a whole q C(q,7) is 0 and the series exact in value, but not its
   // derivative with respect to Q_FCY2 (a fit's Jet), whose truncation this keeps below ε/2e-3.
   c.pow_c7_abs = T(max_of(c7 < P(0) ? -c7 : c7, P(1e-3)));
   c.pow_d2 = T(P(2) * c2);
@@ -130,25 +136,38 @@ Fz62Curve<T, P> fz62_curve(const MfParameters<P>& p, const T& gamma, const T& om
   c.pow_d4 = T(P(4) * c4);
   c.pow_d5 = T(P(5) * c5);
   c.pow_d6 = T(P(6) * c6);
+  c.pow_e2 = T(P(2) * c2);
+  c.pow_e3 = T(P(6) * c3);
+  c.pow_e4 = T(P(12) * c4);
   return c;
 }
 
-/// The deflection ρz at a loaded radius: free-rolling ρ plus the camber part; its slope dρz/dRl.
+/// The deflection ρz at a loaded radius: free-rolling ρ plus the camber part; its slope dρz/dRl
+/// and curvature d²ρz/dRl².
 template <typename T, typename P>
-[[gnu::always_inline]] inline T fz62_deflection(const Fz62Curve<T, P>& c, const T& rl, T& slope) {
+[[gnu::always_inline]] inline T fz62_deflection(const Fz62Curve<T, P>& c, const T& rl, T& slope,
+                                                T& curvature) {
   const auto compressed = rl < c.romega;
   const T rho_zfr = max_of(c.romega - rl, T(0));
   const T cam = c.q_cam1 * rl + c.q_cam2 * rl * rl;
+  const T dcam = c.q_cam1 + T(2) * c.q_cam2 * rl;
   const T camber = c.camber_scale * cam;
   const T rho_z = rho_zfr * c.free_share + camber * cam;
-  const T drho_z =
-      T(2) * camber * (c.q_cam1 + T(2) * c.q_cam2 * rl) - if_else(compressed, c.free_share, T(0));
+  const T drho_z = T(2) * camber * dcam - if_else(compressed, c.free_share, T(0));
+  const T d2rho_z = T(2) * c.camber_scale * (dcam * dcam + T(2) * c.q_cam2 * cam);
   const auto positive = rho_z > T(0);
   slope = if_else(positive, drho_z, T(0));
+  curvature = if_else(positive, d2rho_z, T(0));
   return if_else(positive, rho_z, T(0));
 }
 
-/// (ρz/R0)^Q_FCY2 at the last point where it was computed exactly: the Newton steps near a root
+template <typename T, typename P>
+[[gnu::always_inline]] inline T fz62_deflection(const Fz62Curve<T, P>& c, const T& rl, T& slope) {
+  T curvature = T(0);
+  return fz62_deflection(c, rl, slope, curvature);
+}
+
+/// (ρz/R0)^(2·Q_FCY2) at the last point where it was computed exactly: the steps near a root
 /// move ρz by little, and a Taylor series about that point is exact to the output's resolution
 /// there at a fraction of pow's cost.
 template <typename T>
@@ -158,12 +177,13 @@ struct Fz62PowMemo {
   T value = T(0);
 };
 
-/// x^q and its derivative q·x^(q−1) from the memo's base b: (b·(1 + δ))^q = b^q·(1 + C(q,1)δ
+/// x^q and its first two derivatives from the memo's base b: (b·(1 + δ))^q = b^q·(1 + C(q,1)δ
 /// + … + C(q,6)δ⁶) where the remainder max(|C(q,7)|, 1e-3)·|δ|⁷ is below half of ε (|δ| < ¼), else
-/// pow, which becomes the new base.
+/// pow, which becomes the new base. The second derivative serves Halley's step only, which needs
+/// it to a few per cent: its series stops at δ².
 template <typename T, typename P>
 [[gnu::always_inline]] inline T fz62_pow(const Fz62Curve<T, P>& c, const T& x, Fz62PowMemo<T>& memo,
-                                         T& derivative) {
+                                         T& derivative, T& second) {
   constexpr bool coarse = std::is_same_v<T, float> || is_lanes<T> || is_fixed_point<T>;
   // Without a base in any lane (the first step, as a rule) pow alone, without the series.
   auto near = memo.base > T(0);
@@ -182,48 +202,80 @@ template <typename T, typename P>
     const T d12 = c.pow_c1 + delta * c.pow_d2;
     const T d34 = c.pow_d3 + delta * c.pow_d4;
     const T d56 = c.pow_d5 + delta * c.pow_d6;
-    derivative = memo.value * memo.inv_base * (d12 + delta2 * (d34 + delta2 * d56));
+    const T scale = memo.value * memo.inv_base;
+    derivative = scale * (d12 + delta2 * (d34 + delta2 * d56));
+    second = scale * memo.inv_base * (c.pow_e2 + delta * c.pow_e3 + delta2 * c.pow_e4);
   }
   const auto far = !near;
   if (!any_lane(far)) return series;
-  const T exact = T(pow(x, T(c.q_fcy2)));
+  const T exact = T(pow(x, T(c.pow_q)));
   const T inv_x = T(1) / x;
   memo.base = if_else(far, x, memo.base);
   memo.inv_base = if_else(far, inv_x, memo.inv_base);
   memo.value = if_else(far, exact, memo.value);
-  derivative = if_else(far, c.pow_c1 * exact * inv_x, derivative);
+  const T exact_derivative = c.pow_c1 * exact * inv_x;
+  derivative = if_else(far, exact_derivative, derivative);
+  second = if_else(far, T(c.pow_q - P(1)) * exact_derivative * inv_x, second);
   return if_else(far, exact, series);
 }
 
-/// Fz62(Rl) and its slope dFz62/dRl; writes the deflection ρz.
+/// Fz62 − Fz at a loaded radius with its first two derivatives, and the deflection ρz there with
+/// its.
+template <typename T>
+struct Fz62Value {
+  T excess, slope, curvature;  // Fz62(Rl) − Fz, dFz62/dRl, d²Fz62/dRl²
+  T rho_z, drho_z, d2rho_z;
+};
+
+/// Fz62(Rl) − Fz and its derivatives (the second is dead code where the caller does not use it).
+/// Fz62 = (base − Fcy²)·S with S = (1 + PFZ1·dpi)·Fz0·(Q_FZ1 + Q_FZ2·x)·x, x = ρz/R0, and
+/// Fcy² = x^(2·Q_FCY2)·L², L = Q_FCY·(Fy − Sfyg)/Fz0, computed as base·S − Fz − x^(2·Q_FCY2)·(L²·S):
+/// what waits for the power is one product and one fused subtraction.
 template <typename T, typename P>
-[[gnu::always_inline]] inline T fz62(const Fz62Curve<T, P>& c, const T& rl, T& slope, T& rho_z,
-                                     Fz62PowMemo<T>& memo) {
+[[gnu::always_inline]] inline Fz62Value<T> fz62(const Fz62Curve<T, P>& c, const T& rl,
+                                                const T& fz_target, Fz62PowMemo<T>& memo) {
   T drho_z = T(0);
-  rho_z = fz62_deflection(c, rl, drho_z);
-  const T rho_r0 = rho_z * c.inv_r0;
-  const T drho_r0 = drho_z * c.inv_r0;
+  T d2rho_z = T(0);
+  const T rho_z = fz62_deflection(c, rl, drho_z, d2rho_z);
+  const T x = rho_z * c.inv_r0;
+  const T dx = drho_z * c.inv_r0;
+  const T d2x = d2rho_z * c.inv_r0;
   // Lateral force correction: Fy less the camber's share Sfyg (a polynomial in Rl/Romega).
   const T ratio = rl * c.inv_romega;
   const T sfyg = c.fys1_g + (c.fys2_g + c.fys3_g * ratio) * ratio;
   const T dsfyg = (c.fys2_g + T(2) * c.fys3_g * ratio) * c.inv_romega;
-  const auto loaded = rho_r0 > T(0);
-  T rho_pow = is_zero(c.q_fcy2) ? T(1) : T(0);
-  T drho_pow = T(0);
+  const T d2sfyg = T(2) * c.fys3_g * c.inv_romega * c.inv_romega;
+  const auto loaded = x > T(0);
+  T power = is_zero(c.q_fcy2) ? T(1) : T(0);  // x^(2·Q_FCY2), 0 unloaded (MFeval: 0^q·0)
+  T dpower = T(0);
+  T d2power = T(0);
   if (any_lane(loaded)) {
     T derivative = T(0);
-    rho_pow =
-        if_else(loaded, fz62_pow(c, if_else(loaded, rho_r0, T(1)), memo, derivative), rho_pow);
-    drho_pow = if_else(loaded, derivative * drho_r0, T(0));
+    T second = T(0);
+    power = if_else(loaded, fz62_pow(c, if_else(loaded, x, T(1)), memo, derivative, second), power);
+    dpower = if_else(loaded, derivative * dx, T(0));
+    d2power = if_else(loaded, second * dx * dx + derivative * d2x, T(0));
   }
   const T lateral = c.fcy_per_force * (c.fy - sfyg);
-  const T fcy = rho_pow * lateral;
-  const T dfcy = drho_pow * lateral - rho_pow * c.fcy_per_force * dsfyg;
-  const T fcorr = (c.base - fcy * fcy) * c.pressure;
-  const T stiffness = (c.q_fz1 + c.q_fz2 * rho_r0) * rho_r0 * c.fz0;
-  slope = T(-2) * fcy * dfcy * c.pressure * stiffness +
-          fcorr * (c.q_fz1 + T(2) * c.q_fz2 * rho_r0) * drho_r0 * c.fz0;
-  return fcorr * stiffness;
+  const T dlateral = c.fcy_per_force * dsfyg;  // −dL/dRl
+  const T lateral2 = lateral * lateral;
+  const T dlateral2 = T(-2) * lateral * dlateral;
+  const T d2lateral2 = T(2) * (dlateral * dlateral - lateral * c.fcy_per_force * d2sfyg);
+  const T stiffness = (c.q_fz1 + c.q_fz2 * x) * x * c.stiffness_scale;
+  const T rate = (c.q_fz1 + T(2) * c.q_fz2 * x) * c.stiffness_scale;  // dS/dx
+  const T dstiffness = rate * dx;
+  const T d2stiffness = T(2) * c.q_fz2 * c.stiffness_scale * dx * dx + rate * d2x;
+  const T excess = (c.base * stiffness - fz_target) - power * (lateral2 * stiffness);
+  const T fcy2 = power * lateral2;
+  const T dfcy2 = dpower * lateral2 + power * dlateral2;
+  const T d2fcy2 = d2power * lateral2 + T(2) * dpower * dlateral2 + power * d2lateral2;
+  const T fcorr = c.base - fcy2;
+  return {excess,
+          fcorr * dstiffness - dfcy2 * stiffness,
+          fcorr * d2stiffness - T(2) * dfcy2 * dstiffness - d2fcy2 * stiffness,
+          rho_z,
+          drho_z,
+          d2rho_z};
 }
 
 /// x = ρ/R0 with q_fz2·x² + q_fz1·x = Fz / ((base − Fcy²)·(1 + PFZ1·dpi)·Fz0), the positive root
@@ -244,7 +296,8 @@ struct LoadedRadius62 {
   bool fallback;     // a lane needed the bisection fallback (never in the tested envelope)
 };
 
-/// Rl with Fz62(Rl) = Fz: a safeguarded Newton iteration on the branch where the root lies.
+/// Rl with Fz62(Rl) = Fz: a safeguarded Newton (in double and on lanes: Halley) iteration on the
+/// branch where the root lies.
 /// - The branch: below Romega the tyre is compressed and Fz62 falls steeply with Rl; only where the
 ///   camber deflection alone carries more than Fz (a light, cambered wheel) does the root lie above
 ///   Romega. Above Romega Fz62 is a hump (Q_FYS's Sfyg grows with Rl/Romega), and just below it,
@@ -254,19 +307,29 @@ struct LoadedRadius62 {
 ///   there, the branch has no root (loads beyond a fully squashed tyre, |γ| near 90° with the
 ///   limits off) and that end is the answer, as bisection gives.
 /// - Start: the MF 6.1-style deflection (the quadratic in ρ/R0 with the Rl-independent
-///   corrections) less the camber's deflection at Romega. On lanes, where the slowest lane sets
-///   the number of steps, the quadratic is solved once more with Fcy's factor (ρz/R0)^Q_FCY2
-///   (pow_estimate, within 1e-3·|Q_FCY2| + 2e-4) and Sfyg at the first solution, kept within
-///   [0.7, 1.5] of it: on the benchmark's points this takes the groups of four needing 3 steps
-///   from 75 % to 13 %. The scalar paths do without it: there it costs about as much as the step
-///   it saves (measured).
-/// - A step is Newton's where it lands inside the bracket and the slope is negative, else the
-///   bracket's midpoint (or its far end, not yet evaluated). Converged when a Newton step is at
-///   most R0·ε^(3/4), ε of the output type: the error after it is of order the step² times
-///   Fz62''/Fz62' (≲ 1e3 /m at the lightest loads), below ε·R0.
+///   corrections) less the camber's deflection at Romega. It leaves out Fcy's factor
+///   (ρz/R0)^Q_FCY2 and is a few mm off (1 cm where that factor matters most).
+/// - The step: in double and on lanes Halley's, −F·F'/(F'² − ½·F·F''), cubic, where its factor
+///   on Newton's step, 1/(1 − F·F''/(2·F'²)), is within [2/3, 2] (else, far from the root,
+///   Newton's). From the start two evaluations then reach ε·R0 where Newton's steps need three at
+///   about a third of the points (double) and, on lanes, where the slowest lane sets the count, in
+///   about a quarter of the groups of four without a start corrected for Fcy's factor (which it
+///   replaces). Float takes Newton's step: on its one dependent chain the second derivative costs
+///   more than the evaluations it saves (measured: 98 → 105 ns per wheel); fixed point too (F'² of
+///   ~1e6 N/m overflows Q31.32).
+/// - A step is taken where it lands inside the bracket and the slope is negative, else the
+///   bracket's midpoint (or its far end, not yet evaluated). Converged when a step is at most
+///   R0·ε^(3/4), ε of the output type (the error after it is of order the step² times
+///   Fz62''/Fz62' ≲ 1e3 /m at the lightest loads, below ε·R0), or when the error left after a step
+///   of the same kind as the one before, estimated from the two, is at most ε·R0 (this saves the
+///   confirming evaluation): Newton's C·step² with C ≈ step / previous², Halley's K·step³ with
+///   K ≈ step / previous³, asked to be 20× below ε·R0: from a previous step far from the root
+///   (a light load, from Rl = 0) it was 25× low (Rl 1.6e-6 m off in float without the margin).
+/// - ρz at Rl: its Taylor polynomial (to the second order) about the last point evaluated, at most
+///   a step away, so that it is ready with Rl; evaluated afresh where that does not hold.
 /// tests/mf/mf62_loaded_radius_test.cpp shows over the envelope (every MF 6.2, MF 5.2 and PAC2002
 /// test tyre, loads 0 … 10·FZMAX, |γ| to 1.5707, slips, speeds, pressures, limits on and off) that
-/// it converges in at most 13 steps (3–5 at most points; MF 5.2 and PAC2002, without the camber
+/// it converges in at most 11 steps (2–3 at most points; MF 5.2 and PAC2002, without the camber
 /// and lateral terms, in 1: the start is their root) to the least-deflection root, the one a tyre
 /// reaches when loaded from Romega. Should a lane still be unconverged after kNewtonSteps,
 /// bisection of its remaining bracket finishes it (lanes: a converged lane keeps its value).
@@ -278,6 +341,8 @@ struct LoadedRadius62 {
 template <typename T, typename P>
 LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) {
   constexpr int kNewtonSteps = 16;
+  // Halley's step in double and on lanes, Newton's in float and fixed point (see above).
+  constexpr bool kHalley = !std::is_same_v<T, float> && !is_fixed_point<T>;
   constexpr bool coarse = std::is_same_v<T, float> || is_lanes<T> || is_fixed_point<T>;
   // ε^(3/4): float 6.4e-6, double 1.8e-12 (fixed point Q31.32 as float: its resolution of a
   // radius, 2.3e-10 m, is float's).
@@ -297,8 +362,7 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
   const auto evaluated = bound > fz_target || !(c.pressure > T(0));
   auto beyond = T(0) > T(0);  // no lane
   if (any_lane(evaluated)) {
-    T rho_unused = T(0);
-    beyond = evaluated && fz62(c, c.romega, slope_romega, rho_unused, memo) > fz_target;
+    beyond = evaluated && fz62(c, c.romega, fz_target, memo).excess > T(0);
     // Only those lanes keep the pow's memo (a lane's result must not depend on its neighbours).
     memo.base = if_else(evaluated, memo.base, T(0));
     memo.value = if_else(evaluated, memo.value, T(0));
@@ -311,43 +375,61 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
   auto lo_known = beyond;   // Fz62(lo) > Fz is known
   auto hi_known = !beyond;  // Fz62(hi) ≤ Fz is known
   // Start: q_fz2·x² + q_fz1·x = Fz / ((1 + speed − Fx² − Fcy²)(1 + PFZ1·dpi)·Fz0), x = ρ/R0.
-  T x0 = quadratic_deflection(c, fz_target, c.fcy_per_force * c.fy);
-  if constexpr (is_lanes<T>) {
-    const auto ok = x0 > T(0);
-    const T factor = if_else(ok, pow_estimate(x0, T(c.q_fcy2)), T(1));
-    const T ratio = T(1) - x0 * c.r0 * c.inv_romega;
-    const T sfyg = c.fys1_g + (c.fys2_g + c.fys3_g * ratio) * ratio;
-    const T x1 = quadratic_deflection(c, fz_target, factor * c.fcy_per_force * (c.fy - sfyg));
-    x0 = if_else(x1 > T(0), min_of(max_of(x1, T(0.7) * x0), T(1.5) * x0), x0);
-  }
+  const T x0 = quadratic_deflection(c, fz_target, c.fcy_per_force * c.fy);
   // The camber's deflection at Romega is carried already; the free-rolling part makes up the rest.
   const T rho_zfr0 = max_of(x0 * c.r0 - rho_romega, T(0)) * c.inv_free_share;
   T rl = min_of(max_of(c.romega - rho_zfr0, lo), hi);
   auto active = !(T(0) > T(0));  // every lane
-  auto previous_newton = !active;
+  auto previous_fast = !active;  // the previous step was inside and Newton's (Halley's)
   T previous_step = T(0);
+  // ρz and its derivatives at the last point each lane evaluated while active.
+  T rl_at = rl;
+  T rho_at = T(0);
+  T drho_at = T(0);
+  T d2rho_at = T(0);
   LoadedRadius62<T> result{T(0), T(0), 0, false};
   for (int i = 0; i < kNewtonSteps; ++i) {
-    T slope = T(0);
-    T rho = T(0);
-    const T resid = fz62(c, rl, slope, rho, memo) - fz_target;
+    const Fz62Value<T> at = fz62(c, rl, fz_target, memo);
+    rl_at = if_else(active, rl, rl_at);
+    rho_at = if_else(active, at.rho_z, rho_at);
+    drho_at = if_else(active, at.drho_z, drho_at);
+    d2rho_at = if_else(active, at.d2rho_z, d2rho_at);
+    const T resid = at.excess;
+    const T slope = at.slope;
     const auto above = resid > T(0);
     lo = if_else(active && above, rl, lo);
     hi = if_else(active && !above, rl, hi);
     lo_known = lo_known || (active && above);
     hi_known = hi_known || (active && !above);
-    const T step = -div_or(resid, slope, T(0));
+    T step = T(0);
+    auto fast = !(T(0) > T(0));
+    if constexpr (kHalley) {
+      // −F·F'/(F'² − ½·F·F''): Newton's step times 1/(1 − F·F''/(2·F'²)) where that factor is
+      // within [2/3, 2], else Newton's step (far from the root, where the curvature term is not
+      // a small correction).
+      const T slope2 = slope * slope;
+      const T halley_den = slope2 - T(0.5) * resid * at.curvature;
+      fast = halley_den > T(0.5) * slope2 && halley_den < T(1.5) * slope2;
+      step = -div_or(resid * slope, if_else(fast, halley_den, slope2), T(0));
+    } else {
+      step = -div_or(resid, slope, T(0));
+    }
     const T newton = rl + step;
     const auto falling = slope < T(0);
     // Converged: a step at most the tolerance (it may round onto the bracket's end it came
-    // from), or a Newton step after a Newton step whose remaining error, C·step² with
-    // C ≈ step / previous² (quadratic convergence), is at most ε·R0: |step|³ ≤ ε·R0·previous²
-    // (this saves the confirming step).
+    // from), or a step after one of the same kind whose remaining error is at most ε·R0 (this
+    // saves the confirming step): Newton's C·step² with C ≈ step / previous² (quadratic
+    // convergence), |step|³ ≤ ε·R0·previous²; Halley's K·step³ with K ≈ step / previous³
+    // (cubic), step⁴ ≤ ε·R0·previous³/20 (see above).
     // At an end with Fz62 on the far side of Fz, the branch has no root: that end.
     const auto no_root = (above && !(rl < hi_end)) || (!above && !(rl > lo_end));
     const T step_abs = abs(step);
-    const auto settled = previous_newton && step_abs < previous_step &&
-                         !(step_abs * step_abs * step_abs > settle * previous_step * previous_step);
+    const T previous2 = previous_step * previous_step;
+    const T remaining =
+        kHalley ? step_abs * step_abs * step_abs * step_abs : step_abs * step_abs * step_abs;
+    const T allowed = kHalley ? T(0.05) * settle * previous2 * previous_step : settle * previous2;
+    const auto settled =
+        previous_fast && fast && step_abs < previous_step && !(remaining > allowed);
     const auto converged =
         is_zero(resid) || no_root || (falling && (!(step_abs > tolerance) || settled));
     const auto inside = falling && newton > lo && newton < hi;
@@ -356,7 +438,7 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
     next = if_else(!inside && !above && !lo_known, lo_end, next);
     next = if_else(converged, if_else(no_root, rl, min_of(max_of(newton, lo), hi)), next);
     rl = if_else(active, next, rl);
-    previous_newton = inside;
+    previous_fast = inside && fast;
     previous_step = step_abs;
     active = active && !converged;
     result.newton_steps = i + 1;
@@ -366,17 +448,27 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
     result.fallback = true;
     for (int i = 0; i < 80; ++i) {
       const T mid = T(0.5) * (lo + hi);
-      T slope = T(0);
-      T rho = T(0);
-      const auto above = fz62(c, mid, slope, rho, memo) > fz_target;
+      const auto above = fz62(c, mid, fz_target, memo).excess > T(0);
       lo = if_else(active && above, mid, lo);
       hi = if_else(active && !above, mid, hi);
     }
     rl = if_else(active, T(0.5) * (lo + hi), rl);
   }
-  T unused = T(0);
+  // ρz at Rl from its Taylor polynomial about the last point evaluated (a step away at most, where
+  // ρz is smooth: the camber part a quartic in Rl, the free-rolling part linear below Romega), so
+  // that it is ready with Rl instead of after it; evaluated afresh where the step crossed Romega,
+  // where ρz was 0 (clamped) or where the fallback set Rl.
+  const T moved = rl - rl_at;
+  T rho = max_of(rho_at + moved * (drho_at + T(0.5) * d2rho_at * moved), T(0));
+  const auto below = rl < c.romega;
+  const auto below_at = rl_at < c.romega;
+  const auto afresh = active || (below && !below_at) || (below_at && !below) || !(rho_at > T(0));
+  if (any_lane(afresh)) {
+    T unused = T(0);
+    rho = if_else(afresh, fz62_deflection(c, rl, unused), rho);
+  }
   result.rl_m = rl;
-  result.rho_m = fz62_deflection(c, rl, unused);
+  result.rho_m = rho;
   return result;
 }
 

@@ -295,9 +295,13 @@ TEST(Mf62LoadedRadius, NewtonConvergesWithinItsBudgetOverTheEnvelope) {
         const double r0 = p.unloaded_radius_m;
         const double w = out.omega_radps * r0 / p.longvl_mps;
         const double romega = r0 * (p.q_re0 + p.q_v1 * w * w);
-        const auto solved = detail::loaded_radius62(
-            detail::fz62_curve(p, gamma, out.omega_radps, romega, dpi, out.fx_n, out.fy_n),
-            fz_target);
+        const auto curve =
+            detail::fz62_curve(p, gamma, out.omega_radps, romega, dpi, out.fx_n, out.fy_n);
+        const auto solved = detail::loaded_radius62(curve, fz_target);
+        // ρz comes from its Taylor polynomial about the last point evaluated: it is the
+        // deflection at Rl.
+        double unused_slope = 0.0;
+        EXPECT_NEAR(solved.rho_m, detail::fz62_deflection(curve, solved.rl_m, unused_slope), 1e-15);
         EXPECT_EQ(solved.rl_m, out.rl_m) << name;
         ++steps_double[solved.fallback ? 0 : static_cast<std::size_t>(solved.newton_steps)];
         const std::string where = name + " mode " + std::to_string(mode) + " Fz " +
@@ -314,20 +318,22 @@ TEST(Mf62LoadedRadius, NewtonConvergesWithinItsBudgetOverTheEnvelope) {
         const float dpif = (outf.p_pa - pf.nompres_pa) / pf.nompres_pa;
         const float wf = outf.omega_radps * pf.unloaded_radius_m / pf.longvl_mps;
         const float romegaf = pf.unloaded_radius_m * (pf.q_re0 + pf.q_v1 * wf * wf);
-        const auto solvedf = detail::loaded_radius62(
-            detail::fz62_curve(pf, static_cast<float>(gamma), outf.omega_radps, romegaf, dpif,
-                               outf.fx_n, outf.fy_n),
-            static_cast<float>(fz_target));
+        const auto curvef = detail::fz62_curve(pf, static_cast<float>(gamma), outf.omega_radps,
+                                               romegaf, dpif, outf.fx_n, outf.fy_n);
+        const auto solvedf = detail::loaded_radius62(curvef, static_cast<float>(fz_target));
+        float unused_slopef = 0.0F;
+        const float rhof = detail::fz62_deflection(curvef, solvedf.rl_m, unused_slopef);
+        EXPECT_NEAR(solvedf.rho_m, rhof, 4e-7F * rhof + 1e-10F) << where;
         ++steps_float[solvedf.fallback ? 0 : static_cast<std::size_t>(solvedf.newton_steps)];
         lane_points.push_back({static_cast<float>(gamma), outf.omega_radps, romegaf, dpif,
                                outf.fx_n, outf.fy_n, static_cast<float>(fz_target), expected,
                                o.use_limits});
         if (o.use_limits) {
           // Within the model's limits: no lane ever needs the fallback, and float lands on the
-          // same root (its Fx, Fy differ by ~1e-4 relative).
+          // same root (its Fx, Fy differ by ~1e-4 relative; 5e-7 m is ~16 ulp of a radius).
           EXPECT_FALSE(solved.fallback) << where;
           EXPECT_FALSE(solvedf.fallback) << where;
-          EXPECT_NEAR(outf.rl_m, expected, 2e-5) << where;
+          EXPECT_NEAR(outf.rl_m, expected, 5e-7) << where;
           worst_float = std::max(worst_float, std::fabs(double(outf.rl_m) - expected));
         }
       }
@@ -345,15 +351,20 @@ TEST(Mf62LoadedRadius, NewtonConvergesWithinItsBudgetOverTheEnvelope) {
           for (int f = 0; f < 7; ++f) v[f].v[k] = fields[f];
           limited = limited && l.use_limits;
         }
-        const auto solved4 = detail::loaded_radius62(
-            detail::fz62_curve(pf, v[0], v[1], v[2], v[3], v[4], v[5]), v[6]);
+        const auto curve4 = detail::fz62_curve(pf, v[0], v[1], v[2], v[3], v[4], v[5]);
+        const auto solved4 = detail::loaded_radius62(curve4, v[6]);
+        lanes::F4 unused_slope4;
+        const lanes::F4 rho4 = detail::fz62_deflection(curve4, solved4.rl_m, unused_slope4);
         ++steps_lanes[solved4.fallback ? 0 : static_cast<std::size_t>(solved4.newton_steps)];
         if (!limited) continue;
         EXPECT_FALSE(solved4.fallback) << name << " group " << g;
         for (std::size_t k = 0; k < 4; ++k) {
           const double err = std::fabs(static_cast<double>(solved4.rl_m[static_cast<int>(k)]) -
                                        lane_points[g + k].expected);
-          EXPECT_LT(err, 2e-5) << name << " group " << g << " lane " << k;
+          EXPECT_LT(err, 5e-7) << name << " group " << g << " lane " << k;
+          const float rho = rho4[static_cast<int>(k)];
+          EXPECT_NEAR(solved4.rho_m[static_cast<int>(k)], rho, 4e-7F * rho + 1e-10F)
+              << name << " group " << g << " lane " << k;
           worst_lanes = std::max(worst_lanes, err);
         }
       }
