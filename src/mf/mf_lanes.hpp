@@ -245,31 +245,6 @@ Lanes<N> pow(const Lanes<N>& x, const Lanes<N>& y) {
   return exp(y * log(x));
 }
 
-/// x^q to 1e-3·|q| + 2e-4 relative (x clamped to [1e-30, 1e30], NaN to 1e-30): log2 x from
-/// the exponent bits and a cubic in the mantissa (|error| ≤ 1.4e-3), 2^y from a cubic on [−½, ½]
-/// (relative error ≤ 1.9e-4) moved into the exponent bits. A few instructions where pow costs
-/// tens: the start of an iteration, never a result.
-template <int N>
-Lanes<N> pow_estimate(const Lanes<N>& x, const Lanes<N>& q) {
-  using W = FloatVec<N>;
-  using WI = IntVec<N>;
-  W a = x.v;
-  a = a > 1e-30f ? a : W{} + 1e-30f;  // NaN too
-  a = a < 1e30f ? a : W{} + 1e30f;
-  const WI bits = std::bit_cast<WI>(a);
-  const W f = std::bit_cast<W>(WI((bits & 0x007fffff) | 0x3f800000)) - 1.0f;
-  const W log2x = __builtin_convertvector(WI((bits >> 23) - 127), W) +
-                  f * (1.42348532f + f * (-0.587733774f + f * 0.165558849f));
-  W y = q.v * log2x;
-  y = y > -126.0f ? y : W{} - 126.0f;
-  y = y < 126.0f ? y : W{} + 126.0f;
-  const W n = (y + 12582912.0f) - 12582912.0f;  // rint(y)
-  const W g = y - n;
-  const W p = 0.999948141f + g * (0.693127227f + g * (0.242296497f + g * 0.0558758698f));
-  return Lanes<N>(
-      std::bit_cast<W>(WI(std::bit_cast<WI>(p) + __builtin_convertvector(n, WI) * 8388608)));
-}
-
 // The Magic Formula's elementary functions (found by ADL from mf_evaluate.hpp).
 /// sin (cosine false) or cos of lanes; lanes beyond the reduction's range go through libm.
 template <int N>

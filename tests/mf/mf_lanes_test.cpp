@@ -272,31 +272,6 @@ TEST(MfLanes, PowOfRandomPositiveBasesAndExponentsPerLane) {
   EXPECT_EQ(pow(F4(1.0f), pack(-3.0f, 0.5f, 2.0f, 100.0f))[3], 1.0f);
 }
 
-TEST(MfLanes, PowEstimateWithinItsBoundAndFiniteForAnyInput) {
-  // A start for an iteration (Fz62's loaded radius): log2 and 2^y by cubics, relative error at most
-  // ln 2·|q|·1.4e-3 + 1.9e-4; below 1e-3·|q| + 2.5e-4 over ten decades of x.
-  double worst = 0.0;
-  for (float q : {-3.0f, -1.0f, -0.4751f, 0.25f, 1.0f, 3.0f}) {
-    const std::vector<float> xs = log_grid(1e-6, 1e4, 200000);
-    const std::vector<float> got = on_lanes([q](F4 x) { return pow_estimate(x, F4(q)); }, xs);
-    for (std::size_t i = 0; i < xs.size(); ++i) {
-      const double want = std::pow(static_cast<double>(xs[i]), static_cast<double>(q));
-      const double rel = std::fabs(static_cast<double>(got[i]) - want) / want;
-      const double bound = 1e-3 * std::fabs(static_cast<double>(q)) + 2.5e-4;
-      ASSERT_LT(rel, bound) << "x " << xs[i] << " q " << q;
-      worst = std::max(worst, rel / bound);
-    }
-  }
-  std::printf("[ max err  ] pow_estimate: %.3g of its bound\n", worst);
-  // 0, negative, NaN and inf bases and huge exponents give finite values (the caller selects the
-  // lanes it uses).
-  const float nan = std::numeric_limits<float>::quiet_NaN();
-  for (float q : {-200.0f, -0.5f, 0.5f, 200.0f}) {
-    const F4 r = pow_estimate(pack(0.0f, -1.0f, nan, kInf), F4(q));
-    for (int k = 0; k < 4; ++k) EXPECT_TRUE(std::isfinite(r[k])) << "lane " << k << " q " << q;
-  }
-}
-
 // ---- sqrt, abs: exact -------------------------------------------------------------------------
 
 TEST(MfLanes, SqrtAndAbsAreExact) {
