@@ -163,7 +163,7 @@ TEST(Mf62LoadedRadius, FloatAndFourLanesAgreeWithDouble) {
   }
 }
 
-// The loaded radius is solved by a safeguarded Newton iteration (detail::loaded_radius62) with a
+// The loaded radius is solved by a safeguarded Newton (Halley) iteration (detail::loaded_radius62), a
 // bounded number of steps. Over the whole envelope the model accepts (loads 0 … 10·FZMAX, |γ| up to
 // 1.5707 rad, slips, speeds and pressures far outside any measured range), for every tyre file that
 // takes this path (MF 6.2, MF 5.2, PAC2002), it must converge within its step budget without the
@@ -264,6 +264,21 @@ struct LanePoint {
   bool use_limits;
 };
 
+/// " steps:count[/count…]" for every step count some histogram has ("fallback" for [0]).
+std::string step_histogram(const std::vector<const std::array<int, 17>*>& histograms) {
+  std::string text;
+  for (std::size_t k = 0; k < 17; ++k) {
+    std::string counts;
+    bool any = false;
+    for (const std::array<int, 17>* h : histograms) {
+      counts += (counts.empty() ? "" : "/") + std::to_string((*h)[k]);
+      any = any || (*h)[k] != 0;
+    }
+    if (any) text += " " + (k == 0 ? std::string("fallback") : std::to_string(k)) + ":" + counts;
+  }
+  return text;
+}
+
 TEST(Mf62LoadedRadius, NewtonConvergesWithinItsBudgetOverTheEnvelope) {
   const std::vector<std::string> tyres = fz62_path_tyres();
   ASSERT_GE(tyres.size(), 4U);  // MF 6.2, MF 5.2 and the PAC2002 files
@@ -337,7 +352,7 @@ TEST(Mf62LoadedRadius, NewtonConvergesWithinItsBudgetOverTheEnvelope) {
           worst_float = std::max(worst_float, std::fabs(double(outf.rl_m) - expected));
         }
       }
-      // Four lanes (their own start: corrected by Fcy's factor), neighbouring envelope points side
+      // Four lanes (Halley's steps, as double; float takes Newton's), neighbouring envelope points side
       // by side: each lane lands on the root as float does, and within the limits no group needs
       // the fallback.
       std::array<int, 17> steps_lanes{};
@@ -368,24 +383,13 @@ TEST(Mf62LoadedRadius, NewtonConvergesWithinItsBudgetOverTheEnvelope) {
           worst_lanes = std::max(worst_lanes, err);
         }
       }
-      std::string lanes_histogram;
-      for (std::size_t k = 0; k < steps_lanes.size(); ++k) {
-        if (steps_lanes[k] == 0) continue;
-        lanes_histogram += " " + (k == 0 ? std::string("fallback") : std::to_string(k)) + ":" +
-                           std::to_string(steps_lanes[k]);
-      }
-      std::printf("%s mode %d: groups of four by Newton steps%s; |Rl - reference| %.1e m\n",
-                  name.c_str(), mode, lanes_histogram.c_str(), worst_lanes);
-      std::string histogram;
-      for (std::size_t k = 0; k < steps_double.size(); ++k) {
-        if (steps_double[k] + steps_float[k] == 0) continue;
-        histogram += " " + (k == 0 ? std::string("fallback") : std::to_string(k)) + ":" +
-                     std::to_string(steps_double[k]) + "/" + std::to_string(steps_float[k]);
-      }
+      std::printf("%s mode %d: groups of four by steps%s; |Rl - reference| %.1e m\n", name.c_str(),
+                  mode, step_histogram({&steps_lanes}).c_str(), worst_lanes);
       std::printf(
-          "%s mode %d: points by Newton steps (double/float)%s; |Rl - reference| double "
-          "%.1e m, float %.1e m\n",
-          name.c_str(), mode, histogram.c_str(), worst_double, worst_float);
+          "%s mode %d: points by steps (double/float)%s; |Rl - reference| double %.1e m, float "
+          "%.1e m\n",
+          name.c_str(), mode, step_histogram({&steps_double, &steps_float}).c_str(), worst_double,
+          worst_float);
     }
   }
 }
