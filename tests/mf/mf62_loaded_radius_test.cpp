@@ -163,12 +163,13 @@ TEST(Mf62LoadedRadius, FloatAndFourLanesAgreeWithDouble) {
   }
 }
 
-// The loaded radius is solved by a safeguarded Newton (Halley) iteration (detail::loaded_radius62), a
-// bounded number of steps. Over the whole envelope the model accepts (loads 0 … 10·FZMAX, |γ| up to
-// 1.5707 rad, slips, speeds and pressures far outside any measured range), for every tyre file that
-// takes this path (MF 6.2, MF 5.2, PAC2002), it must converge within its step budget without the
-// bisection fallback, to the root of the independent Fz62 above on the same branch (below Romega,
-// or above it where the camber alone carries more than Fz) found by 200 halvings in double.
+// The loaded radius is solved by a safeguarded Newton (Halley) iteration (detail::loaded_radius62)
+// in a bounded number of steps. Over the whole envelope the model accepts (loads 0 … 10·FZMAX, |γ|
+// up to 1.5707 rad, slips, speeds and pressures far outside any measured range), for every tyre
+// file that takes this path (MF 6.2, MF 5.2, PAC2002), it must converge within its step budget
+// without the bisection fallback, to the root of the independent Fz62 above on the same branch
+// (below Romega, or above it where the camber alone carries more than Fz) found by 200 halvings in
+// double.
 struct EnvelopePoint {
   double fz, kappa, alpha, gamma, vx, p_ratio;
 };
