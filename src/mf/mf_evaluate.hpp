@@ -25,8 +25,8 @@
 // Deliberate differences:
 //   - rho/Rl for FITTYP ≠ 61 (MF 5.2, MF 6.2): MFeval minimises (Fz62(Rl) − Fz)² with fminsearch
 //     (TolX 1e-6, start 0.3 m); here the root of Fz62(Rl) = Fz is found by a safeguarded Newton
-//     iteration to the output type's resolution (detail::loaded_radius62). The two agree to about
-//     1e-8 m.
+//     iteration (Halley's steps in double and on lanes) to the output type's resolution
+//     (detail::loaded_radius62). The two agree to about 1e-8 m.
 //   - rho/Rl for FITTYP 61 solve the same quadratic in the cancellation-free form.
 //   - TYRESIDE mirroring (MountedSide), which MFeval ignores.
 //   - A finite-arithmetic envelope, applied in every mode: Fz ≤ 10·max(FZMAX, FNOMIN), |κ| ≤ 100,

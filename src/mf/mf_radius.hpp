@@ -2,7 +2,8 @@
 // The tyre's radii: the effective rolling radius Re and the angular speed ω (calculateRe, by
 // MFeval's fixed-point iteration) and doExtras' loaded radius Rl, deflection ρ and vertical
 // stiffness Cz: for MF 6.1 the quadratic in ρ/R0 solved in closed form, for MF 6.2, MF 5.2 and
-// PAC2002 the root of MF 6.2's vertical force Fz62(Rl) = Fz by a safeguarded Newton iteration.
+// PAC2002 the root of MF 6.2's vertical force Fz62(Rl) = Fz by a safeguarded Newton iteration
+// (Halley's steps in double and on lanes).
 
 #include "mf/mf_detail_common.hpp"
 #include "mf/mf_math.hpp"
@@ -68,11 +69,12 @@ struct Fz62Curve {
   T stiffness_scale;         // (1 + PFZ1·dpi)·Fz0
   T fcy_per_force;           // Q_FCY / Fz0
   T fy;
-  // Fcy² = (ρz/R0)^(2·Q_FCY2)·(Q_FCY·(Fy − Sfyg)/Fz0)²: the power's binomial series in q = 2·Q_FCY2.
+  // Fcy² = (ρz/R0)^(2·Q_FCY2)·(Q_FCY·(Fy − Sfyg)/Fz0)²: the power's binomial series in
+  // q = 2·Q_FCY2.
   T pow_c1, pow_c2, pow_c3, pow_c4, pow_c5, pow_c6;  // binomial coefficients C(q, k)
   T pow_c7_abs;                                      // |C(q, 7)|: the series' remainder
   T pow_d2, pow_d3, pow_d4, pow_d5, pow_d6;          // k·C(q, k): the series' derivative
-  T pow_e2, pow_e3, pow_e4;  // k·(k − 1)·C(q, k): its second derivative (to δ², for Halley)
+  T pow_e3, pow_e4;  // k·(k − 1)·C(q, k) for k = 3, 4 (k = 2: pow_d2): the second derivative to δ²
 };
 
 template <typename T, typename P>
@@ -136,7 +138,6 @@ Fz62Curve<T, P> fz62_curve(const MfParameters<P>& p, const T& gamma, const T& om
   c.pow_d4 = T(P(4) * c4);
   c.pow_d5 = T(P(5) * c5);
   c.pow_d6 = T(P(6) * c6);
-  c.pow_e2 = T(P(2) * c2);
   c.pow_e3 = T(P(6) * c3);
   c.pow_e4 = T(P(12) * c4);
   return c;
@@ -181,7 +182,7 @@ struct Fz62PowMemo {
 /// + … + C(q,6)δ⁶) where the remainder max(|C(q,7)|, 1e-3)·|δ|⁷ is below half of ε (|δ| < ¼), else
 /// pow, which becomes the new base. The second derivative serves Halley's step only, which needs
 /// it to a few per cent: its series stops at δ².
-template <typename T, typename P>
+template <bool kSecond, typename T, typename P>
 [[gnu::always_inline]] inline T fz62_pow(const Fz62Curve<T, P>& c, const T& x, Fz62PowMemo<T>& memo,
                                          T& derivative, T& second) {
   constexpr bool coarse = std::is_same_v<T, float> || is_lanes<T> || is_fixed_point<T>;
@@ -204,7 +205,9 @@ template <typename T, typename P>
     const T d56 = c.pow_d5 + delta * c.pow_d6;
     const T scale = memo.value * memo.inv_base;
     derivative = scale * (d12 + delta2 * (d34 + delta2 * d56));
-    second = scale * memo.inv_base * (c.pow_e2 + delta * c.pow_e3 + delta2 * c.pow_e4);
+    if constexpr (kSecond) {
+      second = scale * memo.inv_base * (c.pow_d2 + delta * c.pow_e3 + delta2 * c.pow_e4);
+    }
   }
   const auto far = !near;
   if (!any_lane(far)) return series;
@@ -215,7 +218,9 @@ template <typename T, typename P>
   memo.value = if_else(far, exact, memo.value);
   const T exact_derivative = c.pow_c1 * exact * inv_x;
   derivative = if_else(far, exact_derivative, derivative);
-  second = if_else(far, T(c.pow_q - P(1)) * exact_derivative * inv_x, second);
+  if constexpr (kSecond) {
+    second = if_else(far, T(c.pow_q - P(1)) * exact_derivative * inv_x, second);
+  }
   return if_else(far, exact, series);
 }
 
@@ -227,11 +232,13 @@ struct Fz62Value {
   T rho_z, drho_z, d2rho_z;
 };
 
-/// Fz62(Rl) − Fz and its derivatives (the second is dead code where the caller does not use it).
+/// Fz62(Rl) − Fz and its derivatives, the second (curvature) only where kSecond (else 0: it is
+/// not dead code for every type, and in fixed point it overflows at light loads).
 /// Fz62 = (base − Fcy²)·S with S = (1 + PFZ1·dpi)·Fz0·(Q_FZ1 + Q_FZ2·x)·x, x = ρz/R0, and
-/// Fcy² = x^(2·Q_FCY2)·L², L = Q_FCY·(Fy − Sfyg)/Fz0, computed as base·S − Fz − x^(2·Q_FCY2)·(L²·S):
-/// what waits for the power is one product and one fused subtraction.
-template <typename T, typename P>
+/// Fcy² = x^(2·Q_FCY2)·L², L = Q_FCY·(Fy − Sfyg)/Fz0, computed as
+/// base·S − Fz − x^(2·Q_FCY2)·(L²·S): what waits for the power is one product and one fused
+/// subtraction.
+template <bool kSecond, typename T, typename P>
 [[gnu::always_inline]] inline Fz62Value<T> fz62(const Fz62Curve<T, P>& c, const T& rl,
                                                 const T& fz_target, Fz62PowMemo<T>& memo) {
   T drho_z = T(0);
@@ -239,12 +246,16 @@ template <typename T, typename P>
   const T rho_z = fz62_deflection(c, rl, drho_z, d2rho_z);
   const T x = rho_z * c.inv_r0;
   const T dx = drho_z * c.inv_r0;
-  const T d2x = d2rho_z * c.inv_r0;
   // Lateral force correction: Fy less the camber's share Sfyg (a polynomial in Rl/Romega).
   const T ratio = rl * c.inv_romega;
   const T sfyg = c.fys1_g + (c.fys2_g + c.fys3_g * ratio) * ratio;
   const T dsfyg = (c.fys2_g + T(2) * c.fys3_g * ratio) * c.inv_romega;
-  const T d2sfyg = T(2) * c.fys3_g * c.inv_romega * c.inv_romega;
+  T d2x = T(0);
+  T d2sfyg = T(0);
+  if constexpr (kSecond) {
+    d2x = d2rho_z * c.inv_r0;
+    d2sfyg = T(2) * c.fys3_g * c.inv_romega * c.inv_romega;
+  }
   const auto loaded = x > T(0);
   T power = is_zero(c.q_fcy2) ? T(1) : T(0);  // x^(2·Q_FCY2), 0 unloaded (MFeval: 0^q·0)
   T dpower = T(0);
@@ -252,30 +263,37 @@ template <typename T, typename P>
   if (any_lane(loaded)) {
     T derivative = T(0);
     T second = T(0);
-    power = if_else(loaded, fz62_pow(c, if_else(loaded, x, T(1)), memo, derivative, second), power);
+    power = if_else(
+        loaded, fz62_pow<kSecond>(c, if_else(loaded, x, T(1)), memo, derivative, second), power);
     dpower = if_else(loaded, derivative * dx, T(0));
-    d2power = if_else(loaded, second * dx * dx + derivative * d2x, T(0));
+    if constexpr (kSecond) d2power = if_else(loaded, second * dx * dx + derivative * d2x, T(0));
   }
   const T lateral = c.fcy_per_force * (c.fy - sfyg);
   const T dlateral = c.fcy_per_force * dsfyg;  // −dL/dRl
   const T lateral2 = lateral * lateral;
   const T dlateral2 = T(-2) * lateral * dlateral;
-  const T d2lateral2 = T(2) * (dlateral * dlateral - lateral * c.fcy_per_force * d2sfyg);
+  T d2lateral2 = T(0);
+  if constexpr (kSecond) {
+    d2lateral2 = T(2) * (dlateral * dlateral - lateral * c.fcy_per_force * d2sfyg);
+  }
   const T stiffness = (c.q_fz1 + c.q_fz2 * x) * x * c.stiffness_scale;
   const T rate = (c.q_fz1 + T(2) * c.q_fz2 * x) * c.stiffness_scale;  // dS/dx
   const T dstiffness = rate * dx;
-  const T d2stiffness = T(2) * c.q_fz2 * c.stiffness_scale * dx * dx + rate * d2x;
+  T d2stiffness = T(0);
+  if constexpr (kSecond) d2stiffness = T(2) * c.q_fz2 * c.stiffness_scale * dx * dx + rate * d2x;
   const T excess = (c.base * stiffness - fz_target) - power * (lateral2 * stiffness);
   const T fcy2 = power * lateral2;
   const T dfcy2 = dpower * lateral2 + power * dlateral2;
-  const T d2fcy2 = d2power * lateral2 + T(2) * dpower * dlateral2 + power * d2lateral2;
+  T d2fcy2 = T(0);
+  if constexpr (kSecond) {
+    d2fcy2 = d2power * lateral2 + T(2) * dpower * dlateral2 + power * d2lateral2;
+  }
   const T fcorr = c.base - fcy2;
-  return {excess,
-          fcorr * dstiffness - dfcy2 * stiffness,
-          fcorr * d2stiffness - T(2) * dfcy2 * dstiffness - d2fcy2 * stiffness,
-          rho_z,
-          drho_z,
-          d2rho_z};
+  T curvature = T(0);
+  if constexpr (kSecond) {
+    curvature = fcorr * d2stiffness - T(2) * dfcy2 * dstiffness - d2fcy2 * stiffness;
+  }
+  return {excess, fcorr * dstiffness - dfcy2 * stiffness, curvature, rho_z, drho_z, d2rho_z};
 }
 
 /// x = ρ/R0 with q_fz2·x² + q_fz1·x = Fz / ((base − Fcy²)·(1 + PFZ1·dpi)·Fz0), the positive root
@@ -309,22 +327,24 @@ struct LoadedRadius62 {
 /// - Start: the MF 6.1-style deflection (the quadratic in ρ/R0 with the Rl-independent
 ///   corrections) less the camber's deflection at Romega. It leaves out Fcy's factor
 ///   (ρz/R0)^Q_FCY2 and is a few mm off (1 cm where that factor matters most).
-/// - The step: in double and on lanes Halley's, −F·F'/(F'² − ½·F·F''), cubic, where its factor
-///   on Newton's step, 1/(1 − F·F''/(2·F'²)), is within [2/3, 2] (else, far from the root,
-///   Newton's). From the start two evaluations then reach ε·R0 where Newton's steps need three at
-///   about a third of the points (double) and, on lanes, where the slowest lane sets the count, in
-///   about a quarter of the groups of four without a start corrected for Fcy's factor (which it
-///   replaces). Float takes Newton's step: on its one dependent chain the second derivative costs
-///   more than the evaluations it saves (measured: 98 → 105 ns per wheel); fixed point too (F'² of
-///   ~1e6 N/m overflows Q31.32).
+/// - The step: in double (and a fit's Jets) and on lanes Halley's, −F·F'/(F'² − ½·F·F''), cubic,
+///   where its factor on Newton's step, 1/(1 − F·F''/(2·F'²)), is within [2/3, 2] (else, far from
+///   the root, Newton's). From the start two evaluations then reach ε·R0 where Newton's steps need
+///   three at about a third of the benchmark's points (double) and, on lanes, where the slowest
+///   lane sets the count, in about a quarter of its groups of four without a start corrected for
+///   Fcy's factor (which it replaces). Float takes Newton's step: in the portable scalar build
+///   (no FMA) the second derivative costs more than the evaluations it saves (measured: +7 ns per
+///   solve alone, +8–10 ns per MF 6.2 evaluation); fixed point too (F'² of ~1e6 N/m overflows
+///   Q31.32), and neither computes the second derivative.
 /// - A step is taken where it lands inside the bracket and the slope is negative, else the
 ///   bracket's midpoint (or its far end, not yet evaluated). Converged when a step is at most
 ///   R0·ε^(3/4), ε of the output type (the error after it is of order the step² times
 ///   Fz62''/Fz62' ≲ 1e3 /m at the lightest loads, below ε·R0), or when the error left after a step
 ///   of the same kind as the one before, estimated from the two, is at most ε·R0 (this saves the
 ///   confirming evaluation): Newton's C·step² with C ≈ step / previous², Halley's K·step³ with
-///   K ≈ step / previous³, asked to be 20× below ε·R0: from a previous step far from the root
-///   (a light load, from Rl = 0) it was 25× low (Rl 1.6e-6 m off in float without the margin).
+///   K ≈ step / previous³, asked to be 20× below ε·R0 and only where both steps' factor is within
+///   10 % of 1 (the cubic regime): from a long previous step whose factor was merely within
+///   [2/3, 2] it was 25× and 475× low (float lanes 1.6e-6 and 8e-7 m off, at light loads).
 /// - ρz at Rl: its Taylor polynomial (to the second order) about the last point evaluated, at most
 ///   a step away, so that it is ready with Rl; evaluated afresh where that does not hold.
 /// tests/mf/mf62_loaded_radius_test.cpp shows over the envelope (every MF 6.2, MF 5.2 and PAC2002
@@ -362,7 +382,7 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
   const auto evaluated = bound > fz_target || !(c.pressure > T(0));
   auto beyond = T(0) > T(0);  // no lane
   if (any_lane(evaluated)) {
-    beyond = evaluated && fz62(c, c.romega, fz_target, memo).excess > T(0);
+    beyond = evaluated && fz62<false>(c, c.romega, fz_target, memo).excess > T(0);
     // Only those lanes keep the pow's memo (a lane's result must not depend on its neighbours).
     memo.base = if_else(evaluated, memo.base, T(0));
     memo.value = if_else(evaluated, memo.value, T(0));
@@ -379,8 +399,8 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
   // The camber's deflection at Romega is carried already; the free-rolling part makes up the rest.
   const T rho_zfr0 = max_of(x0 * c.r0 - rho_romega, T(0)) * c.inv_free_share;
   T rl = min_of(max_of(c.romega - rho_zfr0, lo), hi);
-  auto active = !(T(0) > T(0));  // every lane
-  auto previous_fast = !active;  // the previous step was inside and Newton's (Halley's)
+  auto active = !(T(0) > T(0));     // every lane
+  auto previous_settles = !active;  // the previous step may start a settled estimate (below)
   T previous_step = T(0);
   // ρz and its derivatives at the last point each lane evaluated while active.
   T rl_at = rl;
@@ -389,7 +409,7 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
   T d2rho_at = T(0);
   LoadedRadius62<T> result{T(0), T(0), 0, false};
   for (int i = 0; i < kNewtonSteps; ++i) {
-    const Fz62Value<T> at = fz62(c, rl, fz_target, memo);
+    const Fz62Value<T> at = fz62<kHalley>(c, rl, fz_target, memo);
     rl_at = if_else(active, rl, rl_at);
     rho_at = if_else(active, at.rho_z, rho_at);
     drho_at = if_else(active, at.drho_z, drho_at);
@@ -402,25 +422,29 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
     lo_known = lo_known || (active && above);
     hi_known = hi_known || (active && !above);
     T step = T(0);
-    auto fast = !(T(0) > T(0));
+    auto falling = slope < T(0);
+    auto settles = !(T(0) > T(0));  // this step is of the kind the settled estimate assumes
     if constexpr (kHalley) {
       // −F·F'/(F'² − ½·F·F''): Newton's step times 1/(1 − F·F''/(2·F'²)) where that factor is
       // within [2/3, 2], else Newton's step (far from the root, where the curvature term is not
-      // a small correction).
+      // a small correction). A slope whose square underflows takes the bracket's step.
       const T slope2 = slope * slope;
       const T halley_den = slope2 - T(0.5) * resid * at.curvature;
-      fast = halley_den > T(0.5) * slope2 && halley_den < T(1.5) * slope2;
-      step = -div_or(resid * slope, if_else(fast, halley_den, slope2), T(0));
+      const auto cubic = halley_den > T(0.5) * slope2 && halley_den < T(1.5) * slope2;
+      step = -div_or(resid * slope, if_else(cubic, halley_den, slope2), T(0));
+      falling = falling && slope2 > T(0);
+      // Near the root the factor is near 1; within 10 % of it is the cubic regime the estimate
+      // assumes (a long step whose factor is merely within [2/3, 2] left it 475× low).
+      settles = halley_den > T(0.9) * slope2 && halley_den < T(1.1) * slope2;
     } else {
       step = -div_or(resid, slope, T(0));
     }
     const T newton = rl + step;
-    const auto falling = slope < T(0);
     // Converged: a step at most the tolerance (it may round onto the bracket's end it came
-    // from), or a step after one of the same kind whose remaining error is at most ε·R0 (this
-    // saves the confirming step): Newton's C·step² with C ≈ step / previous² (quadratic
-    // convergence), |step|³ ≤ ε·R0·previous²; Halley's K·step³ with K ≈ step / previous³
-    // (cubic), step⁴ ≤ ε·R0·previous³/20 (see above).
+    // from; a NaN step is not), or a step inside the bracket after one of the same kind whose
+    // remaining error is at most ε·R0 (this saves the confirming step): Newton's C·step² with
+    // C ≈ step / previous² (quadratic convergence), |step|³ ≤ ε·R0·previous²; Halley's K·step³
+    // with K ≈ step / previous³ (cubic), step⁴ ≤ ε·R0·previous³/20 (see above).
     // At an end with Fz62 on the far side of Fz, the branch has no root: that end.
     const auto no_root = (above && !(rl < hi_end)) || (!above && !(rl > lo_end));
     const T step_abs = abs(step);
@@ -428,17 +452,17 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
     const T remaining =
         kHalley ? step_abs * step_abs * step_abs * step_abs : step_abs * step_abs * step_abs;
     const T allowed = kHalley ? T(0.05) * settle * previous2 * previous_step : settle * previous2;
-    const auto settled =
-        previous_fast && fast && step_abs < previous_step && !(remaining > allowed);
-    const auto converged =
-        is_zero(resid) || no_root || (falling && (!(step_abs > tolerance) || settled));
     const auto inside = falling && newton > lo && newton < hi;
+    const auto settled =
+        previous_settles && settles && inside && step_abs < previous_step && remaining <= allowed;
+    const auto converged =
+        is_zero(resid) || no_root || (falling && (step_abs <= tolerance || settled));
     T next = if_else(inside, newton, T(0.5) * (lo + hi));
     next = if_else(!inside && above && !hi_known, hi_end, next);
     next = if_else(!inside && !above && !lo_known, lo_end, next);
     next = if_else(converged, if_else(no_root, rl, min_of(max_of(newton, lo), hi)), next);
     rl = if_else(active, next, rl);
-    previous_fast = inside && fast;
+    previous_settles = inside && settles;
     previous_step = step_abs;
     active = active && !converged;
     result.newton_steps = i + 1;
@@ -448,7 +472,7 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
     result.fallback = true;
     for (int i = 0; i < 80; ++i) {
       const T mid = T(0.5) * (lo + hi);
-      const auto above = fz62(c, mid, fz_target, memo).excess > T(0);
+      const auto above = fz62<false>(c, mid, fz_target, memo).excess > T(0);
       lo = if_else(active && above, mid, lo);
       hi = if_else(active && !above, mid, hi);
     }

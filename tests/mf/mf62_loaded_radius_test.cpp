@@ -137,6 +137,33 @@ TEST(Mf62LoadedRadius, KeepsFallingAboveFzmaxWhileMf61Stops) {
   EXPECT_NEAR(rl(p62, 6000.0), rl(p61, 6000.0), 1e-4);
 }
 
+// Halley's error estimate K·step³ with K ≈ step / previous³ holds only once both steps are in the
+// cubic regime. Here (a light wheel with |Fy| ≫ Fz) a Halley step of 0.12 m, its factor on
+// Newton's 1.28, was followed by one of 1.3 mm that the estimate called settled: the estimate was
+// 475× low and the lanes' Rl 8e-7 m off. Settling now needs both factors within 10 % of 1.
+TEST(Mf62LoadedRadius, HalleyEstimateWaitsForTheCubicRegime) {
+  const MfParameters<double> p = load("MagicFormula62_Parameters.tir");
+  const MfParameters<float> pf = convert_parameters<float>(p);
+  const float gamma = -0.177767F;
+  const float omega = 77.1458F;
+  const float dpi = -0.323997F;
+  const float fx = -941.736F;
+  const float fy = -5043.65F;
+  const float fz = 61.9948F;
+  const float w = omega * pf.unloaded_radius_m / pf.longvl_mps;
+  const float romega = pf.unloaded_radius_m * (pf.q_re0 + pf.q_v1 * w * w);
+  const auto solved =
+      detail::loaded_radius62(detail::fz62_curve(p, double{gamma}, double{omega}, double{romega},
+                                                 double{dpi}, double{fx}, double{fy}),
+                              double{fz});
+  const auto solved4 = detail::loaded_radius62(
+      detail::fz62_curve(pf, lanes::F4(gamma), lanes::F4(omega), lanes::F4(romega), lanes::F4(dpi),
+                         lanes::F4(fx), lanes::F4(fy)),
+      lanes::F4(fz));
+  ASSERT_FALSE(solved4.fallback);
+  EXPECT_NEAR(static_cast<double>(solved4.rl_m[0]), solved.rl_m, 1e-7);
+}
+
 TEST(Mf62LoadedRadius, FloatAndFourLanesAgreeWithDouble) {
   const MfParameters<double> p = load("MagicFormula62_Parameters.tir");
   const MfParameters<float> pf = convert_parameters<float>(p);
@@ -353,9 +380,9 @@ TEST(Mf62LoadedRadius, NewtonConvergesWithinItsBudgetOverTheEnvelope) {
           worst_float = std::max(worst_float, std::fabs(double(outf.rl_m) - expected));
         }
       }
-      // Four lanes (Halley's steps, as double; float takes Newton's), neighbouring envelope points side
-      // by side: each lane lands on the root as float does, and within the limits no group needs
-      // the fallback.
+      // Four lanes (Halley's steps, as double; float takes Newton's), neighbouring envelope points
+      // side by side: each lane lands on the root as float does, and within the limits no group
+      // needs the fallback.
       std::array<int, 17> steps_lanes{};
       double worst_lanes = 0.0;
       for (std::size_t g = 0; g + 4 <= lane_points.size(); g += 4) {
