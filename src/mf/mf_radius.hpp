@@ -329,12 +329,12 @@ struct LoadedRadius62 {
 ///   (ρz/R0)^Q_FCY2 and is a few mm off (1 cm where that factor matters most).
 /// - The step: in double (and a fit's Jets) and on lanes Halley's, −F·F'/(F'² − ½·F·F''), cubic,
 ///   where its factor on Newton's step, 1/(1 − F·F''/(2·F'²)), is within [2/3, 2] (else, far from
-///   the root, Newton's). From the start two evaluations then reach ε·R0 where Newton's steps need
-///   three at about a third of the benchmark's points (double) and, on lanes, where the slowest
-///   lane sets the count, in about a quarter of its groups of four without a start corrected for
-///   Fcy's factor (which it replaces). Float takes Newton's step: in the portable scalar build
-///   (no FMA) the second derivative costs more than the evaluations it saves (measured: +7 ns per
-///   solve alone, +8–10 ns per MF 6.2 evaluation); fixed point too (F'² of ~1e6 N/m overflows
+///   the root, Newton's). On the benchmark's points this takes double from 3.4 evaluations per
+///   wheel on average to 2.5, and on lanes, where the slowest lane sets the count, the groups of
+///   four needing a third from three quarters to 6 % without a start corrected for Fcy's factor
+///   (13 % with it, which is therefore gone). Float takes Newton's step: in the portable scalar
+///   build (no FMA) the second derivative costs more than the evaluations it saves (measured: +7 ns
+///   per solve alone, +8–10 ns per MF 6.2 evaluation); fixed point too (F'² of ~1e6 N/m overflows
 ///   Q31.32), and neither computes the second derivative.
 /// - A step is taken where it lands inside the bracket and the slope is negative, else the
 ///   bracket's midpoint (or its far end, not yet evaluated). Converged when a step is at most
