@@ -301,7 +301,7 @@ template <bool kSecond, typename T, typename P>
 template <typename T, typename P>
 [[gnu::always_inline]] inline T quadratic_deflection(const Fz62Curve<T, P>& c, const T& fz,
                                                      const T& fcy) {
-  const T external = (c.base - fcy * fcy) * c.pressure * c.fz0;
+  const T external = (c.base - fcy * fcy) * c.stiffness_scale;
   const T q = max_of(div_or(fz, external, T(0)), T(0));
   return div_or(T(2) * q, c.q_fz1 + sqrt(c.q_fz1 * c.q_fz1 + T(4) * c.q_fz2 * q), T(0));
 }
@@ -377,8 +377,8 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
   T slope_romega = T(0);
   const T rho_romega = fz62_deflection(c, c.romega, slope_romega);
   const T rho_romega_r0 = rho_romega / c.r0;
-  const T bound = c.base * c.pressure *
-                  (c.q_fz1 * rho_romega_r0 + c.q_fz2 * rho_romega_r0 * rho_romega_r0) * c.fz0;
+  const T bound = c.base * c.stiffness_scale *
+                  (c.q_fz1 * rho_romega_r0 + c.q_fz2 * rho_romega_r0 * rho_romega_r0);
   const auto evaluated = bound > fz_target || !(c.pressure > T(0));
   auto beyond = T(0) > T(0);  // no lane
   if (any_lane(evaluated)) {
