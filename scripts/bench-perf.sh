@@ -7,20 +7,23 @@
 #      1024 random operating points: ns per evaluation (per wheel for the lanes and the batch), × the
 #      double path,
 #      and MF 6.2 / MF 6.1 in every path (medians of 5, CPU time).
-#   2. With --timing SECONDS: scripts/bench-timing.sh (cyclictest and the node in one run).
+#   2. With --timing SECONDS: scripts/bench-timing.sh SECONDS RUNS (cyclictest alone, then RUNS
+#      times the node with a cyclictest beside it and a control pair; --timing-runs, default 3).
 #   3. With --cli: scripts/bench-mf-eval.sh (`tread mf eval` on 1 M rows), when present.
 # A peer (e.g. MFeval exported to C++) is not part of the project; where one is measured elsewhere,
 # its figure against the double path carries over through the ratio column.
-# Usage: scripts/bench-perf.sh [--timing SECONDS] [--cli]
+# Usage: scripts/bench-perf.sh [--timing SECONDS [--timing-runs N]] [--cli]
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 timing=""
+timing_runs=3
 cli=0
 while (($#)); do
   case $1 in
     --timing) timing=${2:?--timing needs SECONDS}; shift 2 ;;
+    --timing-runs) timing_runs=${2:?--timing-runs needs N}; shift 2 ;;
     --cli) cli=1; shift ;;
-    *) echo "usage: $0 [--timing SECONDS] [--cli]" >&2; exit 2 ;;
+    *) echo "usage: $0 [--timing SECONDS [--timing-runs N]] [--cli]" >&2; exit 2 ;;
   esac
 done
 cmake --preset host >/dev/null
@@ -62,7 +65,7 @@ EOF
 
 if [[ -n $timing ]]; then
   echo
-  bash scripts/bench-timing.sh "$timing"
+  bash scripts/bench-timing.sh "$timing" "$timing_runs"
 fi
 if ((cli)); then
   echo

@@ -11,8 +11,8 @@
 #   3. the same in sync mode: the node sleeps until the rig's cycle frame and answers it;
 #      CAN-in -> CAN-out latency (the rig's cycle frame to the node's last answer frame);
 #   4. the cycle's compute time from Google Benchmark.
-# During 2 and 3 a second cyclictest runs on the node's CPU at the same time (from about a second
-# after the node's run starts until it ends), one priority above the node, at 1 kHz half a period
+# During 2 and 3 a second cyclictest runs on the node's CPU at the same time (started a second
+# before the node's run and stopped after it ends), one priority above the node, at 1 kHz half a period
 # away from the node's deadlines: the demo puts those at whole milliseconds of CLOCK_MONOTONIC +
 # 250 us, cyclictest wakes at whole seconds + 750 us + k ms (--secaligned 750). Neither delays the
 # other, and neither shares the kernel's tick (on whole milliseconds; HZ 250: every 4 ms). This is
@@ -44,8 +44,8 @@ work=$(mktemp -d)
 beside_pid=""
 control_pid=""
 # A cyclictest left beside the node (a failed demo, an interrupted run) would run on at SCHED_FIFO.
-trap '[[ -n $beside_pid ]] && kill -INT "$beside_pid" 2>/dev/null
-[[ -n $control_pid ]] && kill -INT "$control_pid" 2>/dev/null
+trap '[[ -z $beside_pid ]] || kill -INT "$beside_pid" 2>/dev/null || true
+[[ -z $control_pid ]] || kill -INT "$control_pid" 2>/dev/null || true
 rm -rf "$work"' EXIT
 # cyclictest's histogram (-h) -> "p50 .. us, p99 .. us, max .. us (n samples)".
 summarize() {
@@ -95,12 +95,13 @@ for ((r = 1; r <= runs; r++)); do
     "rig on another CPU at 70; 4 tyres + 2 wheelsets, ${seconds} s =="
   beside_start "periodic_$r"
   demo --mode periodic | grep -E "^(cycles|overruns|wake latency|cycle time|deadline|late inputs|rig frames|scheduler|mlockall|affinity|stack|rig thread)|refused" |
-    tee "$work/periodic_$r"
+    tee "$work/periodic_$r" || echo "run $r: the periodic demo failed or printed nothing"
   beside_stop "periodic_$r"
   echo
   echo "== run $r of $runs: tread node, sync: woken by the rig's cycle frame, ${seconds} s =="
   beside_start "sync_$r"
-  demo --mode sync | grep -E "^(cycles|cycle time|CAN-in|rig frames)|refused" | tee "$work/sync_$r"
+  demo --mode sync | grep -E "^(cycles|cycle time|CAN-in|rig frames)|refused" | tee "$work/sync_$r" ||
+    echo "run $r: the sync demo failed or printed nothing"
   beside_stop "sync_$r"
   echo
   echo "== run $r of $runs: control, two cyclictests in the same seconds: at the node's phase and" \
@@ -139,6 +140,10 @@ for r in range(1, runs + 1):
     can = fig(f"sync_{r}", "CAN-in -> CAN-out")
     c_node = fig(f"control_node_sum_{r}", "cyclictest at the node's phase")
     c_other = fig(f"control_beside_sum_{r}", "cyclictest at the other phase")
+    control = None
+    if c_node and c_other:
+        control = c_node[1] / max(c_other[1], 1)
+        control_ratios.append(control)
     periodic = d / f"periodic_{r}"
     over = re.search(r"^overruns\s+(\d+)", periodic.read_text(), re.M) if periodic.exists() else None
     if not (cyc and cyc_sync and wake and can and over):
@@ -151,9 +156,7 @@ for r in range(1, runs + 1):
           f"overruns {over.group(1)} (cyclictest beside max {cyc[2]:.0f} us, {applies}); "
           f"CAN-in -> CAN-out p99 {can[1]:.0f} us = cyclictest beside {cyc_sync[1]:.0f} us "
           f"{can[1] - cyc_sync[1]:+.0f} us (goal <= +30)", end="")
-    if c_node and c_other:
-        control = c_node[1] / max(c_other[1], 1)
-        control_ratios.append(control)
+    if control is not None:
         print(f"; control p99 {c_node[1]:.0f} vs {c_other[1]:.0f} us: x{control:.2f}")
     else:
         print("; control: figures missing")
