@@ -12,12 +12,13 @@
 #      CAN-in -> CAN-out latency (the rig's cycle frame to the node's last answer frame);
 #   4. the cycle's compute time from Google Benchmark.
 # During 2 and 3 a second cyclictest runs on the node's CPU at the same time (started a second
-# before the node's run and stopped after it ends), one priority above the node, at 1 kHz half a period
-# away from the node's deadlines: the demo puts those at whole milliseconds of CLOCK_MONOTONIC +
-# 250 us, cyclictest wakes at whole seconds + 750 us + k ms (--secaligned 750). Neither delays the
-# other, and neither shares the kernel's tick (on whole milliseconds; HZ 250: every 4 ms). This is
-# the machine's latency in the seconds the node ran: a VM's stalls come and go, and a yardstick
-# measured in other seconds (1) can miss the stall the node met, or meet one the node did not.
+# before the node's run and stopped after it ends), one priority above the node, at 1 kHz half a
+# period away from the node's deadlines: the demo puts those at whole milliseconds of
+# CLOCK_MONOTONIC + 250 us, cyclictest wakes at whole seconds + 750 us + k ms (--secaligned 750).
+# Neither delays the other, and neither shares the kernel's tick (on whole milliseconds; HZ 250:
+# every 4 ms). This is the machine's latency in the seconds the node ran: a VM's stalls come and
+# go, and a yardstick measured in other seconds (1) can miss the stall the node met, or meet one
+# the node did not.
 # The goals of issue 17 (node wake p99 <= 1.2 x cyclictest p99; no overrun when cyclictest stays
 # below the period; CAN-in -> CAN-out p99 <= cyclictest p99 + 30 us) are judged against the
 # concurrent cyclictest.
