@@ -119,4 +119,22 @@ void leave_fifo() noexcept {
   static_cast<void>(::pthread_setschedparam(::pthread_self(), SCHED_OTHER, &param));
 }
 
+void become_helper(int cpu) noexcept {
+  leave_fifo();
+  const long configured = ::sysconf(_SC_NPROCESSORS_CONF);
+  if (cpu < 0 || cpu >= CPU_SETSIZE || configured < 2) {
+    return;
+  }
+  // Every CPU but the real-time one; the kernel keeps of it what the process's cpuset allows and
+  // refuses a set with none of those (the thread then stays where it is).
+  cpu_set_t others;
+  CPU_ZERO(&others);
+  for (long i = 0; i < configured && i < CPU_SETSIZE; ++i) {
+    if (i != cpu) {
+      CPU_SET(static_cast<std::size_t>(i), &others);
+    }
+  }
+  static_cast<void>(::pthread_setaffinity_np(::pthread_self(), sizeof(others), &others));
+}
+
 }  // namespace tread::hal

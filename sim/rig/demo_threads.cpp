@@ -92,7 +92,7 @@ DemoResult run_threads(const DemoSettings& s, NodeRuntime& runtime, NodeBus& nod
     writer.open(s.log, s.can);
     ring = std::make_unique<LogRingBuffer>();
     recorder.ring = ring.get();
-    log_thread.emplace(*ring, writer);
+    log_thread.emplace(*ring, writer, s.realtime.cpu);
   }
 
   // The node's thread.
@@ -220,10 +220,8 @@ DemoResult run_threads(const DemoSettings& s, NodeRuntime& runtime, NodeBus& nod
   result.rig_notes = rig_rt.messages.empty() ? "" : "rig thread: " + rig_rt.messages;
   result.log_records_dropped = recorder.dropped;
   result.report.log_error = writer.finish();
-  if (result.log_records_dropped > 0 && result.report.log_error.empty()) {
-    result.report.log_error = s.log.string() + ": " + std::to_string(result.log_records_dropped) +
-                              " frames were not logged (the log ring was full): the log is not "
-                              "complete";
+  if (result.report.log_error.empty()) {
+    result.report.log_error = log_ring_error(s.log, result.log_records_dropped);
   }
   return result;
 }

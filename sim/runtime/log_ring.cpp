@@ -2,11 +2,14 @@
 
 #include <chrono>
 
+#include "posix/realtime.hpp"
+
 namespace tread::host {
 
-LogRingWriter::LogRingWriter(LogRingBuffer& ring, CandumpWriter& writer)
+LogRingWriter::LogRingWriter(LogRingBuffer& ring, CandumpWriter& writer, int realtime_cpu)
     : ring_(ring), writer_(writer) {
-  thread_ = std::thread([this] {
+  thread_ = std::thread([this, realtime_cpu] {
+    hal::become_helper(realtime_cpu);
     LogRecord r;
     for (;;) {
       const bool last = stop_.load(std::memory_order_acquire);
@@ -30,6 +33,14 @@ void LogRingWriter::stop() {
     stop_.store(true, std::memory_order_release);
     thread_.join();
   }
+}
+
+std::string log_ring_error(const std::filesystem::path& log, std::uint64_t dropped) {
+  if (dropped == 0) {
+    return {};
+  }
+  return log.string() + ": " + std::to_string(dropped) +
+         " frames were not logged (the log ring was full): the log is not complete";
 }
 
 }  // namespace tread::host

@@ -7,6 +7,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <thread>
@@ -41,11 +42,13 @@ struct RingRecorder {
   }
 };
 
-/// The writer thread: drains the ring into a CandumpWriter until stopped, then drains the rest.
+/// The writer thread: drains the ring into a CandumpWriter until stopped, then drains the rest. It
+/// runs on the default scheduler and off `realtime_cpu` (the loop's CPU; -1: anywhere), whatever
+/// the thread that starts it (hal::become_helper): never at the loop's priority or on its CPU.
 class LogRingWriter {
  public:
   /// Starts the thread; `writer` must be open and outlive this.
-  LogRingWriter(LogRingBuffer& ring, CandumpWriter& writer);
+  LogRingWriter(LogRingBuffer& ring, CandumpWriter& writer, int realtime_cpu = -1);
   LogRingWriter(const LogRingWriter&) = delete;
   LogRingWriter& operator=(const LogRingWriter&) = delete;
   ~LogRingWriter();
@@ -59,5 +62,8 @@ class LogRingWriter {
   std::atomic<bool> stop_{false};
   std::thread thread_;
 };
+
+/// "" when no record was dropped, else the error that says the log at `log` is not complete.
+std::string log_ring_error(const std::filesystem::path& log, std::uint64_t dropped);
 
 }  // namespace tread::host

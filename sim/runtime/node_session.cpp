@@ -5,6 +5,8 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <memory>
+#include <optional>
 #include <ostream>
 #include <stdexcept>
 #include <vector>
@@ -13,6 +15,7 @@
 #include "node/log_replay.hpp"
 #include "posix/posix_clock.hpp"
 #include "runtime/candump_log.hpp"
+#include "runtime/log_ring.hpp"
 #include "runtime/protocol_socket.hpp"
 #include "socketcan/socketcan_bus.hpp"
 #include "stub/stub_can_bus.hpp"
@@ -32,19 +35,31 @@ SessionReport run_with(Bus& bus, Pin& pin, NodeRuntime& runtime, const NodeSetti
                        const LiveOptions& options, const std::atomic<bool>* stop,
                        SessionReport report) {
   hal::PosixClock clock;
+  // The log: the loop puts its frames into a lock-free ring, a writer thread (default scheduler,
+  // off the loop's CPU) writes them; no I/O on the real-time thread.
   CandumpWriter writer;
-  CandumpRecorder recorder;
+  std::unique_ptr<LogRingBuffer> ring;
+  std::optional<LogRingWriter> log_thread;
+  RingRecorder recorder;
   if (!options.log.empty()) {
     writer.open(options.log, options.can);
-    recorder.writer = &writer;
+    ring = std::make_unique<LogRingBuffer>();
+    recorder.ring = ring.get();
+    log_thread.emplace(*ring, writer, options.realtime.cpu);
   }
   report.loop = runtime.visit([&](auto& node) {
     hal::LoopRunner loop(node, bus, clock, pin, loop_config(settings, options.period_us), recorder);
     loop.run(options.cycles == 0 ? ~std::uint64_t{0} : options.cycles, stop);
     return loop.stats();
   });
+  if (log_thread) {
+    log_thread->stop();
+  }
   report.counters = runtime.counters();
   report.log_error = writer.finish();
+  if (report.log_error.empty()) {
+    report.log_error = log_ring_error(options.log, recorder.dropped);
+  }
   return report;
 }
 

@@ -116,5 +116,30 @@ TEST(DemoThreads, PeriodicModeAccountsForEveryCycleAndEveryCheckedAnswerMatches)
   EXPECT_EQ(replay.report.loop.cycles, r.report.loop.cycles);
 }
 
+// `tread node --log` live: the loop's frames go through the same ring to the writer thread (no I/O
+// on the loop's thread); the log is whole, one NodeStatus per cycle, each line candump's.
+TEST(LiveNode, LogThroughTheRingIsWhole) {
+  const DemoSettings s = demo_settings({"sweep"}, "live_node_log");
+  LiveOptions live;
+  live.can = "stub";
+  live.cycles = 200;
+  live.log = s.out_dir / "live.log";
+  const SessionReport report = run_live(s.node, live, nullptr);
+  ASSERT_EQ(report.log_error, "");
+  ASSERT_EQ(report.loop.cycles, 200U);
+  std::ifstream in(live.log);
+  std::string line;
+  std::uint64_t lines = 0;
+  std::uint64_t statuses = 0;
+  while (std::getline(in, line)) {
+    ++lines;
+    ASSERT_EQ(line.rfind("(", 0), 0U) << line;
+    ASSERT_NE(line.find(") stub "), std::string::npos) << line;
+    statuses += line.find(" stub 0F0#") != std::string::npos ? 1U : 0U;
+  }
+  EXPECT_EQ(statuses, report.loop.cycles);
+  EXPECT_GT(lines, statuses);
+}
+
 }  // namespace
 }  // namespace tread::host
