@@ -12,10 +12,17 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <mutex>
 
 namespace tread::hal {
 
 namespace {
+
+// The CPUs a thread pinned by apply_realtime could use before (the process's, e.g. as `taskset`
+// gave them): what become_helper hands its helper threads, less the pinned one.
+std::mutex g_unpinned_mutex;
+cpu_set_t g_unpinned;
+bool g_have_unpinned = false;
 
 // Touches `bytes` below the current frame (the stack grows down): the pages become present.
 __attribute__((noinline)) void prefault_stack(std::size_t bytes) {
@@ -67,6 +74,16 @@ RealtimeReport apply_realtime(const RealtimeRequest& request) {
     }
   }
   if (request.cpu >= 0) {
+    {
+      const std::lock_guard<std::mutex> lock(g_unpinned_mutex);
+      cpu_set_t before;
+      CPU_ZERO(&before);
+      if (!g_have_unpinned &&
+          ::pthread_getaffinity_np(::pthread_self(), sizeof(before), &before) == 0) {
+        g_unpinned = before;
+        g_have_unpinned = true;
+      }
+    }
     cpu_set_t set;
     CPU_ZERO(&set);
     CPU_SET(static_cast<std::size_t>(request.cpu), &set);
@@ -121,20 +138,25 @@ void leave_fifo() noexcept {
 
 void become_helper(int cpu) noexcept {
   leave_fifo();
-  const long configured = ::sysconf(_SC_NPROCESSORS_CONF);
-  if (cpu < 0 || cpu >= CPU_SETSIZE || configured < 2) {
+  if (cpu < 0 || cpu >= CPU_SETSIZE) {
     return;
   }
-  // Every CPU but the real-time one; the kernel keeps of it what the process's cpuset allows and
-  // refuses a set with none of those (the thread then stays where it is).
+  // The CPUs the real-time thread had before apply_realtime pinned it, else this thread's own
+  // (inherited from an unpinned creator), less the real-time one; none left: stay.
   cpu_set_t others;
   CPU_ZERO(&others);
-  for (long i = 0; i < configured && i < CPU_SETSIZE; ++i) {
-    if (i != cpu) {
-      CPU_SET(static_cast<std::size_t>(i), &others);
+  {
+    const std::lock_guard<std::mutex> lock(g_unpinned_mutex);
+    if (g_have_unpinned) {
+      others = g_unpinned;
+    } else if (::pthread_getaffinity_np(::pthread_self(), sizeof(others), &others) != 0) {
+      return;
     }
   }
-  static_cast<void>(::pthread_setaffinity_np(::pthread_self(), sizeof(others), &others));
+  CPU_CLR(static_cast<std::size_t>(cpu), &others);
+  if (CPU_COUNT(&others) > 0) {
+    static_cast<void>(::pthread_setaffinity_np(::pthread_self(), sizeof(others), &others));
+  }
 }
 
 }  // namespace tread::hal

@@ -38,9 +38,11 @@ RealtimeReport apply_realtime(const RealtimeRequest& request);
 void leave_fifo() noexcept;
 
 /// For a helper thread of a real-time process (a log writer): on the default scheduler, and off
-/// `cpu` (the real-time thread's; -1: any CPU) — every other CPU the process may use, or, where
-/// `cpu` is the only one, unchanged. A thread inherits its creator's policy and affinity, so one
-/// started from the pinned SCHED_FIFO loop would otherwise share its CPU at its priority.
+/// `cpu` (the real-time thread's; -1: affinity unchanged) — on the CPUs the real-time thread had
+/// before apply_realtime pinned it (the process's, as `taskset` or the cpuset gave them; without
+/// such a pin, the helper's own), less `cpu`; where `cpu` is the only one, unchanged. A thread
+/// inherits its creator's policy and affinity, so one started from the pinned SCHED_FIFO loop
+/// would otherwise share its CPU at its priority.
 void become_helper(int cpu) noexcept;
 
 }  // namespace tread::hal

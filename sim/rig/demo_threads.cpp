@@ -219,10 +219,7 @@ DemoResult run_threads(const DemoSettings& s, NodeRuntime& runtime, NodeBus& nod
   result.report.notes = node_rt.messages;
   result.rig_notes = rig_rt.messages.empty() ? "" : "rig thread: " + rig_rt.messages;
   result.log_records_dropped = recorder.dropped;
-  result.report.log_error = writer.finish();
-  if (result.report.log_error.empty()) {
-    result.report.log_error = log_ring_error(s.log, result.log_records_dropped);
-  }
+  result.report.log_error = writer.finish(result.log_records_dropped);
   return result;
 }
 

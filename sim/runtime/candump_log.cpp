@@ -83,7 +83,7 @@ void CandumpWriter::write(const proto::CanFrame& frame, std::int64_t time_ns) no
   }
 }
 
-std::string CandumpWriter::finish() {
+std::string CandumpWriter::finish(std::uint64_t dropped_frames) {
   if (file_ == nullptr) return "";
   errno = 0;
   if (std::fflush(file_) != 0 && errno_ == 0) {
@@ -93,13 +93,19 @@ std::string CandumpWriter::finish() {
     errno_ = errno != 0 ? errno : EIO;
   }
   file_ = nullptr;
+  const std::string dropped =
+      dropped_frames == 0 ? ""
+                          : std::to_string(dropped_frames) +
+                                " frames were not logged (the log ring was full): the log is not "
+                                "complete";
   if (partial_ == path_) {  // written directly (not a regular file)
-    return errno_ == 0
-               ? ""
-               : path_.string() + ": writing the log failed (" + std::strerror(errno_) + ")";
+    if (errno_ != 0) {
+      return path_.string() + ": writing the log failed (" + std::strerror(errno_) + ")";
+    }
+    return dropped.empty() ? "" : path_.string() + ": " + dropped;
   }
   std::error_code ec;
-  if (errno_ == 0) {
+  if (errno_ == 0 && dropped.empty()) {
     std::filesystem::rename(partial_, path_, ec);
     if (!ec) return "";
     return partial_.string() + ": the log is complete but could not be renamed to " +
@@ -108,6 +114,10 @@ std::string CandumpWriter::finish() {
   const std::filesystem::path incomplete(path_.string() + ".incomplete");
   std::filesystem::rename(partial_, incomplete, ec);
   const std::filesystem::path kept = ec ? partial_ : incomplete;
+  if (errno_ == 0) {
+    return path_.string() + ": " + dropped + "; the frames that were logged are in " +
+           kept.string() + ", not claimed as the log";
+  }
   const std::uintmax_t bytes = std::filesystem::file_size(kept, ec);
   return path_.string() + ": writing the log failed (" + std::strerror(errno_) + "); the " +
          (ec ? std::string("?") : std::to_string(bytes)) +

@@ -34,7 +34,8 @@ std::vector<LoggedFrame> read_candump_log(const std::filesystem::path& path);
 /// A log is never claimed complete when it is not: the frames go to `<path>.partial`, which gets
 /// its name `<path>` only when finish() has written and flushed every one of them. If a write
 /// fails (a full disk, a file-size limit) the writer stops writing, and finish() keeps what reached
-/// the disk as `<path>.incomplete` and says so. A target that exists and
+/// the disk as `<path>.incomplete` and says so; so it does when frames never reached the writer
+/// (a full log ring: finish's `dropped_frames`). A target that exists and
 /// is not a regular file (/dev/stdout, a pipe) is written directly.
 class CandumpWriter {
  public:
@@ -48,9 +49,10 @@ class CandumpWriter {
   void open(const std::filesystem::path& path, std::string interface);
   [[nodiscard]] bool is_open() const noexcept { return file_ != nullptr; }
   void write(const proto::CanFrame& frame, std::int64_t time_ns) noexcept;
-  /// Flushes and closes. Returns "" when every frame was written (the log now has its name), else
-  /// what went wrong, naming the file and where what reached the disk is.
-  [[nodiscard]] std::string finish();
+  /// Flushes and closes. Returns "" when every frame was written and none was dropped before the
+  /// writer (`dropped_frames`, counted by the caller: a full log ring), the log now having its
+  /// name; else what went wrong, naming the file and where what reached the disk is.
+  [[nodiscard]] std::string finish(std::uint64_t dropped_frames = 0);
 
  private:
   void abandon() noexcept;

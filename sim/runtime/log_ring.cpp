@@ -35,12 +35,4 @@ void LogRingWriter::stop() {
   }
 }
 
-std::string log_ring_error(const std::filesystem::path& log, std::uint64_t dropped) {
-  if (dropped == 0) {
-    return {};
-  }
-  return log.string() + ": " + std::to_string(dropped) +
-         " frames were not logged (the log ring was full): the log is not complete";
-}
-
 }  // namespace tread::host

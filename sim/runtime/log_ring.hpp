@@ -2,12 +2,11 @@
 // Logging off the real-time thread: the loop's observer puts every frame it receives and sends
 // into a lock-free ring (no I/O, no lock, no heap on the loop's side), and a writer thread at
 // normal priority takes them out and writes the candump log. A full ring drops the record and
-// counts it: the loop never waits for the disk. A log with dropped records is not complete, and
-// finish() says so.
+// counts it: the loop never waits for the disk. A log with dropped records is not complete:
+// CandumpWriter::finish(dropped) keeps it as `<path>.incomplete` and says so.
 
 #include <atomic>
 #include <cstdint>
-#include <filesystem>
 #include <memory>
 #include <string>
 #include <thread>
@@ -44,7 +43,8 @@ struct RingRecorder {
 
 /// The writer thread: drains the ring into a CandumpWriter until stopped, then drains the rest. It
 /// runs on the default scheduler and off `realtime_cpu` (the loop's CPU; -1: anywhere), whatever
-/// the thread that starts it (hal::become_helper): never at the loop's priority or on its CPU.
+/// the thread that starts it (hal::become_helper): never at the loop's priority, nor on its CPU
+/// unless that is the only one the process may use.
 class LogRingWriter {
  public:
   /// Starts the thread; `writer` must be open and outlive this.
@@ -62,8 +62,5 @@ class LogRingWriter {
   std::atomic<bool> stop_{false};
   std::thread thread_;
 };
-
-/// "" when no record was dropped, else the error that says the log at `log` is not complete.
-std::string log_ring_error(const std::filesystem::path& log, std::uint64_t dropped);
 
 }  // namespace tread::host

@@ -56,10 +56,7 @@ SessionReport run_with(Bus& bus, Pin& pin, NodeRuntime& runtime, const NodeSetti
     log_thread->stop();
   }
   report.counters = runtime.counters();
-  report.log_error = writer.finish();
-  if (report.log_error.empty()) {
-    report.log_error = log_ring_error(options.log, recorder.dropped);
-  }
+  report.log_error = writer.finish(recorder.dropped);
   return report;
 }
 

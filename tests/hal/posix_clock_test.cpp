@@ -60,10 +60,11 @@ TEST(Realtime, HelperLeavesTheRealtimeCpuAndPriority) {
     int policy{-1}, cpus{0};
   } seen;
   std::thread helper([&] {
-    cpu_set_t one;
-    CPU_ZERO(&one);
-    CPU_SET(static_cast<std::size_t>(loop_cpu), &one);
-    seen.pinned = ::pthread_setaffinity_np(::pthread_self(), sizeof(one), &one) == 0;
+    // Pinned as the loop pins itself (apply_realtime keeps the CPUs it had before), then started
+    // as a helper would be from there: on the loop's CPU at a SCHED_FIFO priority.
+    RealtimeRequest pin;
+    pin.cpu = loop_cpu;
+    seen.pinned = apply_realtime(pin).ok;
     sched_param fifo{};
     fifo.sched_priority = 10;
     seen.fifo = ::pthread_setschedparam(::pthread_self(), SCHED_FIFO, &fifo) == 0;  // root only

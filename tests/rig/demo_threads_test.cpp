@@ -13,6 +13,7 @@
 
 #include "demo_run.hpp"
 #include "rig/hil_demo.hpp"
+#include "runtime/candump_log.hpp"
 #include "runtime/node_session.hpp"
 
 namespace tread::host {
@@ -139,6 +140,36 @@ TEST(LiveNode, LogThroughTheRingIsWhole) {
   }
   EXPECT_EQ(statuses, report.loop.cycles);
   EXPECT_GT(lines, statuses);
+}
+
+// A log whose frames did not all reach the writer (a full ring) never gets its name: it is kept as
+// `<path>.incomplete` and finish() says how many were lost; with none lost it is the log.
+TEST(CandumpWriter, DroppedFramesKeepTheLogIncomplete) {
+  const std::filesystem::path dir = testing::rig_test_dir("candump_dropped");
+  proto::CanFrame frame{};
+  frame.id = 0x0F0;
+  frame.len = 1;
+  for (const std::uint64_t dropped : {std::uint64_t{0}, std::uint64_t{2}}) {
+    const std::filesystem::path log = dir / ("run_" + std::to_string(dropped) + ".log");
+    const std::filesystem::path kept(log.string() + ".incomplete");
+    std::filesystem::remove(log);
+    std::filesystem::remove(kept);
+    CandumpWriter writer;
+    writer.open(log, "vcan0");
+    for (int i = 0; i < 3; ++i) writer.write(frame, 1'000'000 * i);
+    const std::string error = writer.finish(dropped);
+    if (dropped == 0) {
+      EXPECT_EQ(error, "");
+      EXPECT_TRUE(std::filesystem::exists(log));
+      EXPECT_FALSE(std::filesystem::exists(kept));
+    } else {
+      EXPECT_NE(error.find("2 frames were not logged"), std::string::npos) << error;
+      EXPECT_NE(error.find(kept.string()), std::string::npos) << error;
+      EXPECT_FALSE(std::filesystem::exists(log));
+      ASSERT_TRUE(std::filesystem::exists(kept));
+      EXPECT_EQ(read_candump_log(kept).size(), 3U);
+    }
+  }
 }
 
 }  // namespace
