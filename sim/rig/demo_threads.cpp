@@ -83,17 +83,8 @@ DemoResult run_threads(const DemoSettings& s, NodeRuntime& runtime, NodeBus& nod
   DemoResult result;
   result.threaded = true;
 
-  // The log: written by a normal thread from the ring the node's loop fills.
-  CandumpWriter writer;
-  std::unique_ptr<LogRingBuffer> ring;
-  std::optional<LogRingWriter> log_thread;
-  RingRecorder recorder;
-  if (!s.log.empty()) {
-    writer.open(s.log, s.can);
-    ring = std::make_unique<LogRingBuffer>();
-    recorder.ring = ring.get();
-    log_thread.emplace(*ring, writer, s.realtime.cpu);
-  }
+  // The log: written by a normal thread, off the node's CPU, from the ring the node's loop fills.
+  RingLog log(s.log, s.can, s.realtime.cpu);
 
   // The node's thread.
   std::atomic<bool> ready{false};
@@ -113,7 +104,7 @@ DemoResult run_threads(const DemoSettings& s, NodeRuntime& runtime, NodeBus& nod
       hal::LoopConfig config;
       config.period_ns = period_ns;
       config.schedule = cfg.schedule;
-      hal::LoopRunner loop(node, node_bus, clock, pin, config, recorder);
+      hal::LoopRunner loop(node, node_bus, clock, pin, config, log.recorder());
       ready.store(true, std::memory_order_release);
       std::int64_t t0 = -1;
       while ((t0 = first_deadline_ns.load(std::memory_order_acquire)) < 0) {
@@ -210,16 +201,14 @@ DemoResult run_threads(const DemoSettings& s, NodeRuntime& runtime, NodeBus& nod
   guard.join();
   hal::leave_fifo();
 
-  if (log_thread) {
-    log_thread->stop();
-  }
+  const std::string log_error = log.finish();
   rig.finish(s, result);
   result.report.loop = *stats;
   result.report.counters = runtime.counters();
   result.report.notes = node_rt.messages;
   result.rig_notes = rig_rt.messages.empty() ? "" : "rig thread: " + rig_rt.messages;
-  result.log_records_dropped = recorder.dropped;
-  result.report.log_error = writer.finish(result.log_records_dropped);
+  result.log_records_dropped = log.dropped();
+  result.report.log_error = log_error;
   return result;
 }
 

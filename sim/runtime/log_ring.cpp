@@ -35,4 +35,22 @@ void LogRingWriter::stop() {
   }
 }
 
+RingLog::RingLog(const std::filesystem::path& path, const std::string& interface,
+                 int realtime_cpu) {
+  if (path.empty()) {
+    return;
+  }
+  writer_.open(path, interface);
+  ring_ = std::make_unique<LogRingBuffer>();
+  recorder_.ring = ring_.get();
+  thread_.emplace(*ring_, writer_, realtime_cpu);
+}
+
+std::string RingLog::finish() {
+  if (thread_) {
+    thread_->stop();
+  }
+  return writer_.finish(recorder_.dropped);
+}
+
 }  // namespace tread::host

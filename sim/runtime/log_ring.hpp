@@ -7,7 +7,9 @@
 
 #include <atomic>
 #include <cstdint>
+#include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -61,6 +63,29 @@ class LogRingWriter {
   CandumpWriter& writer_;
   std::atomic<bool> stop_{false};
   std::thread thread_;
+};
+
+/// A candump log written off the real-time thread: the writer, the ring and the writer thread, for
+/// a loop whose observer is recorder(). Without a path nothing is recorded or written.
+class RingLog {
+ public:
+  /// Opens the log (throws std::runtime_error if it cannot) and starts the writer thread, off
+  /// `realtime_cpu` (see LogRingWriter).
+  RingLog(const std::filesystem::path& path, const std::string& interface, int realtime_cpu);
+
+  [[nodiscard]] RingRecorder& recorder() noexcept { return recorder_; }
+  /// Records the full ring refused (read after the loop has stopped).
+  [[nodiscard]] std::uint64_t dropped() const noexcept { return recorder_.dropped; }
+  /// After the loop has stopped: writes what is left in the ring, stops the thread and closes the
+  /// log. "" when it is whole, else why not (CandumpWriter::finish, with the dropped records).
+  [[nodiscard]] std::string finish();
+
+ private:
+  // Destroyed in reverse: the thread is stopped before the ring and the writer go.
+  CandumpWriter writer_;
+  std::unique_ptr<LogRingBuffer> ring_;
+  RingRecorder recorder_;
+  std::optional<LogRingWriter> thread_;
 };
 
 }  // namespace tread::host

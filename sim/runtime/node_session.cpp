@@ -5,8 +5,6 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
-#include <memory>
-#include <optional>
 #include <ostream>
 #include <stdexcept>
 #include <vector>
@@ -37,26 +35,15 @@ SessionReport run_with(Bus& bus, Pin& pin, NodeRuntime& runtime, const NodeSetti
   hal::PosixClock clock;
   // The log: the loop puts its frames into a lock-free ring, a writer thread (default scheduler,
   // off the loop's CPU) writes them; no I/O on the real-time thread.
-  CandumpWriter writer;
-  std::unique_ptr<LogRingBuffer> ring;
-  std::optional<LogRingWriter> log_thread;
-  RingRecorder recorder;
-  if (!options.log.empty()) {
-    writer.open(options.log, options.can);
-    ring = std::make_unique<LogRingBuffer>();
-    recorder.ring = ring.get();
-    log_thread.emplace(*ring, writer, options.realtime.cpu);
-  }
+  RingLog log(options.log, options.can, options.realtime.cpu);
   report.loop = runtime.visit([&](auto& node) {
-    hal::LoopRunner loop(node, bus, clock, pin, loop_config(settings, options.period_us), recorder);
+    hal::LoopRunner loop(node, bus, clock, pin, loop_config(settings, options.period_us),
+                         log.recorder());
     loop.run(options.cycles == 0 ? ~std::uint64_t{0} : options.cycles, stop);
     return loop.stats();
   });
-  if (log_thread) {
-    log_thread->stop();
-  }
   report.counters = runtime.counters();
-  report.log_error = writer.finish(recorder.dropped);
+  report.log_error = log.finish();
   return report;
 }
 
