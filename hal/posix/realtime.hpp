@@ -30,7 +30,9 @@ struct RealtimeReport {
   std::string messages;  ///< one line per step: what was done or why the system refused it
 };
 
-/// Applies the request to the calling thread/process. Never throws; failures are reported.
+/// Applies the request to the calling thread/process. Never throws; failures are reported. The
+/// first call that pins a thread keeps the CPUs that thread could use before (for become_helper):
+/// the process's, as long as no thread was narrowed by other means first.
 RealtimeReport apply_realtime(const RealtimeRequest& request);
 
 /// Puts the calling thread back on the default scheduler (SCHED_OTHER); affinity and locked memory

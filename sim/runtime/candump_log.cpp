@@ -60,8 +60,10 @@ void CandumpWriter::open(const std::filesystem::path& path, std::string interfac
   }
   if (!special) {
     // An older log under this name is not this run's: gone now, as opening it for writing would
-    // have truncated it, so a failed run cannot leave it standing as if complete.
+    // have truncated it, so a failed run cannot leave it standing as if complete; so is an older
+    // run's incomplete one, which would otherwise stand beside this run's log.
     std::filesystem::remove(path, ec);
+    std::filesystem::remove(path.string() + ".incomplete", ec);
   }
   buffer_.assign(1U << 20U, '\0');
   std::setvbuf(file_, buffer_.data(), _IOFBF, buffer_.size());
@@ -98,9 +100,11 @@ std::string CandumpWriter::finish(std::uint64_t dropped_frames) {
                           : std::to_string(dropped_frames) +
                                 " frames were not logged (the log ring was full): the log is not "
                                 "complete";
+  const std::string also_dropped = dropped.empty() ? "" : "; " + dropped;
   if (partial_ == path_) {  // written directly (not a regular file)
     if (errno_ != 0) {
-      return path_.string() + ": writing the log failed (" + std::strerror(errno_) + ")";
+      return path_.string() + ": writing the log failed (" + std::strerror(errno_) + ")" +
+             also_dropped;
     }
     return dropped.empty() ? "" : path_.string() + ": " + dropped;
   }
@@ -119,8 +123,8 @@ std::string CandumpWriter::finish(std::uint64_t dropped_frames) {
            kept.string() + ", not claimed as the log";
   }
   const std::uintmax_t bytes = std::filesystem::file_size(kept, ec);
-  return path_.string() + ": writing the log failed (" + std::strerror(errno_) + "); the " +
-         (ec ? std::string("?") : std::to_string(bytes)) +
+  return path_.string() + ": writing the log failed (" + std::strerror(errno_) + ")" +
+         also_dropped + "; the " + (ec ? std::string("?") : std::to_string(bytes)) +
          " bytes that reached the disk (the last line may be cut short) are in " + kept.string() +
          ", not claimed as the log";
 }

@@ -47,10 +47,13 @@ RingLog::RingLog(const std::filesystem::path& path, const std::string& interface
 }
 
 std::string RingLog::finish() {
-  if (thread_) {
-    thread_->stop();
+  if (!finished_) {
+    if (thread_) {
+      thread_->stop();
+    }
+    finished_ = writer_.finish(recorder_.dropped);
   }
-  return writer_.finish(recorder_.dropped);
+  return *finished_;
 }
 
 }  // namespace tread::host

@@ -77,7 +77,8 @@ class RingLog {
   /// Records the full ring refused (read after the loop has stopped).
   [[nodiscard]] std::uint64_t dropped() const noexcept { return recorder_.dropped; }
   /// After the loop has stopped: writes what is left in the ring, stops the thread and closes the
-  /// log. "" when it is whole, else why not (CandumpWriter::finish, with the dropped records).
+  /// log. "" when it is whole, else why not (CandumpWriter::finish, with the dropped records); a
+  /// second call gives the first one's answer.
   [[nodiscard]] std::string finish();
 
  private:
@@ -85,6 +86,7 @@ class RingLog {
   CandumpWriter writer_;
   std::unique_ptr<LogRingBuffer> ring_;
   RingRecorder recorder_;
+  std::optional<std::string> finished_;  ///< finish()'s answer, once given
   std::optional<LogRingWriter> thread_;
 };
 

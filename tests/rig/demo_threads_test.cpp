@@ -170,6 +170,14 @@ TEST(CandumpWriter, DroppedFramesKeepTheLogIncomplete) {
       EXPECT_EQ(read_candump_log(kept).size(), 3U);
     }
   }
+  // A later run under the same name that is whole leaves no older run's .incomplete beside it.
+  const std::filesystem::path log = dir / "run_2.log";
+  CandumpWriter again;
+  again.open(log, "vcan0");
+  again.write(frame, 0);
+  EXPECT_EQ(again.finish(), "");
+  EXPECT_TRUE(std::filesystem::exists(log));
+  EXPECT_FALSE(std::filesystem::exists(log.string() + ".incomplete"));
 }
 
 }  // namespace
