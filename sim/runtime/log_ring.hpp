@@ -50,7 +50,7 @@ struct RingRecorder {
 class LogRingWriter {
  public:
   /// Starts the thread; `writer` must be open and outlive this.
-  LogRingWriter(LogRingBuffer& ring, CandumpWriter& writer, int realtime_cpu = -1);
+  LogRingWriter(LogRingBuffer& ring, CandumpWriter& writer, int realtime_cpu);
   LogRingWriter(const LogRingWriter&) = delete;
   LogRingWriter& operator=(const LogRingWriter&) = delete;
   ~LogRingWriter();
