@@ -73,8 +73,6 @@ struct Fz62Curve {
   // q = 2·Q_FCY2.
   T pow_c1, pow_c2, pow_c3, pow_c4, pow_c5, pow_c6;  // binomial coefficients C(q, k)
   T pow_c7_abs;                                      // |C(q, 7)|: the series' remainder
-  T pow_d2, pow_d3, pow_d4, pow_d5, pow_d6;          // k·C(q, k): the series' derivative
-  T pow_e3, pow_e4;  // k·(k − 1)·C(q, k) for k = 3, 4 (k = 2: pow_d2): the second derivative to δ²
 };
 
 template <typename T, typename P>
@@ -133,13 +131,6 @@ Fz62Curve<T, P> fz62_curve(const MfParameters<P>& p, const T& gamma, const T& om
   // At least 1e-3: at a whole q C(q,7) is 0 and the series exact in value, but not its
   // derivative with respect to Q_FCY2 (a fit's Jet), whose truncation this keeps below ε/2e-3.
   c.pow_c7_abs = T(max_of(c7 < P(0) ? -c7 : c7, P(1e-3)));
-  c.pow_d2 = T(P(2) * c2);
-  c.pow_d3 = T(P(3) * c3);
-  c.pow_d4 = T(P(4) * c4);
-  c.pow_d5 = T(P(5) * c5);
-  c.pow_d6 = T(P(6) * c6);
-  c.pow_e3 = T(P(6) * c3);
-  c.pow_e4 = T(P(12) * c4);
   return c;
 }
 
@@ -178,15 +169,15 @@ struct Fz62PowMemo {
   T value = T(0);
 };
 
-/// x^q and its first two derivatives from the memo's base b: (b·(1 + δ))^q = b^q·(1 + C(q,1)δ
-/// + … + C(q,6)δ⁶) where the remainder max(|C(q,7)|, 1e-3)·|δ|⁷ is below half of ε (|δ| < ¼), else
-/// pow, which becomes the new base. The second derivative serves Halley's step only, which needs
-/// it to a few per cent: its series stops at δ².
-template <bool kSecond, typename T, typename P>
-[[gnu::always_inline]] inline T fz62_pow(const Fz62Curve<T, P>& c, const T& x, Fz62PowMemo<T>& memo,
-                                         T& derivative, T& second) {
+/// x^q from the memo's base b: (b·(1 + δ))^q = b^q·(1 + C(q,1)δ + … + C(q,6)δ⁶) where the
+/// remainder max(|C(q,7)|, 1e-3)·|δ|⁷ is below half of ε (|δ| < ¼), else pow, which becomes the
+/// new base. Its derivatives are not needed: fz62 takes them as the power times q·x'/x (exact for
+/// x^q, and for the series to its accuracy).
+template <typename T, typename P>
+[[gnu::always_inline]] inline T fz62_pow(const Fz62Curve<T, P>& c, const T& x,
+                                         Fz62PowMemo<T>& memo) {
   constexpr bool coarse = std::is_same_v<T, float> || is_lanes<T> || is_fixed_point<T>;
-  // Without a base in any lane (the first step, as a rule) pow alone, without the series.
+  // Without a base in any lane, pow alone, without the series.
   auto near = memo.base > T(0);
   T series = T(0);
   if (any_lane(near)) {
@@ -200,27 +191,13 @@ template <bool kSecond, typename T, typename P>
     const T s34 = c.pow_c3 + delta * c.pow_c4;
     const T s56 = c.pow_c5 + delta * c.pow_c6;
     series = memo.value * (T(1) + delta * (s12 + delta2 * (s34 + delta2 * s56)));
-    const T d12 = c.pow_c1 + delta * c.pow_d2;
-    const T d34 = c.pow_d3 + delta * c.pow_d4;
-    const T d56 = c.pow_d5 + delta * c.pow_d6;
-    const T scale = memo.value * memo.inv_base;
-    derivative = scale * (d12 + delta2 * (d34 + delta2 * d56));
-    if constexpr (kSecond) {
-      second = scale * memo.inv_base * (c.pow_d2 + delta * c.pow_e3 + delta2 * c.pow_e4);
-    }
   }
   const auto far = !near;
   if (!any_lane(far)) return series;
   const T exact = T(pow(x, T(c.pow_q)));
-  const T inv_x = T(1) / x;
   memo.base = if_else(far, x, memo.base);
-  memo.inv_base = if_else(far, inv_x, memo.inv_base);
+  memo.inv_base = if_else(far, T(1) / x, memo.inv_base);
   memo.value = if_else(far, exact, memo.value);
-  const T exact_derivative = c.pow_c1 * exact * inv_x;
-  derivative = if_else(far, exact_derivative, derivative);
-  if constexpr (kSecond) {
-    second = if_else(far, T(c.pow_q - P(1)) * exact_derivative * inv_x, second);
-  }
   return if_else(far, exact, series);
 }
 
@@ -235,9 +212,10 @@ struct Fz62Value {
 /// Fz62(Rl) − Fz and its derivatives, the second (curvature) only where kSecond (else 0: it is
 /// not dead code for every type, and in fixed point it overflows at light loads).
 /// Fz62 = (base − Fcy²)·S with S = (1 + PFZ1·dpi)·Fz0·(Q_FZ1 + Q_FZ2·x)·x, x = ρz/R0, and
-/// Fcy² = x^(2·Q_FCY2)·L², L = Q_FCY·(Fy − Sfyg)/Fz0, computed as
-/// base·S − Fz − x^(2·Q_FCY2)·(L²·S): what waits for the power is one product and one fused
-/// subtraction.
+/// Fcy² = p·L² with the power p = x^(2·Q_FCY2), L = Q_FCY·(Fy − Sfyg)/Fz0. Each of Fz62 − Fz and
+/// its derivatives is written as a − p·b, with a and b computed while the power is (p' = p·g,
+/// g = q·x'/x; p'' = p·g2): what waits for the power is one product and one subtraction, then
+/// the step's division.
 template <bool kSecond, typename T, typename P>
 [[gnu::always_inline]] inline Fz62Value<T> fz62(const Fz62Curve<T, P>& c, const T& rl,
                                                 const T& fz_target, Fz62PowMemo<T>& memo) {
@@ -258,42 +236,40 @@ template <bool kSecond, typename T, typename P>
   }
   const auto loaded = x > T(0);
   T power = is_zero(c.q_fcy2) ? T(1) : T(0);  // x^(2·Q_FCY2), 0 unloaded (MFeval: 0^q·0)
-  T dpower = T(0);
-  T d2power = T(0);
+  T growth = T(0);                            // g = p'/p = q·x'/x (0 unloaded)
+  T growth2 = T(0);                           // g2 = p''/p = q·((q − 1)·(x'/x)² + x''/x)
   if (any_lane(loaded)) {
-    T derivative = T(0);
-    T second = T(0);
-    power = if_else(
-        loaded, fz62_pow<kSecond>(c, if_else(loaded, x, T(1)), memo, derivative, second), power);
-    dpower = if_else(loaded, derivative * dx, T(0));
-    if constexpr (kSecond) d2power = if_else(loaded, second * dx * dx + derivative * d2x, T(0));
+    const T xl = if_else(loaded, x, T(1));
+    const T inv_x = T(1) / xl;
+    const T ux = if_else(loaded, dx * inv_x, T(0));
+    growth = T(c.pow_q) * ux;
+    if constexpr (kSecond) {
+      growth2 = T(c.pow_q) * (T(c.pow_q - P(1)) * ux * ux + if_else(loaded, d2x * inv_x, T(0)));
+    }
+    power = if_else(loaded, fz62_pow(c, xl, memo), power);
   }
   const T lateral = c.fcy_per_force * (c.fy - sfyg);
   const T dlateral = c.fcy_per_force * dsfyg;  // −dL/dRl
   const T lateral2 = lateral * lateral;
   const T dlateral2 = T(-2) * lateral * dlateral;
-  T d2lateral2 = T(0);
-  if constexpr (kSecond) {
-    d2lateral2 = T(2) * (dlateral * dlateral - lateral * c.fcy_per_force * d2sfyg);
-  }
   const T stiffness = (c.q_fz1 + c.q_fz2 * x) * x * c.stiffness_scale;
   const T rate = (c.q_fz1 + T(2) * c.q_fz2 * x) * c.stiffness_scale;  // dS/dx
   const T dstiffness = rate * dx;
-  T d2stiffness = T(0);
-  if constexpr (kSecond) d2stiffness = T(2) * c.q_fz2 * c.stiffness_scale * dx * dx + rate * d2x;
+  // (Fcy²)' = p·(g·L² + (L²)'), (Fcy²)'' = p·(g2·L² + 2·g·(L²)' + (L²)'').
+  const T dfcy2_per_power = growth * lateral2 + dlateral2;
   const T excess = (c.base * stiffness - fz_target) - power * (lateral2 * stiffness);
-  const T fcy2 = power * lateral2;
-  const T dfcy2 = dpower * lateral2 + power * dlateral2;
-  T d2fcy2 = T(0);
-  if constexpr (kSecond) {
-    d2fcy2 = d2power * lateral2 + T(2) * dpower * dlateral2 + power * d2lateral2;
-  }
-  const T fcorr = c.base - fcy2;
+  const T slope =
+      c.base * dstiffness - power * (lateral2 * dstiffness + dfcy2_per_power * stiffness);
   T curvature = T(0);
   if constexpr (kSecond) {
-    curvature = fcorr * d2stiffness - T(2) * dfcy2 * dstiffness - d2fcy2 * stiffness;
+    const T d2stiffness = T(2) * c.q_fz2 * c.stiffness_scale * dx * dx + rate * d2x;
+    const T d2lateral2 = T(2) * (dlateral * dlateral - lateral * c.fcy_per_force * d2sfyg);
+    const T d2fcy2_per_power = growth2 * lateral2 + T(2) * growth * dlateral2 + d2lateral2;
+    curvature = c.base * d2stiffness -
+                power * (lateral2 * d2stiffness + T(2) * dfcy2_per_power * dstiffness +
+                         d2fcy2_per_power * stiffness);
   }
-  return {excess, fcorr * dstiffness - dfcy2 * stiffness, curvature, rho_z, drho_z, d2rho_z};
+  return {excess, slope, curvature, rho_z, drho_z, d2rho_z};
 }
 
 /// x = ρ/R0 with q_fz2·x² + q_fz1·x = Fz / ((base − Fcy²)·(1 + PFZ1·dpi)·Fz0), the positive root
@@ -326,15 +302,17 @@ struct LoadedRadius62 {
 ///   limits off) and that end is the answer, as bisection gives.
 /// - Start: the MF 6.1-style deflection (the quadratic in ρ/R0 with the Rl-independent
 ///   corrections) less the camber's deflection at Romega. It leaves out Fcy's factor
-///   (ρz/R0)^Q_FCY2 and is a few mm off (1 cm where that factor matters most).
+///   (ρz/R0)^Q_FCY2 and is a few mm off (1 cm where that factor matters most). The power at the
+///   start's deflection is computed alongside its Rl (it seeds the memo of fz62_pow), so that the
+///   first evaluation, at nearly that deflection, need not wait for pow.
 /// - The step: in double (and a fit's Jets) and on lanes Halley's, −F·F'/(F'² − ½·F·F''), cubic,
 ///   where its factor on Newton's step, 1/(1 − F·F''/(2·F'²)), is within [2/3, 2] (else, far from
 ///   the root, Newton's). On the benchmark's points this takes double from 3.4 evaluations per
 ///   wheel on average to 2.5, and on lanes, where the slowest lane sets the count, the groups of
 ///   four needing a third from three quarters to 6 % without a start corrected for Fcy's factor
 ///   (13 % with it, which is therefore gone). Float takes Newton's step: in the portable scalar
-///   build (no FMA) the second derivative costs more than the evaluations it saves (measured: +7 ns
-///   per solve alone, +8–10 ns per MF 6.2 evaluation); fixed point too (F'² of ~1e6 N/m overflows
+///   build (no FMA) the second derivative costs more than the evaluations it saves (measured: +6 ns
+///   per solve alone, +8 ns per MF 6.2 evaluation); fixed point too (F'² of ~1e6 N/m overflows
 ///   Q31.32), and neither computes the second derivative.
 /// - A step is taken where it lands inside the bracket and the slope is negative, else the
 ///   bracket's midpoint (or its far end, not yet evaluated). Converged when a step is at most
@@ -398,6 +376,15 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
   const T x0 = quadratic_deflection(c, fz_target, c.fcy_per_force * c.fy);
   // The camber's deflection at Romega is carried already; the free-rolling part makes up the rest.
   const T rho_zfr0 = max_of(x0 * c.r0 - rho_romega, T(0)) * c.inv_free_share;
+  // The power at the start's deflection, computed while its Rl and ρz are: the first evaluation
+  // (at ρz ≈ x0·R0) then takes it from the memo's series instead of waiting for pow.
+  const auto seeded = x0 > T(0);
+  if (any_lane(seeded)) {
+    const T xs = if_else(seeded, x0, T(1));
+    memo.base = if_else(seeded, xs, memo.base);
+    memo.inv_base = if_else(seeded, T(1) / xs, memo.inv_base);
+    memo.value = if_else(seeded, T(pow(xs, T(c.pow_q))), memo.value);
+  }
   T rl = min_of(max_of(c.romega - rho_zfr0, lo), hi);
   auto active = !(T(0) > T(0));     // every lane
   auto previous_settles = !active;  // the previous step may start a settled estimate (below)
