@@ -5,6 +5,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <ostream>
 #include <stdexcept>
 #include <vector>
@@ -30,12 +31,9 @@ hal::LoopConfig loop_config(const NodeSettings& s, std::int64_t period_us) {
 
 template <typename Bus, typename Pin>
 SessionReport run_with(Bus& bus, Pin& pin, NodeRuntime& runtime, const NodeSettings& settings,
-                       const LiveOptions& options, const std::atomic<bool>* stop,
+                       const LiveOptions& options, RingLog& log, const std::atomic<bool>* stop,
                        SessionReport report) {
   hal::PosixClock clock;
-  // The log: the loop puts its frames into a lock-free ring, a writer thread (default scheduler,
-  // off the loop's CPU) writes them; no I/O on the real-time thread.
-  RingLog log(options.log, options.can, options.realtime.cpu);
   report.loop = runtime.visit([&](auto& node) {
     hal::LoopRunner loop(node, bus, clock, pin, loop_config(settings, options.period_us),
                          log.recorder());
@@ -62,6 +60,21 @@ SessionReport run_live(const NodeSettings& settings, const LiveOptions& options,
       report.notes += "GPIO: " + pin.error() + "; running without the cycle pin\n";
     }
   }
+  // The bus first: a run that cannot open it leaves no log behind.
+  hal::PosixClock stub_clock;
+  std::optional<hal::StubCanNetwork> network;
+  hal::SocketCanBus bus;
+  if (options.can == "stub") {
+    network.emplace(&hal::clock_now<hal::PosixClock>, &stub_clock);
+  } else {
+    open_protocol_socket(bus, options.can, settings.node.layout, proto::Direction::rig_to_node);
+    report.receive_buffer_bytes = bus.receive_buffer_bytes();
+  }
+  // The log: the loop puts its frames into a lock-free ring, a writer thread (default scheduler,
+  // off the loop's CPU) writes them; no I/O on the real-time thread. Opened before the real-time
+  // settings, so that the ring and the thread's stack are allocated before mlockall (which locks
+  // them) and the thread starts on the default scheduler, not at the loop's priority.
+  RingLog log(options.log, options.can, options.realtime.cpu);
   hal::RealtimeRequest request = options.realtime;
   request.no_idle_states = request.fifo_priority > 0;  // a real-time run, as cyclictest
   const hal::RealtimeReport rt = hal::apply_realtime(request);
@@ -70,15 +83,10 @@ SessionReport run_live(const NodeSettings& settings, const LiveOptions& options,
   // means the run that follows is not real-time).
   std::cerr << rt.messages << std::flush;
 
-  if (options.can == "stub") {
-    hal::PosixClock clock;
-    hal::StubCanNetwork network(&hal::clock_now<hal::PosixClock>, &clock);
-    return run_with(network.endpoint(0), pin, runtime, settings, options, stop, report);
+  if (network) {
+    return run_with(network->endpoint(0), pin, runtime, settings, options, log, stop, report);
   }
-  hal::SocketCanBus bus;
-  open_protocol_socket(bus, options.can, settings.node.layout, proto::Direction::rig_to_node);
-  report.receive_buffer_bytes = bus.receive_buffer_bytes();
-  report = run_with(bus, pin, runtime, settings, options, stop, report);
+  report = run_with(bus, pin, runtime, settings, options, log, stop, report);
   report.rx_queue_overflows = bus.rx_overflows();
   return report;
 }
