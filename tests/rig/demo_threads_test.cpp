@@ -142,6 +142,21 @@ TEST(LiveNode, LogThroughTheRingIsWhole) {
   EXPECT_GT(lines, statuses);
 }
 
+// A bus that cannot be opened stops the live node before its log is opened: no log, complete or
+// incomplete, is left behind.
+TEST(LiveNode, AnUnopenableBusLeavesNoLog) {
+  const DemoSettings s = demo_settings({"sweep"}, "live_node_no_bus");
+  LiveOptions live;
+  live.can = "tread_no_such_can0";
+  live.cycles = 10;
+  live.log = s.out_dir / "never.log";
+  std::filesystem::remove(live.log);
+  std::filesystem::remove(live.log.string() + ".incomplete");
+  EXPECT_ANY_THROW(static_cast<void>(run_live(s.node, live, nullptr)));
+  EXPECT_FALSE(std::filesystem::exists(live.log));
+  EXPECT_FALSE(std::filesystem::exists(live.log.string() + ".incomplete"));
+}
+
 // A log whose frames did not all reach the writer (a full ring) never gets its name: it is kept as
 // `<path>.incomplete` and finish() says how many were lost; with none lost it is the log.
 TEST(CandumpWriter, DroppedFramesKeepTheLogIncomplete) {
