@@ -159,9 +159,9 @@ template <typename T, typename P>
   return fz62_deflection(c, rl, slope, curvature);
 }
 
-/// (ρz/R0)^(2·Q_FCY2) at the last point where it was computed exactly: the steps near a root
-/// move ρz by little, and a Taylor series about that point is exact to the output's resolution
-/// there at a fraction of pow's cost.
+/// (ρz/R0)^(2·Q_FCY2) at the last point where it was computed exactly (or at the start's
+/// deflection, before the first evaluation): the steps near a root move ρz by little, and a Taylor
+/// series about that point is exact to the output's resolution there at a fraction of pow's cost.
 template <typename T>
 struct Fz62PowMemo {
   T base = T(0);  // ρz/R0 where pow was evaluated (0: none yet)
@@ -213,9 +213,9 @@ struct Fz62Value {
 /// not dead code for every type, and in fixed point it overflows at light loads).
 /// Fz62 = (base − Fcy²)·S with S = (1 + PFZ1·dpi)·Fz0·(Q_FZ1 + Q_FZ2·x)·x, x = ρz/R0, and
 /// Fcy² = p·L² with the power p = x^(2·Q_FCY2), L = Q_FCY·(Fy − Sfyg)/Fz0. Each of Fz62 − Fz and
-/// its derivatives is written as a − p·b, with a and b computed while the power is (p' = p·g,
-/// g = q·x'/x; p'' = p·g2): what waits for the power is one product and one subtraction, then
-/// the step's division.
+/// its derivatives is written as a − p·b, with a and b computed while the power is (p' = p·g with
+/// g = q·x'/x, p'' = p·g2): what waits for the power is one product and one subtraction, then the
+/// step's division.
 template <bool kSecond, typename T, typename P>
 [[gnu::always_inline]] inline Fz62Value<T> fz62(const Fz62Curve<T, P>& c, const T& rl,
                                                 const T& fz_target, Fz62PowMemo<T>& memo) {
@@ -236,34 +236,34 @@ template <bool kSecond, typename T, typename P>
   }
   const auto loaded = x > T(0);
   T power = is_zero(c.q_fcy2) ? T(1) : T(0);  // x^(2·Q_FCY2), 0 unloaded (MFeval: 0^q·0)
-  T growth = T(0);                            // g = p'/p = q·x'/x (0 unloaded)
-  T growth2 = T(0);                           // g2 = p''/p = q·((q − 1)·(x'/x)² + x''/x)
   if (any_lane(loaded)) {
-    const T xl = if_else(loaded, x, T(1));
-    const T inv_x = T(1) / xl;
-    const T ux = if_else(loaded, dx * inv_x, T(0));
-    growth = T(c.pow_q) * ux;
-    if constexpr (kSecond) {
-      growth2 = T(c.pow_q) * (T(c.pow_q - P(1)) * ux * ux + if_else(loaded, d2x * inv_x, T(0)));
-    }
-    power = if_else(loaded, fz62_pow(c, xl, memo), power);
+    power = if_else(loaded, fz62_pow(c, if_else(loaded, x, T(1)), memo), power);
   }
   const T lateral = c.fcy_per_force * (c.fy - sfyg);
   const T dlateral = c.fcy_per_force * dsfyg;  // −dL/dRl
   const T lateral2 = lateral * lateral;
   const T dlateral2 = T(-2) * lateral * dlateral;
   const T stiffness = (c.q_fz1 + c.q_fz2 * x) * x * c.stiffness_scale;
+  const T per_x = (c.q_fz1 + c.q_fz2 * x) * c.stiffness_scale;        // S/x
   const T rate = (c.q_fz1 + T(2) * c.q_fz2 * x) * c.stiffness_scale;  // dS/dx
   const T dstiffness = rate * dx;
-  // (Fcy²)' = p·(g·L² + (L²)'), (Fcy²)'' = p·(g2·L² + 2·g·(L²)' + (L²)'').
-  const T dfcy2_per_power = growth * lateral2 + dlateral2;
+  // (Fcy²)'·S = p·(g·S·L² + (L²)'·S) with g·S = q·x'·(S/x): no division by x, which overflows
+  // fixed point at the lightest loads (x' is 0 unloaded).
+  const T growth_s = T(c.pow_q) * dx * per_x;
   const T excess = (c.base * stiffness - fz_target) - power * (lateral2 * stiffness);
-  const T slope =
-      c.base * dstiffness - power * (lateral2 * dstiffness + dfcy2_per_power * stiffness);
+  const T slope = c.base * dstiffness -
+                  power * (lateral2 * dstiffness + growth_s * lateral2 + dlateral2 * stiffness);
   T curvature = T(0);
   if constexpr (kSecond) {
+    // g = p'/p = q·x'/x, g2 = p''/p = q·((q − 1)·(x'/x)² + x''/x) (0 unloaded, where x' = x'' = 0);
+    // (Fcy²)'' = p·(g2·L² + 2·g·(L²)' + (L²)'').
+    const T inv_x = T(1) / if_else(loaded, x, T(1));
+    const T ux = dx * inv_x;
+    const T growth = T(c.pow_q) * ux;
+    const T growth2 = T(c.pow_q) * (T(c.pow_q - P(1)) * ux * ux + d2x * inv_x);
     const T d2stiffness = T(2) * c.q_fz2 * c.stiffness_scale * dx * dx + rate * d2x;
     const T d2lateral2 = T(2) * (dlateral * dlateral - lateral * c.fcy_per_force * d2sfyg);
+    const T dfcy2_per_power = growth * lateral2 + dlateral2;
     const T d2fcy2_per_power = growth2 * lateral2 + T(2) * growth * dlateral2 + d2lateral2;
     curvature = c.base * d2stiffness -
                 power * (lateral2 * d2stiffness + T(2) * dfcy2_per_power * dstiffness +
@@ -377,13 +377,17 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
   // The camber's deflection at Romega is carried already; the free-rolling part makes up the rest.
   const T rho_zfr0 = max_of(x0 * c.r0 - rho_romega, T(0)) * c.inv_free_share;
   // The power at the start's deflection, computed while its Rl and ρz are: the first evaluation
-  // (at ρz ≈ x0·R0) then takes it from the memo's series instead of waiting for pow.
-  const auto seeded = x0 > T(0);
-  if (any_lane(seeded)) {
-    const T xs = if_else(seeded, x0, T(1));
-    memo.base = if_else(seeded, xs, memo.base);
-    memo.inv_base = if_else(seeded, T(1) / xs, memo.inv_base);
-    memo.value = if_else(seeded, T(pow(xs, T(c.pow_q))), memo.value);
+  // (at ρz ≈ x0·R0 where the free-rolling part is positive) then takes it from the memo's series
+  // instead of waiting for pow. Not in fixed point (no FPU to overlap it with: it would only add a
+  // division and the series), nor where Q_FCY2 = 0.
+  if constexpr (!is_fixed_point<T>) {
+    const auto seeded = rho_zfr0 > T(0);
+    if (!is_zero(c.q_fcy2) && any_lane(seeded)) {
+      const T xs = if_else(seeded, x0, T(1));
+      memo.base = if_else(seeded, xs, memo.base);
+      memo.inv_base = if_else(seeded, T(1) / xs, memo.inv_base);
+      memo.value = if_else(seeded, T(pow(xs, T(c.pow_q))), memo.value);
+    }
   }
   T rl = min_of(max_of(c.romega - rho_zfr0, lo), hi);
   auto active = !(T(0) > T(0));     // every lane

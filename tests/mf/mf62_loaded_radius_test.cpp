@@ -21,6 +21,7 @@
 #include "golden_path.hpp"
 #include "mf/mf_evaluate.hpp"
 #include "mf/mf_evaluate_four.hpp"
+#include "mf/mf_fixed.hpp"
 #include "mf/mf_lanes.hpp"
 #include "tyre/mf_parameters_from_tir.hpp"
 
@@ -492,6 +493,45 @@ BoundScan scan_bound(const MfParameters<double>& p, const std::vector<double>& p
     }
   }
   return scan;
+}
+
+// Fixed point (Q31.32) at the lightest loads, down to a deflection of a few resolution steps:
+// Newton's slope must stay finite there (it had divided by x = ρz/R0, whose reciprocal overflows
+// Q31.32 below about 5e-10, and the solve ended in the 80-step bisection). Upright and without Fy,
+// Rl is the double solve's to 1e-8 m. (With γ = 0.03 the MF 6.2 sample's root lies 18 cm above
+// Romega and fixed point is 0.1 mm off it: the camber scale, 1.4e-7, has only 3 digits in Q31.32;
+// with Fy = 200 N at these loads, Fcy's (ρz/R0)^Q_FCY2 makes it 4e-7 m. Neither is the solver's.)
+TEST(Mf62LoadedRadius, FixedPointAtTheLightestLoadsNeedsNoFallback) {
+  const auto fixed = [](double v) { return Fixed64::from_double(v); };
+  for (const std::string& name : fz62_path_tyres()) {
+    const MfParameters<double> p = load(name.c_str());
+    const MfParameters<Fixed64> px = to_fixed_parameters(p);
+    const double r0 = p.unloaded_radius_m;
+    for (const double fz : {1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 0.1, 1.0, 10.0}) {
+      for (const bool upright : {true, false}) {
+        for (const bool lateral : {false, true}) {
+          const double gamma = upright ? 0.0 : 0.03;
+          const double fy = lateral ? 200.0 : 0.0;
+          const double omega = 50.0;
+          const double w = omega * r0 / p.longvl_mps;
+          const double romega = r0 * (p.q_re0 + p.q_v1 * w * w);
+          const auto solved = detail::loaded_radius62(
+              detail::fz62_curve(px, fixed(gamma), fixed(omega), fixed(romega), fixed(0.0),
+                                 fixed(0.0), fixed(fy)),
+              fixed(fz));
+          const auto reference = detail::loaded_radius62(
+              detail::fz62_curve(p, gamma, omega, romega, 0.0, 0.0, fy), fz);
+          const std::string where = name + " Fz " + std::to_string(fz) + " N, gamma " +
+                                    std::to_string(gamma) + ", Fy " + std::to_string(fy);
+          EXPECT_FALSE(solved.fallback) << where;
+          EXPECT_LE(solved.newton_steps, 11) << where;
+          if (upright && !lateral) {
+            EXPECT_NEAR(solved.rl_m.to_double(), reference.rl_m, 1e-8) << where;
+          }
+        }
+      }
+    }
+  }
 }
 
 // A file with PFZ1 > 1 at a low pressure: MF 6.2 sample file with PFZ1 = 1.5, pressures down to
