@@ -244,30 +244,32 @@ template <bool kSecond, typename T, typename P>
   const T lateral2 = lateral * lateral;
   const T dlateral2 = T(-2) * lateral * dlateral;
   const T stiffness = (c.q_fz1 + c.q_fz2 * x) * x * c.stiffness_scale;
-  const T per_x = (c.q_fz1 + c.q_fz2 * x) * c.stiffness_scale;        // S/x
   const T rate = (c.q_fz1 + T(2) * c.q_fz2 * x) * c.stiffness_scale;  // dS/dx
   const T dstiffness = rate * dx;
-  // (Fcy²)'·S = p·(g·S·L² + (L²)'·S) with g·S = q·x'·(S/x): no division by x, which overflows
-  // fixed point at the lightest loads (x' is 0 unloaded).
-  const T growth_s = T(c.pow_q) * dx * per_x;
   const T excess = (c.base * stiffness - fz_target) - power * (lateral2 * stiffness);
-  const T slope = c.base * dstiffness -
-                  power * (lateral2 * dstiffness + growth_s * lateral2 + dlateral2 * stiffness);
+  T slope = T(0);
   T curvature = T(0);
   if constexpr (kSecond) {
     // g = p'/p = q·x'/x, g2 = p''/p = q·((q − 1)·(x'/x)² + x''/x) (0 unloaded, where x' = x'' = 0);
-    // (Fcy²)'' = p·(g2·L² + 2·g·(L²)' + (L²)'').
+    // (Fcy²)' = p·(g·L² + (L²)'), (Fcy²)'' = p·(g2·L² + 2·g·(L²)' + (L²)'').
     const T inv_x = T(1) / if_else(loaded, x, T(1));
     const T ux = dx * inv_x;
     const T growth = T(c.pow_q) * ux;
     const T growth2 = T(c.pow_q) * (T(c.pow_q - P(1)) * ux * ux + d2x * inv_x);
+    const T dfcy2_per_power = growth * lateral2 + dlateral2;
+    slope = c.base * dstiffness - power * (lateral2 * dstiffness + dfcy2_per_power * stiffness);
     const T d2stiffness = T(2) * c.q_fz2 * c.stiffness_scale * dx * dx + rate * d2x;
     const T d2lateral2 = T(2) * (dlateral * dlateral - lateral * c.fcy_per_force * d2sfyg);
-    const T dfcy2_per_power = growth * lateral2 + dlateral2;
     const T d2fcy2_per_power = growth2 * lateral2 + T(2) * growth * dlateral2 + d2lateral2;
     curvature = c.base * d2stiffness -
                 power * (lateral2 * d2stiffness + T(2) * dfcy2_per_power * dstiffness +
                          d2fcy2_per_power * stiffness);
+  } else {
+    // Without the second derivative (float, fixed point): (Fcy²)'·S = p·(g·S·L² + (L²)'·S) with
+    // g·S = q·x'·(S/x), no division by x (whose reciprocal overflows Q31.32 at the lightest loads).
+    const T growth_s = T(c.pow_q) * dx * ((c.q_fz1 + c.q_fz2 * x) * c.stiffness_scale);
+    slope = c.base * dstiffness -
+            power * (lateral2 * dstiffness + growth_s * lateral2 + dlateral2 * stiffness);
   }
   return {excess, slope, curvature, rho_z, drho_z, d2rho_z};
 }
@@ -383,10 +385,12 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
   if constexpr (!is_fixed_point<T>) {
     const auto seeded = rho_zfr0 > T(0);
     if (!is_zero(c.q_fcy2) && any_lane(seeded)) {
-      const T xs = if_else(seeded, x0, T(1));
+      // x0 > 0 wherever seeded; pow's argument does not wait for the mask.
+      const T xs = if_else(x0 > T(0), x0, T(1));
+      const T value = T(pow(xs, T(c.pow_q)));
       memo.base = if_else(seeded, xs, memo.base);
       memo.inv_base = if_else(seeded, T(1) / xs, memo.inv_base);
-      memo.value = if_else(seeded, T(pow(xs, T(c.pow_q))), memo.value);
+      memo.value = if_else(seeded, value, memo.value);
     }
   }
   T rl = min_of(max_of(c.romega - rho_zfr0, lo), hi);
