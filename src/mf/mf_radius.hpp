@@ -235,7 +235,8 @@ template <bool kSecond, typename T, typename P>
     d2sfyg = T(2) * c.fys3_g * c.inv_romega * c.inv_romega;
   }
   const auto loaded = x > T(0);
-  T power = is_zero(c.q_fcy2) ? T(1) : T(0);  // x^(2·Q_FCY2), 0 unloaded (MFeval: 0^q·0)
+  // x^(2·Q_FCY2); unloaded 0 (MFeval: 0^q·0), or 1 where Q_FCY2 = 0
+  T power = is_zero(c.q_fcy2) ? T(1) : T(0);
   if (any_lane(loaded)) {
     power = if_else(loaded, fz62_pow(c, if_else(loaded, x, T(1)), memo), power);
   }
