@@ -117,14 +117,21 @@ TEST(DemoThreads, PeriodicModeAccountsForEveryCycleAndEveryCheckedAnswerMatches)
   EXPECT_EQ(replay.report.loop.cycles, r.report.loop.cycles);
 }
 
+/// `tread node --can CAN --log OUT_DIR/LOG` for `cycles` cycles.
+LiveOptions live_options(const DemoSettings& s, const std::string& can, std::uint64_t cycles,
+                         const char* log) {
+  LiveOptions live;
+  live.can = can;
+  live.cycles = cycles;
+  live.log = s.out_dir / log;
+  return live;
+}
+
 // `tread node --log` live: the loop's frames go through the same ring to the writer thread (no I/O
 // on the loop's thread); the log is whole, one NodeStatus per cycle, each line candump's.
 TEST(LiveNode, LogThroughTheRingIsWhole) {
   const DemoSettings s = demo_settings({"sweep"}, "live_node_log");
-  LiveOptions live;
-  live.can = "stub";
-  live.cycles = 200;
-  live.log = s.out_dir / "live.log";
+  const LiveOptions live = live_options(s, "stub", 200, "live.log");
   const SessionReport report = run_live(s.node, live, nullptr);
   ASSERT_EQ(report.log_error, "");
   ASSERT_EQ(report.loop.cycles, 200U);
@@ -146,10 +153,7 @@ TEST(LiveNode, LogThroughTheRingIsWhole) {
 // incomplete, is left behind.
 TEST(LiveNode, AnUnopenableBusLeavesNoLog) {
   const DemoSettings s = demo_settings({"sweep"}, "live_node_no_bus");
-  LiveOptions live;
-  live.can = "tread_no_such_can0";
-  live.cycles = 10;
-  live.log = s.out_dir / "never.log";
+  const LiveOptions live = live_options(s, "tread_no_such_can0", 10, "never.log");
   std::filesystem::remove(live.log);
   std::filesystem::remove(live.log.string() + ".incomplete");
   EXPECT_ANY_THROW(static_cast<void>(run_live(s.node, live, nullptr)));
