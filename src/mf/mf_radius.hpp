@@ -148,7 +148,11 @@ template <typename T, typename P>
   const T drho_z = T(2) * camber * dcam - if_else(compressed, c.free_share, T(0));
   const T d2rho_z = T(2) * c.camber_scale * (dcam * dcam + T(2) * c.q_cam2 * cam);
   const auto positive = rho_z > T(0);
-  slope = if_else(positive, drho_z, T(0));
+  // At Romega itself with no deflection (an upright wheel, where the lightest loads' start lands:
+  // its free deflection is below the spacing of Rl's values) the compressed side's slope, so that
+  // Newton steps into the tyre instead of seeing a flat Fz62.
+  const auto at_romega = !(rl < c.romega) && !(rl > c.romega);
+  slope = if_else(positive, drho_z, if_else(at_romega, -c.free_share, T(0)));
   curvature = if_else(positive, d2rho_z, T(0));
   return if_else(positive, rho_z, T(0));
 }
@@ -235,9 +239,11 @@ template <bool kSecond, typename T, typename P>
     d2sfyg = T(2) * c.fys3_g * c.inv_romega * c.inv_romega;
   }
   const auto loaded = x > T(0);
-  // x^(2·Q_FCY2); unloaded 0 (MFeval: 0^q·0), or 1 where Q_FCY2 = 0
+  // x^(2·Q_FCY2); unloaded 0 (MFeval: 0^q·0), or 1 where Q_FCY2 = 0, where it is not computed
+  // (MF 5.2, PAC2002 and many MF 6.x files) unless Q_FCY2 is a fit's Jet (d(x^q)/dq = ln x at 0).
   T power = is_zero(c.q_fcy2) ? T(1) : T(0);
-  if (any_lane(loaded)) {
+  constexpr bool kScalarParameters = std::is_arithmetic_v<P> || is_fixed_point<P>;
+  if (!(kScalarParameters && is_zero(c.q_fcy2)) && any_lane(loaded)) {
     power = if_else(loaded, fz62_pow(c, if_else(loaded, x, T(1)), memo), power);
   }
   const T lateral = c.fcy_per_force * (c.fy - sfyg);
@@ -251,7 +257,8 @@ template <bool kSecond, typename T, typename P>
   T slope = T(0);
   T curvature = T(0);
   if constexpr (kSecond) {
-    // g = p'/p = q·x'/x, g2 = p''/p = q·((q − 1)·(x'/x)² + x''/x) (0 unloaded, where x' = x'' = 0);
+    // g = p'/p = q·x'/x, g2 = p''/p = q·((q − 1)·(x'/x)² + x''/x) (unloaded x is taken as 1: x'
+    // is 0 there, or at Romega itself finite, with p = 0 or g = 0);
     // (Fcy²)' = p·(g·L² + (L²)'), (Fcy²)'' = p·(g2·L² + 2·g·(L²)' + (L²)'').
     const T inv_x = T(1) / if_else(loaded, x, T(1));
     const T ux = dx * inv_x;
@@ -266,8 +273,9 @@ template <bool kSecond, typename T, typename P>
                 power * (lateral2 * d2stiffness + T(2) * dfcy2_per_power * dstiffness +
                          d2fcy2_per_power * stiffness);
   } else {
-    // Without the second derivative (float, fixed point): (Fcy²)'·S = p·(g·S·L² + (L²)'·S) with
-    // g·S = q·x'·(S/x), no division by x (whose reciprocal overflows Q31.32 at the lightest loads).
+    // Without the second derivative (float's and fixed point's Newton steps; every type's check at
+    // Romega and bisection): (Fcy²)'·S = p·(g·S·L² + (L²)'·S) with g·S = q·x'·(S/x), no division by
+    // x (x'/x overflows Q31.32 at the lightest loads).
     const T growth_s = T(c.pow_q) * dx * ((c.q_fz1 + c.q_fz2 * x) * c.stiffness_scale);
     slope = c.base * dstiffness -
             power * (lateral2 * dstiffness + growth_s * lateral2 + dlateral2 * stiffness);
@@ -305,9 +313,10 @@ struct LoadedRadius62 {
 ///   limits off) and that end is the answer, as bisection gives.
 /// - Start: the MF 6.1-style deflection (the quadratic in ρ/R0 with the Rl-independent
 ///   corrections) less the camber's deflection at Romega. It leaves out Fcy's factor
-///   (ρz/R0)^Q_FCY2 and is a few mm off (1 cm where that factor matters most). The power at the
-///   start's deflection is computed alongside its Rl (it seeds the memo of fz62_pow), so that the
-///   first evaluation, at nearly that deflection, need not wait for pow.
+///   (ρz/R0)^Q_FCY2 and is a few mm off (1 cm where that factor matters most). Where the start lies
+///   below Romega on that branch and Q_FCY2 ≠ 0, the power at the start's deflection is computed
+///   alongside its Rl (it seeds the memo of fz62_pow), so that the first evaluation, at nearly that
+///   deflection, need not wait for pow; not in fixed point (no FPU to overlap it with).
 /// - The step: in double (and a fit's Jets) and on lanes Halley's, −F·F'/(F'² − ½·F·F''), cubic,
 ///   where its factor on Newton's step, 1/(1 − F·F''/(2·F'²)), is within [2/3, 2] (else, far from
 ///   the root, Newton's). On the benchmark's points this takes double from 3.4 evaluations per
@@ -384,7 +393,7 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
   // instead of waiting for pow. Not in fixed point (no FPU to overlap it with: it would only add a
   // division and the series), nor where Q_FCY2 = 0.
   if constexpr (!is_fixed_point<T>) {
-    const auto seeded = rho_zfr0 > T(0);
+    const auto seeded = rho_zfr0 > T(0) && !beyond;
     if (!is_zero(c.q_fcy2) && any_lane(seeded)) {
       // x0 > 0 wherever seeded; pow's argument does not wait for the mask.
       const T xs = if_else(x0 > T(0), x0, T(1));

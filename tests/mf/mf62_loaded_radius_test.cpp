@@ -495,41 +495,74 @@ BoundScan scan_bound(const MfParameters<double>& p, const std::vector<double>& p
   return scan;
 }
 
-// Fixed point (Q31.32) at the lightest loads, down to a deflection of a few resolution steps:
-// Newton's slope must stay finite there (it had divided by x = ρz/R0, whose reciprocal overflows
-// Q31.32 below about 5e-10, and the solve ended in the 80-step bisection). Upright and without Fy,
-// Rl is the double solve's to 1e-8 m. (With γ = 0.03 the MF 6.2 sample's root lies 18 cm above
-// Romega and fixed point is 0.1 mm off it: the camber scale, 1.4e-7, has only 3 digits in Q31.32;
-// with Fy = 200 N at these loads, Fcy's (ρz/R0)^Q_FCY2 makes it 4e-7 m. Neither is the solver's.)
-TEST(Mf62LoadedRadius, FixedPointAtTheLightestLoadsNeedsNoFallback) {
+// The lightest loads, down to a deflection of a few resolution steps of fixed point (Q31.32):
+// - Fixed point's slope must stay valid: it had multiplied x' by 1/x (x = ρz/R0), which overflows
+//   Q31.32 below x ≈ |x'|/2^31 ≈ 1.2e-9, and an invalid value times Q_FCY = 0 stays invalid, so on
+//   the files without Fcy (MF 5.2, PAC2002) the solve ended in the 80-step bisection.
+// - Every type's start lands on Romega itself there (the free deflection is below Rl's spacing),
+//   where an upright wheel's ρz is 0: the slope there is the compressed side's, else Newton saw a
+//   flat Fz62, stepped to Rl = 0 and back (fixed point: 3–8 steps, 4e-9 m off; float and the
+//   lanes: the bisection fallback on the MF 5.2 and PAC2002 files below 1e-3 N).
+// Upright and without Fy: one or two steps, and Rl the double solve's to each type's resolution.
+// (With γ = 0.03 the MF 6.2 sample's root lies 18 cm above Romega and fixed point is 0.1 mm off it:
+// the camber scale, 1.4e-7, has only three digits in Q31.32; with Fy = 200 N at these loads, Fcy's
+// (ρz/R0)^Q_FCY2 makes it 4e-7 m. Neither is the solver's.)
+TEST(Mf62LoadedRadius, LightestLoadsNeedNoFallback) {
   const auto fixed = [](double v) { return Fixed64::from_double(v); };
+  constexpr std::array<double, 4> kGamma{0.0, 0.0, 0.03, 0.03};
+  constexpr std::array<double, 4> kFy{0.0, 200.0, 0.0, 200.0};
   for (const std::string& name : fz62_path_tyres()) {
     const MfParameters<double> p = load(name.c_str());
     const MfParameters<Fixed64> px = to_fixed_parameters(p);
+    const MfParameters<float> pf = convert_parameters<float>(p);
     const double r0 = p.unloaded_radius_m;
+    const double omega = 50.0;
+    const double w = omega * r0 / p.longvl_mps;
+    const double romega = r0 * (p.q_re0 + p.q_v1 * w * w);
     for (const double fz : {1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 0.1, 1.0, 10.0}) {
-      for (const bool upright : {true, false}) {
-        for (const bool lateral : {false, true}) {
-          const double gamma = upright ? 0.0 : 0.03;
-          const double fy = lateral ? 200.0 : 0.0;
-          const double omega = 50.0;
-          const double w = omega * r0 / p.longvl_mps;
-          const double romega = r0 * (p.q_re0 + p.q_v1 * w * w);
-          const auto solved = detail::loaded_radius62(
-              detail::fz62_curve(px, fixed(gamma), fixed(omega), fixed(romega), fixed(0.0),
-                                 fixed(0.0), fixed(fy)),
-              fixed(fz));
-          const auto reference = detail::loaded_radius62(
-              detail::fz62_curve(p, gamma, omega, romega, 0.0, 0.0, fy), fz);
-          const std::string where = name + " Fz " + std::to_string(fz) + " N, gamma " +
-                                    std::to_string(gamma) + ", Fy " + std::to_string(fy);
-          EXPECT_FALSE(solved.fallback) << where;
-          EXPECT_LE(solved.newton_steps, 11) << where;
-          if (upright && !lateral) {
-            EXPECT_NEAR(solved.rl_m.to_double(), reference.rl_m, 1e-8) << where;
-          }
+      lanes::F4 gamma4;
+      lanes::F4 fy4;
+      for (std::size_t k = 0; k < 4; ++k) {
+        gamma4.v[k] = static_cast<float>(kGamma[k]);
+        fy4.v[k] = static_cast<float>(kFy[k]);
+      }
+      const auto solved4 = detail::loaded_radius62(
+          detail::fz62_curve(pf, gamma4, lanes::F4(static_cast<float>(omega)),
+                             lanes::F4(static_cast<float>(romega)), lanes::F4(0.0F),
+                             lanes::F4(0.0F), fy4),
+          lanes::F4(static_cast<float>(fz)));
+      const std::string at = name + " Fz " + std::to_string(fz) + " N";
+      EXPECT_FALSE(solved4.fallback) << at << " (four lanes)";
+      for (std::size_t k = 0; k < 4; ++k) {
+        const double gamma = kGamma[k];
+        const double fy = kFy[k];
+        const auto reference =
+            detail::loaded_radius62(detail::fz62_curve(p, gamma, omega, romega, 0.0, 0.0, fy), fz);
+        const auto solvedx = detail::loaded_radius62(
+            detail::fz62_curve(px, fixed(gamma), fixed(omega), fixed(romega), fixed(0.0),
+                               fixed(0.0), fixed(fy)),
+            fixed(fz));
+        const auto solvedf = detail::loaded_radius62(
+            detail::fz62_curve(pf, static_cast<float>(gamma), static_cast<float>(omega),
+                               static_cast<float>(romega), 0.0F, 0.0F, static_cast<float>(fy)),
+            static_cast<float>(fz));
+        const std::string where =
+            at + ", gamma " + std::to_string(gamma) + ", Fy " + std::to_string(fy);
+        EXPECT_FALSE(reference.fallback) << where;
+        EXPECT_FALSE(solvedx.fallback) << where << " (fixed point)";
+        EXPECT_FALSE(solvedf.fallback) << where << " (float)";
+        EXPECT_LE(solvedx.newton_steps, 11) << where;
+        EXPECT_LE(solvedf.newton_steps, 11) << where;
+        if (k == 0) {  // upright, no Fy
+          EXPECT_LE(reference.newton_steps, 2) << where;
+          EXPECT_LE(solvedx.newton_steps, 2) << where << " (fixed point)";
+          EXPECT_LE(solvedf.newton_steps, 2) << where << " (float)";
+          EXPECT_NEAR(solvedx.rl_m.to_double(), reference.rl_m, 1e-9) << where;
+          EXPECT_NEAR(solvedf.rl_m, reference.rl_m, 6e-8) << where;
+          EXPECT_NEAR(solved4.rl_m.v[0], reference.rl_m, 6e-8) << where;
         }
       }
+      EXPECT_LE(solved4.newton_steps, 11) << at;
     }
   }
 }
