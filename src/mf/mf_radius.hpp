@@ -391,7 +391,8 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
   // The power at the start's deflection, computed while its Rl and ρz are: the first evaluation
   // (at ρz ≈ x0·R0 where the free-rolling part is positive) then takes it from the memo's series
   // instead of waiting for pow. Not in fixed point (no FPU to overlap it with: it would only add a
-  // division and the series), nor where Q_FCY2 = 0.
+  // division and the series), nor where Q_FCY2 = 0 (no power is computed), nor where the root lies
+  // above Romega (the start is Romega, where the memo is exact already).
   if constexpr (!is_fixed_point<T>) {
     const auto seeded = rho_zfr0 > T(0) && !beyond;
     if (!is_zero(c.q_fcy2) && any_lane(seeded)) {
