@@ -241,9 +241,10 @@ template <bool kSecond, typename T, typename P>
   const auto loaded = x > T(0);
   // x^(2·Q_FCY2); unloaded 0 (MFeval: 0^q·0), or 1 where Q_FCY2 = 0, where it is not computed
   // (MF 5.2, PAC2002 and many MF 6.x files) unless Q_FCY2 is a fit's Jet (d(x^q)/dq = ln x at 0).
-  T power = is_zero(c.q_fcy2) ? T(1) : T(0);
+  const bool zero_exponent = is_zero(c.q_fcy2);
+  T power = zero_exponent ? T(1) : T(0);
   constexpr bool kScalarParameters = std::is_arithmetic_v<P> || is_fixed_point<P>;
-  if (!(kScalarParameters && is_zero(c.q_fcy2)) && any_lane(loaded)) {
+  if (!(kScalarParameters && zero_exponent) && any_lane(loaded)) {
     power = if_else(loaded, fz62_pow(c, if_else(loaded, x, T(1)), memo), power);
   }
   const T lateral = c.fcy_per_force * (c.fy - sfyg);
