@@ -59,8 +59,11 @@ struct Fz62Curve {
   P pow_q;  // 2·Q_FCY2: Fcy² takes (ρz/R0)^(2·Q_FCY2)
   T r0, fz0, romega, width, inv_r0, inv_romega;
   T q_fz1, q_fz2;
-  T q_cam1, q_cam2;
-  T camber_scale;            // (rtw/8)·|tan γ|·γ² / den², 0 where den = 0 (MFeval: NaN → 0)
+  // The camber deflection (rtw/8)·|tan γ|·(num/den)², num = (Q_CAM1·Rl + Q_CAM2·Rl²)·γ and den
+  // num's value at Romega, written with γ cancelled as camber_scale·cam², cam = num/den (≈ 1 near
+  // Romega): in fixed point γ²·(rtw/8)·|tan γ| alone is below Q31.32's resolution at small γ.
+  T cam1, cam2;              // Q_CAM1 / den, Q_CAM2 / den (γ cancelled), 0 where den = 0
+  T camber_scale;            // (rtw/8)·|tan γ|, 0 where den = 0 (MFeval: 0/0 = NaN → 0)
   T free_share;              // 1 − Q_CAM3·|γ|: the free-rolling deflection's share of ρz
   T inv_free_share;          // 1 / max(free_share, 0.1): the start's use of it
   T fys1_g, fys2_g, fys3_g;  // Q_FYS1…3·γ
@@ -94,15 +97,17 @@ Fz62Curve<T, P> fz62_curve(const MfParameters<P>& p, const T& gamma, const T& om
   const P a = p.vertical_stiffness_npm * r0 / fz0;
   c.q_fz1 = T(sqrt(max_of(P(0), a * a - P(4) * p.q_fz2)));
   c.q_fz2 = p.q_fz2;
-  c.q_cam1 = p.q_cam1;
-  c.q_cam2 = p.q_cam2;
   const P rtw_8 = (P(1.075) - P(0.5) * p.aspect_ratio) * p.width_m / P(8);
-  const T den = (p.q_cam1 * romega + p.q_cam2 * romega * romega) * gamma;
-  const auto cambered = !is_zero(den);
+  const T at_romega = p.q_cam1 * romega + p.q_cam2 * romega * romega;
+  const auto cambered = !is_zero(at_romega * gamma);
+  c.cam1 = T(0);
+  c.cam2 = T(0);
   c.camber_scale = T(0);
   if (any_lane(cambered)) {
-    c.camber_scale =
-        if_else(cambered, (gamma * gamma) * T(rtw_8) * abs(mf_tan(gamma)) / (den * den), T(0));
+    const T inv = div_or(T(1), if_else(cambered, at_romega, T(1)), T(0));
+    c.cam1 = if_else(cambered, p.q_cam1 * inv, T(0));
+    c.cam2 = if_else(cambered, p.q_cam2 * inv, T(0));
+    c.camber_scale = if_else(cambered, T(rtw_8) * abs(mf_tan(gamma)), T(0));
   }
   c.free_share = T(1) - p.q_cam3 * abs(gamma);
   c.inv_free_share = T(1) / max_of(c.free_share, T(0.1));
@@ -141,12 +146,12 @@ template <typename T, typename P>
                                                 T& curvature) {
   const auto compressed = rl < c.romega;
   const T rho_zfr = max_of(c.romega - rl, T(0));
-  const T cam = c.q_cam1 * rl + c.q_cam2 * rl * rl;
-  const T dcam = c.q_cam1 + T(2) * c.q_cam2 * rl;
+  const T cam = c.cam1 * rl + c.cam2 * rl * rl;
+  const T dcam = c.cam1 + T(2) * c.cam2 * rl;
   const T camber = c.camber_scale * cam;
   const T rho_z = rho_zfr * c.free_share + camber * cam;
   const T drho_z = T(2) * camber * dcam - if_else(compressed, c.free_share, T(0));
-  const T d2rho_z = T(2) * c.camber_scale * (dcam * dcam + T(2) * c.q_cam2 * cam);
+  const T d2rho_z = T(2) * c.camber_scale * (dcam * dcam + T(2) * c.cam2 * cam);
   const auto positive = rho_z > T(0);
   // At Romega itself with no deflection (an upright wheel, where the lightest loads' start lands:
   // its free deflection is below the spacing of Rl's values) the compressed side's slope, so that
