@@ -429,6 +429,7 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
   T rho_at = T(0);
   T drho_at = T(0);
   T d2rho_at = T(0);
+  T last_move = T(0);  // from the last point evaluated to the root, where converged
   LoadedRadius62<T> result{T(0), T(0), 0, false};
   for (int i = 0; i < kNewtonSteps; ++i) {
     const Fz62Value<T> at = fz62<kHalley>(c, rl, fz_target, memo);
@@ -482,7 +483,14 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
     T next = if_else(inside, newton, T(0.5) * (lo + hi));
     next = if_else(!inside && above && !hi_known, hi_end, next);
     next = if_else(!inside && !above && !lo_known, lo_end, next);
-    next = if_else(converged, if_else(no_root, rl, min_of(max_of(newton, lo), hi)), next);
+    const T landed = min_of(max_of(newton, lo), hi);
+    next = if_else(converged, if_else(no_root, rl, landed), next);
+    // The converged step as computed, not as Rl's rounding leaves it: ρz below takes it (a light
+    // load's ρz, ~1e-7 m, is only a few of float's Rl steps, 6e-8 m at 0.5 m; a step below half
+    // of one rounds back onto Rl, the bracket's end).
+    const auto within = !(newton < lo) && !(newton > hi);
+    last_move = if_else(active && converged,
+                        if_else(no_root, T(0), if_else(within, step, landed - rl)), last_move);
     rl = if_else(active, next, rl);
     previous_settles = inside && settles;
     previous_step = step_abs;
@@ -500,11 +508,13 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
     }
     rl = if_else(active, T(0.5) * (lo + hi), rl);
   }
-  // ρz at Rl from its Taylor polynomial about the last point evaluated (a step away at most, where
-  // ρz is smooth: the camber part a quartic in Rl, the free-rolling part linear below Romega), so
-  // that it is ready with Rl instead of after it; evaluated afresh where the step crossed Romega,
-  // where ρz was 0 (clamped) or where the fallback set Rl.
-  const T moved = rl - rl_at;
+  // ρz at the root from its Taylor polynomial about the last point evaluated (a step away at most,
+  // where ρz is smooth: the camber part a quartic in Rl, the free-rolling part linear below
+  // Romega), so that it is ready with Rl instead of after it, and is not limited to the deflections
+  // Rl's rounding can express (Cz = Fz/ρz at the lightest loads: float's Rl − Romega alone was 9 %
+  // off at 0.1 N); evaluated afresh where the step crossed Romega, where ρz was 0 (clamped) or
+  // where the fallback set Rl.
+  const T moved = if_else(active, rl - rl_at, last_move);
   T rho = max_of(rho_at + moved * (drho_at + T(0.5) * d2rho_at * moved), T(0));
   const auto below = rl < c.romega;
   const auto below_at = rl_at < c.romega;
