@@ -78,6 +78,20 @@ std::vector<MfInput<double>> envelope(const MfParameters<double>& p, bool turn_s
     in.phit_1pm = turn_slip ? uniform(-0.5, 0.5) : 0.0;
     inputs.push_back(in);
   }
+  // Light loads (1 N … FZMAX, evenly in log) with small cambers: where MF 6.2's camber deflection
+  // alone may carry the wheel (its root above Romega), and where fixed point had rounded
+  // γ²·(rtw/8)·|tan γ| to 0 below |γ| ≈ 0.002 rad (Rl 25 cm low).
+  for (int i = 0; i < 300; ++i) {
+    MfInput<double> in;
+    in.fz_n = std::pow(10.0, uniform(0.0, std::log10(fzmax)));
+    in.kappa = uniform(-0.05, 0.05);
+    in.alpha_rad = uniform(-0.05, 0.05);
+    in.gamma_rad = uniform(-0.005, 0.005);
+    in.vx_mps = uniform(1.0, p.longvl_mps);
+    in.p_pa = uniform(pmin, pmax);
+    in.phit_1pm = turn_slip ? uniform(-0.1, 0.1) : 0.0;
+    inputs.push_back(in);
+  }
   // The extremes, in every combination of the limits that matter.
   for (const double fz : {0.0, 1.0, p.fnomin_n, fzmax}) {
     for (const double kappa : {p.kpumin, 0.0, p.kpumax}) {
