@@ -293,7 +293,7 @@ template <bool kSecond, typename T, typename P>
 /// root written without cancellation, 2·Fz / (E·q_fz1 + √(E·(E·q_fz1² + 4·q_fz2·Fz))), one division
 /// where Fz / E first would take two (the start heads the solve's dependent chain: measured −2 ns
 /// per solve in float, −3 ns in double). 0 where Fz or E is not positive. Fixed point divides
-/// first: E² (~1e10 N²) overflows Q31.32.
+/// first: (E·Q_FZ1)² (~1e10) overflows Q31.32.
 template <typename T, typename P>
 [[gnu::always_inline]] inline T quadratic_deflection(const Fz62Curve<T, P>& c, const T& fz,
                                                      const T& fcy) {
@@ -516,9 +516,17 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
   // where the fallback set Rl.
   const T moved = if_else(active, rl - rl_at, last_move);
   T rho = max_of(rho_at + moved * (drho_at + T(0.5) * d2rho_at * moved), T(0));
-  const auto below = rl < c.romega;
+  // The side of Romega the root lies on, from the step as computed (Romega − Rl_at is exact near
+  // Romega): a root within half an Rl step below Romega rounds onto it.
+  const auto below = moved < c.romega - rl_at;
   const auto below_at = rl_at < c.romega;
-  const auto afresh = active || (below && !below_at) || (below_at && !below) || !(rho_at > T(0));
+  // From Romega itself with ρz = 0 there (no camber deflection) into the tyre, ρz is the free part,
+  // linear, and the polynomial (slope −free_share there) is exact: the lightest loads' start.
+  const auto at_romega = !(rl_at < c.romega) && !(rl_at > c.romega);
+  const auto from_romega = at_romega && below && !(rho_at > T(0));
+  const auto afresh =
+      active ||
+      (((below && !below_at) || (below_at && !below) || !(rho_at > T(0))) && !from_romega);
   if (any_lane(afresh)) {
     T unused = T(0);
     rho = if_else(afresh, fz62_deflection(c, rl, unused), rho);
