@@ -293,12 +293,14 @@ template <bool kSecond, typename T, typename P>
 /// root written without cancellation, 2·Fz / (E·q_fz1 + √(E·(E·q_fz1² + 4·q_fz2·Fz))), one division
 /// where Fz / E first would take two (the start heads the solve's dependent chain: measured −2 ns
 /// per solve in float, −3 ns in double). 0 where Fz or E is not positive. Fixed point divides
-/// first: (E·Q_FZ1)² (~1e10) overflows Q31.32.
+/// first: (E·Q_FZ1)² (~1e10) overflows Q31.32. So do the lanes: with one division the 16-lane
+/// batch's MF 6.2 evaluation measured 2 ns per wheel slower (59–60 against 57–58 ns, alternating
+/// runs), though the solve alone was not.
 template <typename T, typename P>
 [[gnu::always_inline]] inline T quadratic_deflection(const Fz62Curve<T, P>& c, const T& fz,
                                                      const T& fcy) {
   const T external = (c.base - fcy * fcy) * c.stiffness_scale;
-  if constexpr (is_fixed_point<T>) {
+  if constexpr (is_fixed_point<T> || is_lanes<T>) {
     const T q = max_of(div_or(fz, external, T(0)), T(0));
     return div_or(T(2) * q, c.q_fz1 + sqrt(c.q_fz1 * c.q_fz1 + T(4) * c.q_fz2 * q), T(0));
   } else {
