@@ -62,7 +62,8 @@ struct Fz62Curve {
   // The camber deflection (rtw/8)·|tan γ|·(num/den)², num = (Q_CAM1·Rl + Q_CAM2·Rl²)·γ and den
   // num's value at Romega, written with γ cancelled as camber_scale·cam², cam = num/den (≈ 1 near
   // Romega): in fixed point γ²·(rtw/8)·|tan γ| alone is below Q31.32's resolution at small γ.
-  T cam1, cam2;              // Q_CAM1 / den, Q_CAM2 / den (γ cancelled), 0 where den = 0
+  // With Q = den/γ = Q_CAM1·Romega + Q_CAM2·Romega²:
+  T cam1, cam2;              // Q_CAM1 / Q, Q_CAM2 / Q, 0 where den = 0
   T camber_scale;            // (rtw/8)·|tan γ|, 0 where den = 0 (MFeval: 0/0 = NaN → 0)
   T free_share;              // 1 − Q_CAM3·|γ|: the free-rolling deflection's share of ρz
   T inv_free_share;          // 1 / max(free_share, 0.1): the start's use of it
