@@ -294,9 +294,10 @@ template <bool kSecond, typename T, typename P>
 /// root written without cancellation, 2·Fz / (E·q_fz1 + √(E·(E·q_fz1² + 4·q_fz2·Fz))), one division
 /// where Fz / E first would take two (the start heads the solve's dependent chain: measured −2 ns
 /// per solve in float, −3 ns in double). 0 where Fz or E is not positive. Fixed point divides
-/// first: (E·Q_FZ1)² (~1e10) overflows Q31.32. So do the lanes: with one division the 16-lane
-/// batch's MF 6.2 evaluation measured 2 ns per wheel slower (59–60 against 57–58 ns, alternating
-/// runs), though the solve alone was not.
+/// first, as before: (E·Q_FZ1)² (~1e10) overflows Q31.32. The lanes too, for speed: with one
+/// division the 16-lane batch's MF 6.2 evaluation measured 2 ns per wheel slower (59–60 against
+/// 57–58 ns, alternating runs), though the solve alone was not. Dividing first gives 0 where Fz/E
+/// is not positive (Fz ≥ 0 from evaluate's inputs: the same).
 template <typename T, typename P>
 [[gnu::always_inline]] inline T quadratic_deflection(const Fz62Curve<T, P>& c, const T& fz,
                                                      const T& fcy) {
@@ -515,18 +516,19 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
   // where ρz is smooth: the camber part a quartic in Rl, the free-rolling part linear below
   // Romega), so that it is ready with Rl instead of after it, and is not limited to the deflections
   // Rl's rounding can express (Cz = Fz/ρz at the lightest loads: float's Rl − Romega alone was 9 %
-  // off at 0.1 N); evaluated afresh where the step crossed Romega, where ρz was 0 (clamped) or
-  // where the fallback set Rl.
+  // off at 0.1 N); evaluated afresh where the step crossed Romega, where ρz was 0 (clamped; except
+  // from Romega itself into the tyre, below) or where the fallback set Rl.
   const T moved = if_else(active, rl - rl_at, last_move);
   T rho = max_of(rho_at + moved * (drho_at + T(0.5) * d2rho_at * moved), T(0));
   // The side of Romega the root lies on, from the step as computed (Romega − Rl_at is exact near
   // Romega): a root within half an Rl step below Romega rounds onto it.
   const auto below = moved < c.romega - rl_at;
   const auto below_at = rl_at < c.romega;
-  // From Romega itself with ρz = 0 there (no camber deflection) into the tyre, ρz is the free part,
-  // linear, and the polynomial (slope −free_share there) is exact: the lightest loads' start.
+  // From Romega itself with ρz = 0 there (no camber deflection: cam is 1 at Romega, so the camber
+  // scale is 0; not a negative one, ASPECT_RATIO > 2.15, clamped) into the tyre, ρz is the free
+  // part, linear, and the polynomial (slope −free_share there) is exact: the lightest loads' start.
   const auto at_romega = !(rl_at < c.romega) && !(rl_at > c.romega);
-  const auto from_romega = at_romega && below && !(rho_at > T(0));
+  const auto from_romega = at_romega && below && !(rho_at > T(0)) && !(c.camber_scale < T(0));
   const auto afresh =
       active ||
       (((below && !below_at) || (below_at && !below) || !(rho_at > T(0))) && !from_romega);
