@@ -23,6 +23,7 @@
 #include "golden_path.hpp"
 #include "mf/mf_evaluate.hpp"
 #include "mf/mf_fixed.hpp"
+#include "mf_fixed_input.hpp"
 #include "mf_output_columns.hpp"
 #include "tyre/mf_parameters_from_tir.hpp"
 
@@ -31,17 +32,7 @@ namespace {
 
 using fixed::Fixed64;
 
-MfInput<Fixed64> to_fixed(const MfInput<double>& in) {
-  MfInput<Fixed64> f;
-  f.fz_n = Fixed64::from_double(in.fz_n);
-  f.kappa = Fixed64::from_double(in.kappa);
-  f.alpha_rad = Fixed64::from_double(in.alpha_rad);
-  f.gamma_rad = Fixed64::from_double(in.gamma_rad);
-  f.vx_mps = Fixed64::from_double(in.vx_mps);
-  f.phit_1pm = Fixed64::from_double(in.phit_1pm);
-  f.p_pa = Fixed64::from_double(in.p_pa);
-  return f;
-}
+using testing::to_fixed;
 
 /// The input exactly as the fixed path sees it (rounded to Q31.32), in double.
 MfInput<double> rounded(const MfInput<double>& in) {

@@ -23,6 +23,7 @@
 #include "mf/mf_evaluate_four.hpp"
 #include "mf/mf_fixed.hpp"
 #include "mf/mf_lanes.hpp"
+#include "mf_fixed_input.hpp"
 #include "tyre/mf_parameters_from_tir.hpp"
 
 namespace tread::mf {
@@ -628,7 +629,6 @@ TEST(Mf62LoadedRadius, RootJustBelowRomegaKeepsItsFreeDeflection) {
 TEST(Mf62LoadedRadius, FixedPointKeepsASmallCambersDeflection) {
   const MfParameters<double> p = load("MagicFormula62_Parameters.tir");
   const MfParameters<Fixed64> px = to_fixed_parameters(p);
-  const auto fixed = [](double v) { return Fixed64::from_double(v); };
   double worst = 0.0;
   int above_romega = 0;
   for (const int mode : {111, 211}) {
@@ -640,14 +640,7 @@ TEST(Mf62LoadedRadius, FixedPointKeepsASmallCambersDeflection) {
             MfInput<double> in = at_load(fz, 0.0, alpha, gamma);
             in.p_pa = pressure;
             const MfOutput<double> want = evaluate(p, in, o);
-            MfInput<Fixed64> inx;
-            inx.fz_n = fixed(fz);
-            inx.kappa = fixed(0.0);
-            inx.alpha_rad = fixed(alpha);
-            inx.gamma_rad = fixed(gamma);
-            inx.vx_mps = fixed(in.vx_mps);
-            inx.p_pa = fixed(pressure);
-            const MfOutput<Fixed64> got = evaluate(px, inx, o);
+            const MfOutput<Fixed64> got = evaluate(px, testing::to_fixed(in), o);
             const std::string where = "mode " + std::to_string(mode) + " Fz " + std::to_string(fz) +
                                       " gamma " + std::to_string(gamma) + " alpha " +
                                       std::to_string(alpha) + " p " + std::to_string(pressure);
