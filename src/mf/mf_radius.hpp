@@ -53,6 +53,11 @@ void rolling_radius(const MfParameters<P>& p, Prepared<T>& in) {
 /// given γ, ω, Romega, Fx, Fy and pressure. What does not depend on Rl is computed once here
 /// (√ of Q_FZ1, tan γ, the speed and Fx corrections, the coefficients times γ), so the root
 /// search below pays per step only for the Rl-dependent part.
+/// Whether (1 + δ)^q near fz62_pow's memo is its [3/3] Padé approximant (float, double, Jets) or
+/// its binomial series to δ⁶ (lanes, fixed point); see fz62_pow.
+template <typename T>
+inline constexpr bool kPowPade = !is_lanes<T> && !is_fixed_point<T>;
+
 template <typename T, typename P>
 struct Fz62Curve {
   P q_fcy2;
@@ -73,10 +78,14 @@ struct Fz62Curve {
   T stiffness_scale;         // (1 + PFZ1·dpi)·Fz0
   T fcy_per_force;           // Q_FCY / Fz0
   T fy;
-  // Fcy² = (ρz/R0)^(2·Q_FCY2)·(Q_FCY·(Fy − Sfyg)/Fz0)²: the power's binomial series in
-  // q = 2·Q_FCY2.
-  T pow_c1, pow_c2, pow_c3, pow_c4, pow_c5, pow_c6;  // binomial coefficients C(q, k)
-  T pow_c7_abs;                                      // |C(q, 7)|: the series' remainder
+  // Fcy² = (ρz/R0)^q·(Q_FCY·(Fy − Sfyg)/Fz0)², q = 2·Q_FCY2; near a point where the power is
+  // known, (1 + δ)^q (see fz62_pow) by
+  //   - float, double, Jets: its [3/3] Padé approximant N(δ)/D(δ), whose error is about
+  //     e7·δ⁷ with e7 = −(q − 3)(q − 2)(q − 1)q(q + 1)(q + 2)(q + 3)/100800;
+  //   - lanes, fixed point: its binomial series to δ⁶ (no division), remainder C(q, 7)·δ⁷.
+  T pow_n1, pow_n2, pow_n3;  // N(δ) = 1 + n1·δ + n2·δ² + n3·δ³ (series: C(q, 1…3))
+  T pow_d1, pow_d2, pow_d3;  // D(δ) = 1 + d1·δ + d2·δ² + d3·δ³ (series: C(q, 4…6))
+  T pow_remainder;           // the bound's factor on |δ|⁷ (see fz62_pow)
 };
 
 template <typename T, typename P>
@@ -122,21 +131,47 @@ Fz62Curve<T, P> fz62_curve(const MfParameters<P>& p, const T& gamma, const T& om
   c.fcy_per_force = T(P(p.q_fcy) / fz0);
   c.fy = fy;
   const P q = c.pow_q;
-  const P c2 = q * (q - P(1)) / P(2);
-  const P c3 = c2 * (q - P(2)) / P(3);
-  const P c4 = c3 * (q - P(3)) / P(4);
-  const P c5 = c4 * (q - P(4)) / P(5);
-  const P c6 = c5 * (q - P(5)) / P(6);
-  const P c7 = c6 * (q - P(6)) / P(7);
-  c.pow_c1 = q;
-  c.pow_c2 = c2;
-  c.pow_c3 = c3;
-  c.pow_c4 = c4;
-  c.pow_c5 = c5;
-  c.pow_c6 = c6;
-  // At least 1e-3: at a whole q C(q,7) is 0 and the series exact in value, but not its
-  // derivative with respect to Q_FCY2 (a fit's Jet), whose truncation this keeps below ε/2e-3.
-  c.pow_c7_abs = T(max_of(c7 < P(0) ? -c7 : c7, P(1e-3)));
+  if constexpr (!kPowPade<T>) {
+    const P c2 = q * (q - P(1)) / P(2);
+    const P c3 = c2 * (q - P(2)) / P(3);
+    const P c4 = c3 * (q - P(3)) / P(4);
+    const P c5 = c4 * (q - P(4)) / P(5);
+    const P c6 = c5 * (q - P(5)) / P(6);
+    const P c7 = c6 * (q - P(6)) / P(7);
+    c.pow_n1 = q;
+    c.pow_n2 = c2;
+    c.pow_n3 = c3;
+    c.pow_d1 = c4;
+    c.pow_d2 = c5;
+    c.pow_d3 = c6;
+    // At least 1e-3, as when a fit's Jets took the series too: the lanes' and fixed point's
+    // results do not change.
+    c.pow_remainder = T(max_of(c7 < P(0) ? -c7 : c7, P(1e-3)));
+  } else {
+    // N's and D's coefficients (the Padé approximant of (1 + δ)^q: ₂F₁(−3, −3 − q; −6; −δ) over
+    // ₂F₁(−3, q − 3; −6; −δ)), no division on the parameters' path.
+    const P up1 = (P(3) + q) * P(0.5);
+    const P up2 = up1 * (P(2) + q) * P(0.2);
+    const P down1 = (P(3) - q) * P(0.5);
+    const P down2 = down1 * (P(2) - q) * P(0.2);
+    c.pow_n1 = up1;
+    c.pow_n2 = up2;
+    c.pow_n3 = up2 * (P(1) + q) * P(1.0 / 12.0);
+    c.pow_d1 = down1;
+    c.pow_d2 = down2;
+    c.pow_d3 = down2 * (P(1) - q) * P(1.0 / 12.0);
+    const P e7 = (q * q - P(9)) * (q * q - P(4)) * (q * q - P(1)) * q * P(1.0 / 100800.0);
+    // 4·|e7|: over q ∈ [−10, 10] and |δ| < 0.3 the error is at most 3.4·|e7|·|δ|⁷. Where Q_FCY2
+    // is a fit's Jet, at least 1e-3: at a whole q in [−3, 3] e7 is 0 and the approximant exact in
+    // value, but not in its derivative with respect to Q_FCY2 (|de7/dq| ≤ 1.2e-3 for |q| ≤ 2),
+    // whose truncation this keeps near the same bound.
+    const P bound = P(4) * (e7 < P(0) ? -e7 : e7);
+    if constexpr (std::is_arithmetic_v<P>) {
+      c.pow_remainder = T(bound);
+    } else {
+      c.pow_remainder = T(max_of(bound, P(1e-3)));
+    }
+  }
   return c;
 }
 
@@ -170,8 +205,9 @@ template <typename T, typename P>
 }
 
 /// (ρz/R0)^(2·Q_FCY2) at the last point where it was computed exactly (or at the start's
-/// deflection, before the first evaluation): the steps near a root move ρz by little, and a Taylor
-/// series about that point is exact to the output's resolution there at a fraction of pow's cost.
+/// deflection, before the first evaluation): the steps near a root move ρz by little, and an
+/// approximation of (1 + δ)^q about that point is exact to the output's resolution there at a
+/// fraction of pow's cost.
 template <typename T>
 struct Fz62PowMemo {
   T base = T(0);  // ρz/R0 where pow was evaluated (0: none yet)
@@ -179,36 +215,56 @@ struct Fz62PowMemo {
   T value = T(0);
 };
 
-/// x^q from the memo's base b: (b·(1 + δ))^q = b^q·(1 + C(q,1)δ + … + C(q,6)δ⁶) where the
-/// remainder max(|C(q,7)|, 1e-3)·|δ|⁷ is below half of ε (|δ| < ¼), else pow, which becomes the
-/// new base. Its derivatives are not needed: fz62 takes them as the power times q·x'/x (exact for
-/// x^q, and for the series to its accuracy).
+/// x^q from the memo's base b, (b·(1 + δ))^q = b^q·(1 + δ)^q, where the bound
+/// pow_remainder·|δ|⁷ on the approximation's error (Fz62Curve) is below half of ε, else pow, which
+/// becomes the new base:
+///   - float, double, Jets: b^q·N(δ)/D(δ), the [3/3] Padé approximant, for |δ| < 0.3. It is
+///     far closer than the binomial series to δ⁶ (q = −0.95, δ = 0.3: 2e-9 against 1.9e-4), so
+///     that the step after a start a few mm off need not wait for pow: on the benchmark's points
+///     float's pows inside the loop went from 0.69 to 0.33 per solve, those left where the
+///     second evaluation's deflection is 1.3 to 2.3 times the start's (Fcy²'s power, which the
+///     start leaves out, matters most there);
+///   - lanes, fixed point: b^q·(1 + C(q,1)δ + … + C(q,6)δ⁶) for |δ| < ¼, without a division.
+///     Fixed point has no FPU to overlap a division with; on four lanes, whose Halley steps need
+///     few pows inside the loop, the approximant's division made MF 6.2 about 1 % slower
+///     (alternating runs of mf_bench: MF 6.2 / MF 6.1 1.30 → 1.32).
+/// Its derivatives are not needed: fz62 takes them as the power times q·x'/x (exact for x^q, and
+/// for the approximation to its accuracy).
 template <typename T, typename P>
 [[gnu::always_inline]] inline T fz62_pow(const Fz62Curve<T, P>& c, const T& x,
                                          Fz62PowMemo<T>& memo) {
   constexpr bool coarse = std::is_same_v<T, float> || is_lanes<T> || is_fixed_point<T>;
-  // Without a base in any lane, pow alone, without the series.
+  // Without a base in any lane, pow alone, without the approximation.
   auto near = memo.base > T(0);
-  T series = T(0);
+  T approx = T(0);
   if (any_lane(near)) {
     const T delta = x * memo.inv_base - T(1);
     const T d = abs(delta);
     const T d3 = d * d * d;
-    near = near && d < T(0.25) && c.pow_c7_abs * (d3 * d3 * d) < T(coarse ? 6e-8 : 1.1e-16);
-    // Estrin's scheme: three independent pairs, then δ² and δ⁴ (a shorter chain than Horner's).
+    const T reach = T(kPowPade<T> ? 0.3 : 0.25);
+    near = near && d < reach && c.pow_remainder * (d3 * d3 * d) < T(coarse ? 6e-8 : 1.1e-16);
     const T delta2 = delta * delta;
-    const T s12 = c.pow_c1 + delta * c.pow_c2;
-    const T s34 = c.pow_c3 + delta * c.pow_c4;
-    const T s56 = c.pow_c5 + delta * c.pow_c6;
-    series = memo.value * (T(1) + delta * (s12 + delta2 * (s34 + delta2 * s56)));
+    if constexpr (!kPowPade<T>) {
+      // Estrin's scheme: three independent pairs, then δ² and δ⁴ (a shorter chain than Horner's).
+      const T s12 = c.pow_n1 + delta * c.pow_n2;
+      const T s34 = c.pow_n3 + delta * c.pow_d1;
+      const T s56 = c.pow_d2 + delta * c.pow_d3;
+      approx = memo.value * (T(1) + delta * (s12 + delta2 * (s34 + delta2 * s56)));
+    } else {
+      // N and D side by side, each as two independent pairs; the value multiplies N while D is
+      // computed, so one division follows.
+      const T num = (T(1) + c.pow_n1 * delta) + delta2 * (c.pow_n2 + c.pow_n3 * delta);
+      const T den = (T(1) + c.pow_d1 * delta) + delta2 * (c.pow_d2 + c.pow_d3 * delta);
+      approx = (memo.value * num) / den;
+    }
   }
   const auto far = !near;
-  if (!any_lane(far)) return series;
+  if (!any_lane(far)) return approx;
   const T exact = T(pow(x, T(c.pow_q)));
   memo.base = if_else(far, x, memo.base);
   memo.inv_base = if_else(far, T(1) / x, memo.inv_base);
   memo.value = if_else(far, exact, memo.value);
-  return if_else(far, exact, series);
+  return if_else(far, exact, approx);
 }
 
 /// Fz62 − Fz at a loaded radius with its first two derivatives, and the deflection ρz there with
@@ -409,7 +465,7 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
   // The camber's deflection at Romega is carried already; the free-rolling part makes up the rest.
   const T rho_zfr0 = max_of(x0 * c.r0 - rho_romega, T(0)) * c.inv_free_share;
   // The power at the start's deflection, computed while its Rl and ρz are: the first evaluation
-  // (at ρz ≈ x0·R0 where the free-rolling part is positive) then takes it from the memo's series
+  // (at ρz ≈ x0·R0 where the free-rolling part is positive) then takes it from the memo (fz62_pow)
   // instead of waiting for pow. Not in fixed point (no FPU to overlap it with: it would only add a
   // division and the series), nor where Q_FCY2 = 0 (no power is computed), nor where the root lies
   // above Romega (the start is Romega, where the memo is exact already).
