@@ -166,6 +166,73 @@ TEST(Mf62LoadedRadius, HalleyEstimateWaitsForTheCubicRegime) {
   EXPECT_NEAR(static_cast<double>(solved4.rl_m[0]), solved.rl_m, 1e-7);
 }
 
+// fz62_pow in float and double: near its memo (b, b^q) it takes (x/b)^q from the [3/3] Padé
+// approximant wherever the approximant's error bound is below half of the type's ε, else pow,
+// which becomes the new memo. Over q from −10 to 10 (whole values too, where the approximant is
+// exact) and steps δ = x/b − 1 up to ±0.35, each result is within half an ε plus the arithmetic's
+// rounding of x^q (from long double), and where pow was taken the result is pow's and the memo
+// moved to x. For MagicFormula62's
+// q = −0.9502 the approximant (not pow) serves every |δ| < 0.3 in float; the binomial series to
+// δ⁶ it replaced served only |δ| < 0.095.
+template <typename T, typename P>
+void check_pow_near_memo(const MfParameters<P>& base_params, double tolerance, double float_reach) {
+  int approximated = 0;
+  int computed = 0;
+  std::vector<double> qs{2.0 * static_cast<double>(base_params.q_fcy2)};  // MagicFormula62: −0.9502
+  for (int qi = -40; qi <= 40; ++qi) {
+    for (const double offset : {0.0, 0.0123, 0.31}) {
+      if (qi * 0.25 + offset <= 10.0) qs.push_back(qi * 0.25 + offset);
+    }
+  }
+  for (std::size_t qi = 0; qi < qs.size(); ++qi) {
+    const double q = qs[qi];
+    MfParameters<P> p = base_params;
+    p.q_fcy2 = static_cast<P>(q / 2.0);
+    const auto c =
+        detail::fz62_curve(p, T(0.01F), T(80.0F), T(0.39F), T(0.0F), T(100.0F), T(2000.0F));
+    const double q_t = static_cast<double>(c.pow_q);  // q as the type holds it
+    for (const double b : {1e-4, 0.02, 0.3}) {
+      if (std::fabs(q * std::log10(b)) > 30.0) continue;  // b^q outside float's normal range
+      for (int di = -35; di <= 35; ++di) {
+        const T base = T(static_cast<P>(b));
+        const T x = T(static_cast<P>(b * (1.0 + di * 0.01)));
+        detail::Fz62PowMemo<T> memo;
+        memo.base = base;
+        memo.inv_base = T(1) / base;
+        memo.value = T(std::pow(base, T(static_cast<P>(q_t))));
+        const T got = detail::fz62_pow(c, x, memo);
+        const long double exact =
+            std::pow(static_cast<long double>(x), static_cast<long double>(q_t));
+        const long double rel = std::fabs(static_cast<long double>(got) / exact - 1.0L);
+        SCOPED_TRACE("q " + std::to_string(q_t) + " b " + std::to_string(b) + " δ " +
+                     std::to_string(di * 0.01));
+        const bool kept = !(memo.base < base) && !(memo.base > base);  // the memo did not move
+        if (kept) {
+          ++approximated;
+          EXPECT_LE(static_cast<double>(rel), tolerance);
+        } else {
+          ++computed;
+          EXPECT_EQ(memo.base, x);
+          EXPECT_EQ(got, T(std::pow(x, T(static_cast<P>(q_t)))));
+        }
+        if (qi == 0 && std::abs(di) * 0.01 <= float_reach + 1e-9) {
+          EXPECT_TRUE(kept) << "pow taken within the approximation's reach";
+        }
+      }
+    }
+  }
+  EXPECT_GT(approximated, 1000);
+  EXPECT_GT(computed, 1000);
+}
+
+TEST(Mf62LoadedRadius, PowNearItsMemoWithinHalfAnEpsilon) {
+  MfParameters<double> p = load("MagicFormula62_Parameters.tir");
+  // Half of ε (the bound) plus the rounding of b^q·N/D: ≤ 8 ulps of the result.
+  check_pow_near_memo<double>(p, 1.1e-16 + 8 * 2.2e-16, 0.0);
+  const MfParameters<float> pf = convert_parameters<float>(p);
+  check_pow_near_memo<float>(pf, 6e-8 + 8 * 1.2e-7, 0.29);
+}
+
 TEST(Mf62LoadedRadius, FloatAndFourLanesAgreeWithDouble) {
   const MfParameters<double> p = load("MagicFormula62_Parameters.tir");
   const MfParameters<float> pf = convert_parameters<float>(p);
