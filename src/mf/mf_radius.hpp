@@ -49,15 +49,15 @@ void rolling_radius(const MfParameters<P>& p, Prepared<T>& in) {
   in.romega = romega;
 }
 
-/// MF 6.2's vertical force as a function of the loaded radius, Fz62(Rl) (calculateFz62), at a
-/// given γ, ω, Romega, Fx, Fy and pressure. What does not depend on Rl is computed once here
-/// (√ of Q_FZ1, tan γ, the speed and Fx corrections, the coefficients times γ), so the root
-/// search below pays per step only for the Rl-dependent part.
 /// Whether (1 + δ)^q near fz62_pow's memo is its [3/3] Padé approximant (float, double, Jets) or
 /// its binomial series to δ⁶ (lanes, fixed point); see fz62_pow.
 template <typename T>
 inline constexpr bool kPowPade = !is_lanes<T> && !is_fixed_point<T>;
 
+/// MF 6.2's vertical force as a function of the loaded radius, Fz62(Rl) (calculateFz62), at a
+/// given γ, ω, Romega, Fx, Fy and pressure. What does not depend on Rl is computed once here
+/// (√ of Q_FZ1, tan γ, the speed and Fx corrections, the coefficients times γ), so the root
+/// search below pays per step only for the Rl-dependent part.
 template <typename T, typename P>
 struct Fz62Curve {
   P q_fcy2;
@@ -80,8 +80,8 @@ struct Fz62Curve {
   T fy;
   // Fcy² = (ρz/R0)^q·(Q_FCY·(Fy − Sfyg)/Fz0)², q = 2·Q_FCY2; near a point where the power is
   // known, (1 + δ)^q (see fz62_pow) by
-  //   - float, double, Jets: its [3/3] Padé approximant N(δ)/D(δ), whose error is about
-  //     e7·δ⁷ with e7 = −(q − 3)(q − 2)(q − 1)q(q + 1)(q + 2)(q + 3)/100800;
+  //   - float, double, Jets: its [3/3] Padé approximant N(δ)/D(δ), N/D − (1 + δ)^q ≈ e7·δ⁷
+  //     with e7 = (q − 3)(q − 2)(q − 1)q(q + 1)(q + 2)(q + 3)/100800;
   //   - lanes, fixed point: its binomial series to δ⁶ (no division), remainder C(q, 7)·δ⁷.
   T pow_n1, pow_n2, pow_n3;  // N(δ) = 1 + n1·δ + n2·δ² + n3·δ³ (series: C(q, 1…3))
   T pow_d1, pow_d2, pow_d3;  // D(δ) = 1 + d1·δ + d2·δ² + d3·δ³ (series: C(q, 4…6))
@@ -161,10 +161,15 @@ Fz62Curve<T, P> fz62_curve(const MfParameters<P>& p, const T& gamma, const T& om
     c.pow_d2 = down2;
     c.pow_d3 = down2 * (P(1) - q) * P(1.0 / 12.0);
     const P e7 = (q * q - P(9)) * (q * q - P(4)) * (q * q - P(1)) * q * P(1.0 / 100800.0);
-    // 4·|e7|: over q ∈ [−10, 10] and |δ| < 0.3 the error is at most 3.4·|e7|·|δ|⁷. Where Q_FCY2
-    // is a fit's Jet, at least 1e-3: at a whole q in [−3, 3] e7 is 0 and the approximant exact in
-    // value, but not in its derivative with respect to Q_FCY2 (|de7/dq| ≤ 1.2e-3 for |q| ≤ 2),
-    // whose truncation this keeps near the same bound.
+    // 4·|e7|: wherever fz62_pow accepts the approximant (4·|e7|·|δ|⁷ below half of ε, |δ| < 0.3)
+    // its error relative to (1 + δ)^q is at most 3.4·|e7|·|δ|⁷ over q ∈ [−10, 10] (a grid of
+    // q and δ; a helper's review found the accepted results within 0.86·ε/2 of x^q in float and
+    // 0.28·ε/2 in double, also near every whole q and for |q| up to 1e10). The asymptotic form
+    // alone is no bound where it is not accepted: at δ = −0.3 the error is 4.6·|e7|·|δ|⁷ for
+    // q = −0.95 and 206× for q = −10. Where Q_FCY2 is a fit's Jet, at least 1e-3: at a whole q
+    // in [−3, 3] e7 is 0 and the approximant exact in value, but not in its derivative with
+    // respect to Q_FCY2 (|de7/dq| ≤ 1.2e-3 for |q| ≤ 2, 7.1e-3 at ±3, where that derivative's
+    // truncation can reach 7–9× the bound, as it could with the series).
     const P bound = P(4) * (e7 < P(0) ? -e7 : e7);
     if constexpr (std::is_arithmetic_v<P>) {
       c.pow_remainder = T(bound);
@@ -215,8 +220,8 @@ struct Fz62PowMemo {
   T value = T(0);
 };
 
-/// x^q from the memo's base b, (b·(1 + δ))^q = b^q·(1 + δ)^q, where the bound
-/// pow_remainder·|δ|⁷ on the approximation's error (Fz62Curve) is below half of ε, else pow, which
+/// x^q from the memo's base b, (b·(1 + δ))^q = b^q·(1 + δ)^q, where pow_remainder·|δ|⁷ (there a
+/// bound on the approximation's relative error; Fz62Curve) is below half of ε, else pow, which
 /// becomes the new base:
 ///   - float, double, Jets: b^q·N(δ)/D(δ), the [3/3] Padé approximant, for |δ| < 0.3. It is
 ///     far closer than the binomial series to δ⁶ (q = −0.95, δ = 0.3: 2e-9 against 1.9e-4), so

@@ -166,19 +166,48 @@ TEST(Mf62LoadedRadius, HalleyEstimateWaitsForTheCubicRegime) {
   EXPECT_NEAR(static_cast<double>(solved4.rl_m[0]), solved.rl_m, 1e-7);
 }
 
+// (1 + δ)^q's [3/3] Padé approximant in long double, its coefficients from ₂F₁(−3, −3 − q; −6; −δ)
+// over ₂F₁(−3, q − 3; −6; −δ) (term by term, independently of fz62_curve's closed forms).
+long double pade33(long double q, long double delta) {
+  long double num = 1.0L;
+  long double den = 1.0L;
+  long double tn = 1.0L;
+  long double td = 1.0L;
+  for (int k = 0; k < 3; ++k) {
+    const long double kk = k;
+    tn *= (-3.0L + kk) * (-3.0L - q + kk) / ((-6.0L + kk) * (kk + 1.0L)) * -delta;
+    td *= (-3.0L + kk) * (-3.0L + q + kk) / ((-6.0L + kk) * (kk + 1.0L)) * -delta;
+    num += tn;
+    den += td;
+  }
+  return num / den;
+}
+
 // fz62_pow in float and double: near its memo (b, b^q) it takes (x/b)^q from the [3/3] Padé
 // approximant wherever the approximant's error bound is below half of the type's ε, else pow,
-// which becomes the new memo. Over q from −10 to 10 (whole values too, where the approximant is
-// exact) and steps δ = x/b − 1 up to ±0.35, each result is within half an ε plus the arithmetic's
-// rounding of x^q (from long double), and where pow was taken the result is pow's and the memo
-// moved to x. For MagicFormula62's
-// q = −0.9502 the approximant (not pow) serves every |δ| < 0.3 in float; the binomial series to
-// δ⁶ it replaced served only |δ| < 0.095.
+// which becomes the new memo. Over q from −10 to 10 (whole values too; for whole q in [−3, 3] the
+// approximant is exact, and q near those, where its error term is tiny, tests the reach of
+// |δ| < 0.3) and steps δ = x/b − 1 up to ±0.8:
+//   - where the approximant was taken, its truncation error alone (the approximant in long double
+//     at the δ the type computed, against (1 + δ)^q) is at most half of ε: 6e-8 in float,
+//     1.1e-16 in double;
+//   - each result is within that plus the arithmetic's rounding of x^q (from long double): the
+//     rounding of δ = x·(1/b) − 1, amplified by |q|, and of b^q·N/D, within (8 + |q|) ε;
+//   - where pow was taken the result is pow's and the memo moved to x.
+// For MagicFormula62's q = −0.9502 the approximant (not pow) serves every |δ| < 0.3 in float; the
+// binomial series to δ⁶ it replaced served only |δ| < 0.095.
 template <typename T, typename P>
-void check_pow_near_memo(const MfParameters<P>& base_params, double tolerance, double float_reach) {
+void check_pow_near_memo(const MfParameters<P>& base_params, double half_epsilon, double epsilon,
+                         double float_reach) {
   int approximated = 0;
   int computed = 0;
-  std::vector<double> qs{2.0 * static_cast<double>(base_params.q_fcy2)};  // MagicFormula62: −0.9502
+  // MagicFormula62's first (−0.9502), then q near the whole values where e7 vanishes.
+  std::vector<double> qs{2.0 * static_cast<double>(base_params.q_fcy2),
+                         1e-4,
+                         -1e-3,
+                         1.0 + 1e-4,
+                         -2.0 + 1e-3,
+                         3.0 - 1e-4};
   for (int qi = -40; qi <= 40; ++qi) {
     for (const double offset : {0.0, 0.0123, 0.31}) {
       if (qi * 0.25 + offset <= 10.0) qs.push_back(qi * 0.25 + offset);
@@ -191,15 +220,17 @@ void check_pow_near_memo(const MfParameters<P>& base_params, double tolerance, d
     const auto c =
         detail::fz62_curve(p, T(0.01F), T(80.0F), T(0.39F), T(0.0F), T(100.0F), T(2000.0F));
     const double q_t = static_cast<double>(c.pow_q);  // q as the type holds it
+    const double tolerance = half_epsilon + (8.0 + std::fabs(q_t)) * epsilon;
     for (const double b : {1e-4, 0.02, 0.3}) {
       if (std::fabs(q * std::log10(b)) > 30.0) continue;  // b^q outside float's normal range
-      for (int di = -35; di <= 35; ++di) {
+      for (int di = -80; di <= 80; ++di) {
         const T base = T(static_cast<P>(b));
         const T x = T(static_cast<P>(b * (1.0 + di * 0.01)));
         detail::Fz62PowMemo<T> memo;
         memo.base = base;
         memo.inv_base = T(1) / base;
         memo.value = T(std::pow(base, T(static_cast<P>(q_t))));
+        const T delta = x * memo.inv_base - T(1);  // as fz62_pow computes it
         const T got = detail::fz62_pow(c, x, memo);
         const long double exact =
             std::pow(static_cast<long double>(x), static_cast<long double>(q_t));
@@ -209,6 +240,12 @@ void check_pow_near_memo(const MfParameters<P>& base_params, double tolerance, d
         const bool kept = !(memo.base < base) && !(memo.base > base);  // the memo did not move
         if (kept) {
           ++approximated;
+          const long double d = static_cast<long double>(delta);
+          const long double truncation =
+              std::fabs(pade33(static_cast<long double>(q_t), d) /
+                            std::pow(1.0L + d, static_cast<long double>(q_t)) -
+                        1.0L);
+          EXPECT_LE(static_cast<double>(truncation), half_epsilon);
           EXPECT_LE(static_cast<double>(rel), tolerance);
         } else {
           ++computed;
@@ -227,10 +264,9 @@ void check_pow_near_memo(const MfParameters<P>& base_params, double tolerance, d
 
 TEST(Mf62LoadedRadius, PowNearItsMemoWithinHalfAnEpsilon) {
   MfParameters<double> p = load("MagicFormula62_Parameters.tir");
-  // Half of ε (the bound) plus the rounding of b^q·N/D: ≤ 8 ulps of the result.
-  check_pow_near_memo<double>(p, 1.1e-16 + 8 * 2.2e-16, 0.0);
+  check_pow_near_memo<double>(p, 1.1e-16, 2.2e-16, 0.0);
   const MfParameters<float> pf = convert_parameters<float>(p);
-  check_pow_near_memo<float>(pf, 6e-8 + 8 * 1.2e-7, 0.29);
+  check_pow_near_memo<float>(pf, 6e-8, 1.2e-7, 0.29);
 }
 
 TEST(Mf62LoadedRadius, FloatAndFourLanesAgreeWithDouble) {
