@@ -230,8 +230,10 @@ struct Fz62PowMemo {
 ///     second evaluation's deflection is 1.3 to 2.3 times the start's (Fcy²'s power, which the
 ///     start leaves out, matters most there);
 ///   - lanes, fixed point: b^q·(1 + C(q,1)δ + … + C(q,6)δ⁶) for |δ| < ¼, without a division.
-///     Fixed point has no FPU to overlap a division with; on four lanes, whose Halley steps need
-///     few pows inside the loop, the approximant's division made MF 6.2 about 1 % slower
+///     Fixed point has no FPU to overlap a division with. On four lanes one lane far enough
+///     makes the group take pow: with the series 51 000 of 51 200 groups of the benchmark's
+///     points take one inside the loop, with the approximant most still would (from float's
+///     0.33 per solve, about 80 %), so it mainly added its division: MF 6.2 about 1 % slower
 ///     (alternating runs of mf_bench: MF 6.2 / MF 6.1 1.30 → 1.32).
 /// Its derivatives are not needed: fz62 takes them as the power times q·x'/x (exact for x^q, and
 /// for the approximation to its accuracy).
