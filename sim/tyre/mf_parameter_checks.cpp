@@ -83,6 +83,16 @@ void check_mf_parameters(const mf::MfParameters<double>& p, const tir::TirFile& 
            "WIDTH = " + value_text(p.width_m) + ": the contact width will be meaningless");
     }
   }
+  // Fz62 = (1 + speed − Fx² − Fcy²)·S with Fcy² ∝ (ρz/R0)^(2·Q_FCY2) and S ∝ ρz near Romega: below
+  // −0.5 the lateral term Fcy²·S grows without bound as ρz → 0.
+  if (p.fit_type == mf::FitType::mf62 && p.q_fcy2 < -0.5 && !is_zero(p.q_fcy)) {
+    warn(warning, file, "Q_FCY2",
+         "Q_FCY2 = " + value_text(p.q_fcy2) +
+             " is below -0.5 with Q_FCY != 0: the vertical force's lateral term grows without "
+             "bound as the deflection goes to 0, so a lightly loaded wheel with a lateral force "
+             "has no loaded radius near the free radius (Rl, rho and Cz at light loads are then "
+             "ill-defined and float and double may land on different roots)");
+  }
   if (!(p.vxlow_mps > 0.0)) {
     warn(warning, file, "VXLOW",
          "VXLOW = " + value_text(p.vxlow_mps) + ": no low-speed smoothing of the slips");
