@@ -89,9 +89,9 @@ void check_mf_parameters(const mf::MfParameters<double>& p, const tir::TirFile& 
     warn(warning, file, "Q_FCY2",
          "Q_FCY2 = " + value_text(p.q_fcy2) +
              " is below -0.5 with Q_FCY != 0: the vertical force's lateral term grows without "
-             "bound as the deflection goes to 0, so a lightly loaded wheel with a lateral force "
-             "has no loaded radius near the free radius (Rl, rho and Cz at light loads are then "
-             "ill-defined and float and double may land on different roots)");
+             "bound as the deflection goes to 0, so with a lateral force it has no root near the "
+             "free radius; light loads' Rl, rho and Cz then depend on where the solve starts "
+             "(float and double may differ)");
   }
   if (!(p.vxlow_mps > 0.0)) {
     warn(warning, file, "VXLOW",
