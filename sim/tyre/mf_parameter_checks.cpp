@@ -83,16 +83,6 @@ void check_mf_parameters(const mf::MfParameters<double>& p, const tir::TirFile& 
            "WIDTH = " + value_text(p.width_m) + ": the contact width will be meaningless");
     }
   }
-  // Fz62 = (1 + speed − Fx² − Fcy²)·S with Fcy² ∝ (ρz/R0)^(2·Q_FCY2) and S ∝ ρz near Romega: below
-  // −0.5 the lateral term Fcy²·S grows without bound as ρz → 0.
-  if (p.fit_type == mf::FitType::mf62 && p.q_fcy2 < -0.5 && !is_zero(p.q_fcy)) {
-    warn(warning, file, "Q_FCY2",
-         "Q_FCY2 = " + value_text(p.q_fcy2) +
-             " is below -0.5 with Q_FCY != 0: the vertical force's lateral term grows without "
-             "bound as the deflection goes to 0, so with a lateral force it has no root near the "
-             "free radius; light loads' Rl, rho and Cz then depend on where the solve starts "
-             "(float and double may differ)");
-  }
   if (!(p.vxlow_mps > 0.0)) {
     warn(warning, file, "VXLOW",
          "VXLOW = " + value_text(p.vxlow_mps) + ": no low-speed smoothing of the slips");

@@ -189,18 +189,6 @@ TEST(MfParametersFromTir, DefectiveParametersAreRefused) {
   EXPECT_NE(w.warning.find("w.tir:4: VXLOW = 0"), std::string::npos) << w.warning;
   EXPECT_NE(w.warning.find("w.tir:5: FNOMIN = 50 lies outside FZMIN"), std::string::npos)
       << w.warning;
-  // MF 6.2's Fz62 with Q_FCY2 < −0.5: (ρz/R0)^(2·Q_FCY2)·ρz is unbounded as ρz → 0. At −0.5 and
-  // with Q_FCY = 0 it is not; MF 6.1 does not use Q_FCY2.
-  const auto q_fcy2_warning = [](const char* fittyp, const char* q_fcy2, const char* q_fcy) {
-    const std::string text = std::string("[M]\nFITTYP = ") + fittyp +
-                             "\nPCX1 = 1.6\nQ_FCY = " + q_fcy + "\nQ_FCY2 = " + q_fcy2 + "\n";
-    return tyre::mf_parameters_from_tir(tir::parse_tir(text, "q.tir")).warning;
-  };
-  EXPECT_NE(q_fcy2_warning("62", "-0.6", "0.5").find("q.tir:5: Q_FCY2 = -0.6 is below -0.5"),
-            std::string::npos);
-  EXPECT_EQ(q_fcy2_warning("62", "-0.5", "0.5").find("Q_FCY2"), std::string::npos);
-  EXPECT_EQ(q_fcy2_warning("62", "-0.6", "0").find("Q_FCY2"), std::string::npos);
-  EXPECT_EQ(q_fcy2_warning("61", "-0.6", "0.5").find("Q_FCY2"), std::string::npos);
 }
 
 TEST(MfParametersFromTir, NonNumericValueIsAnError) {
