@@ -353,19 +353,44 @@ template <bool kSecond, typename T, typename P>
   return {excess, slope, curvature, rho_z, drho_z, d2rho_z};
 }
 
-/// x = ρ/R0 with q_fz2·x² + q_fz1·x = Fz / E, E = (base − Fcy²)·(1 + PFZ1·dpi)·Fz0: the positive
-/// root written without cancellation, 2·Fz / (E·q_fz1 + √(E·(E·q_fz1² + 4·q_fz2·Fz))), one division
-/// where Fz / E first would take two (the start heads the solve's dependent chain: measured −2 ns
-/// per solve in float, −3 ns in double). 0 where Fz or E is not positive. Fixed point divides
-/// first, as before: (E·Q_FZ1)² (~1e10) overflows Q31.32. The lanes too, for speed: with one
-/// division the 16-lane batch's MF 6.2 evaluation measured 2 ns per wheel slower (59–60 against
-/// 57–58 ns, alternating runs), though the solve alone was not. Dividing first gives 0 where Fz/E
-/// is not positive (Fz ≥ 0 from evaluate's inputs: the same).
+/// x = ρ/R0 with q_fz2·x² + q_fz1·x = Fz / E, E = (base − Fcy²)·(1 + PFZ1·dpi)·Fz0, the start of
+/// loaded_radius62:
+/// - double (and Jets): the positive root written without cancellation,
+///   2·Fz / (E·q_fz1 + √(E·(E·q_fz1² + 4·q_fz2·Fz))), one division where Fz / E first would take
+///   two (the start heads the solve's dependent chain: measured −3 ns per solve). 0 where Fz or E
+///   is not positive.
+/// - float and lanes: the root's continued fraction cut after its second convergent. With
+///   u = q_fz2·Fz/(E·q_fz1²) the root is (Fz/(E·q_fz1))·f(u), f = 2/(1 + √(1 + 4u)), and f solves
+///   f = 1/(1 + u·f); its second convergent (1 + u)/(1 + 2u) is above f by at most u³·f (0.03 % at
+///   u = 0.08, the sample MF 6.2 tyre at FNOMIN; 0.9 % at 0.3; 8 % at 1) and equal to it where
+///   Q_FZ2 = 0 (MF 5.2, PAC2002). Written as Fz·(A + w)/(E·q_fz1·(A + 2w)) with A = E·q_fz1²,
+///   w = q_fz2·Fz: one division and no square root, where the root took two divisions and a
+///   square root one after the other. The start heads the solve's dependent chain: four lanes'
+///   MF 6.2 evaluation measured 11–14 ns per group of four faster (MF 6.2 / MF 6.1 1.315 → 1.293),
+///   float 3–5 ns (1.30 → 1.29), the 16-lane batch 1.29 → 1.27 (alternating mf_bench runs), with
+///   the same evaluations on the benchmark's points (lanes 2.053 per group, float 2.278 per
+///   wheel). A start above the root is on the side where Fcy²'s power, which the start leaves
+///   out, puts the root. What it costs: where the quadratic is Fz62 itself (γ = 0 and Fy = 0
+///   exactly), the exact root converged in one evaluation and this start takes two above about
+///   0.5·FNOMIN, like every other point; over the envelope test's points float takes 0.5–1.6 %
+///   more evaluations (loads of several FNOMIN, where the convergent is coarse), lanes the same.
+///   0 where the denominator is 0 (Q_FZ1 = 0: the start is Romega); loaded_radius62 clamps a
+///   negative or non-finite start onto its bracket.
+/// - fixed point: Fz / E first, then the root: (E·Q_FZ1)² (~1e10) overflows Q31.32.
 template <typename T, typename P>
 [[gnu::always_inline]] inline T quadratic_deflection(const Fz62Curve<T, P>& c, const T& fz,
                                                      const T& fcy) {
+  if constexpr (is_lanes<T> || std::is_same_v<T, float>) {
+    // E = net·(1 + PFZ1·dpi)·Fz0.
+    const T net = c.base - fcy * fcy;
+    const T w = c.q_fz2 * fz;
+    const T big_a = net * (c.stiffness_scale * c.q_fz1 * c.q_fz1);
+    const T num = fz * (big_a + w);
+    const T den = (net * (c.stiffness_scale * c.q_fz1)) * (big_a + T(2) * w);
+    return div_or(num, den, T(0));
+  }
   const T external = (c.base - fcy * fcy) * c.stiffness_scale;
-  if constexpr (is_fixed_point<T> || is_lanes<T>) {
+  if constexpr (is_fixed_point<T>) {
     const T q = max_of(div_or(fz, external, T(0)), T(0));
     return div_or(T(2) * q, c.q_fz1 + sqrt(c.q_fz1 * c.q_fz1 + T(4) * c.q_fz2 * q), T(0));
   } else {
@@ -395,7 +420,8 @@ struct LoadedRadius62 {
 ///   there, the branch has no root (loads beyond a fully squashed tyre, |γ| near 90° with the
 ///   limits off) and that end is the answer, as bisection gives.
 /// - Start: the MF 6.1-style deflection (the quadratic in ρ/R0 with the Rl-independent
-///   corrections) less the camber's deflection at Romega. It leaves out Fcy's factor
+///   corrections; in float and on lanes its second convergent, quadratic_deflection) less the
+///   camber's deflection at Romega. It leaves out Fcy's factor
 ///   (ρz/R0)^Q_FCY2 and is a few mm off (1 cm where that factor matters most). Where the start lies
 ///   below Romega on that branch and Q_FCY2 ≠ 0, the power at the start's deflection is computed
 ///   alongside its Rl (it seeds the memo of fz62_pow), so that the first evaluation, at nearly that
@@ -423,8 +449,8 @@ struct LoadedRadius62 {
 /// tests/mf/mf62_loaded_radius_test.cpp shows over the envelope (every MF 6.2, MF 5.2 and PAC2002
 /// test tyre, loads 0 … 10·FZMAX, |γ| to 1.5707, slips, speeds, pressures, limits on and off) that
 /// it converges in at most 11 steps (2–3 at most points; MF 5.2 and PAC2002, without the camber
-/// and lateral terms, in 1: the start is their root) to the least-deflection root, the one a tyre
-/// reaches when loaded from Romega. Should a lane still be unconverged after kNewtonSteps,
+/// and lateral terms, in 1: the start is their root, in float and on lanes where Q_FZ2 = 0) to the
+/// least-deflection root, the one a tyre reaches when loaded from Romega. Should a lane still be unconverged after kNewtonSteps,
 /// bisection of its remaining bracket finishes it (lanes: a converged lane keeps its value).
 /// Outside the envelope, where 1 + PFZ1·dpi < 0 (a tyre of negative stiffness: PFZ1 > 1 at a low
 /// pressure with the limits off), Fz62 below Romega is positive only on a hump near Romega
@@ -469,8 +495,9 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
   auto hi_known = !beyond;  // Fz62(hi) ≤ Fz is known
   // Start: q_fz2·x² + q_fz1·x = Fz / ((1 + speed − Fx² − Fcy²)(1 + PFZ1·dpi)·Fz0), x = ρ/R0.
   const T x0 = quadratic_deflection(c, fz_target, c.fcy_per_force * c.fy);
-  // The camber's deflection at Romega is carried already; the free-rolling part makes up the rest.
-  const T rho_zfr0 = max_of(x0 * c.r0 - rho_romega, T(0)) * c.inv_free_share;
+  // The camber's deflection at Romega is carried already; the free-rolling part makes up the rest
+  // (negative where the camber's alone is more: the start is then Romega, below).
+  const T rho_zfr0 = (x0 * c.r0 - rho_romega) * c.inv_free_share;
   // The power at the start's deflection, computed while its Rl and ρz are: the first evaluation
   // (at ρz ≈ x0·R0 where the free-rolling part is positive) then takes it from the memo (fz62_pow)
   // instead of waiting for pow. Not in fixed point (no FPU to overlap it with: it would only add a
@@ -487,7 +514,10 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
       memo.value = if_else(seeded, value, memo.value);
     }
   }
-  T rl = min_of(max_of(c.romega - rho_zfr0, lo), hi);
+  // On the bracket: [0, Romega] below Romega, Romega itself above it (lo = Romega). Two selects on
+  // the chain where a clamp of ρ at 0 and of Rl at both ends took three, with the same value; a
+  // NaN start (max_of and min_of keep their first argument then) becomes lo.
+  T rl = min_of(c.romega, max_of(lo, c.romega - rho_zfr0));
   auto active = !(T(0) > T(0));     // every lane
   auto previous_settles = !active;  // the previous step may start a settled estimate (below)
   T previous_step = T(0);

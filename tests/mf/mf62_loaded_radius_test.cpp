@@ -15,7 +15,9 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <random>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "golden_path.hpp"
@@ -267,6 +269,75 @@ TEST(Mf62LoadedRadius, PowNearItsMemoWithinHalfAnEpsilon) {
   check_pow_near_memo<double>(p, 1.1e-16, 2.2e-16, 0.0);
   const MfParameters<float> pf = convert_parameters<float>(p);
   check_pow_near_memo<float>(pf, 6e-8, 1.2e-7, 0.29);
+}
+
+/// The float and lanes start (detail::quadratic_deflection) against the root of its quadratic in
+/// double: the second convergent of the root's continued fraction, above the root by at most u³
+/// of it (u = Q_FZ2·Fz/(E·Q_FZ1²)), the root itself where Q_FZ2 = 0, over random curves far wider
+/// than any tyre's (Q_FZ1 2–40, Q_FZ2 0–150, loads 1 N–300 kN).
+template <typename T>
+void check_start_convergent() {
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> q1(2.0, 40.0);
+  std::uniform_real_distribution<double> q2(0.0, 150.0);
+  std::uniform_real_distribution<double> log_fz(0.0, 5.5);
+  std::uniform_real_distribution<double> base(0.3, 1.6);
+  std::uniform_real_distribution<double> scale(1e3, 6e4);
+  std::uniform_real_distribution<double> fcy(0.0, 0.5);
+  int checked = 0;
+  int exact = 0;
+  double worst_share = 0.0;  // the most of its bound u³ an error above the root used
+  for (int i = 0; i < 100000; ++i) {
+    detail::Fz62Curve<T, float> c{};
+    const auto q_fz1 = static_cast<float>(q1(rng));
+    const bool linear = i % 10 == 0;
+    const float q_fz2 = linear ? 0.0F : static_cast<float>(q2(rng));
+    const auto base_f = static_cast<float>(base(rng));
+    const auto scale_f = static_cast<float>(scale(rng));
+    const auto fz = static_cast<float>(std::pow(10.0, log_fz(rng)));
+    const auto l = static_cast<float>(fcy(rng));
+    c.q_fz1 = T(q_fz1);
+    c.q_fz2 = T(q_fz2);
+    c.base = T(base_f);
+    c.stiffness_scale = T(scale_f);
+    // The root in double, of the curve's float values.
+    const double a1 = q_fz1;
+    const double a2 = q_fz2;
+    const double e = (double{base_f} - double{l} * double{l}) * double{scale_f};
+    ASSERT_GT(e, 0.0);
+    const double q = double{fz} / e;
+    const double root = 2.0 * q / (a1 + std::sqrt(a1 * a1 + 4.0 * a2 * q));
+    const double u = a2 * q / (a1 * a1);
+    float x = 0.0F;
+    if constexpr (std::is_same_v<T, float>) {
+      x = detail::quadratic_deflection(c, fz, l);
+    } else {
+      x = detail::quadratic_deflection(c, T(fz), T(l))[0];
+    }
+    const double above = double{x} / root - 1.0;
+    const std::string where = "Q_FZ1 " + std::to_string(q_fz1) + ", Q_FZ2 " +
+                              std::to_string(q_fz2) + ", Fz " + std::to_string(fz) + ", u " +
+                              std::to_string(u);
+    // Float's rounding: a few ulp of the root either way.
+    EXPECT_GE(above, -1e-6) << where;
+    EXPECT_LE(above, u * u * u + 1e-6) << where;
+    if (linear) {
+      EXPECT_NEAR(above, 0.0, 1e-6) << where;
+      ++exact;
+    } else if (u > 1e-2) {
+      worst_share = std::max(worst_share, above / (u * u * u));
+    }
+    ++checked;
+  }
+  EXPECT_EQ(checked, 100000);
+  EXPECT_GT(exact, 9000);
+  // The bound is nearly reached at small u (the error's leading term is u³).
+  EXPECT_GT(worst_share, 0.9);
+}
+
+TEST(Mf62LoadedRadius, StartIsTheRootsSecondConvergent) {
+  check_start_convergent<float>();
+  check_start_convergent<lanes::F4>();
 }
 
 TEST(Mf62LoadedRadius, FloatAndFourLanesAgreeWithDouble) {
