@@ -359,23 +359,27 @@ template <bool kSecond, typename T, typename P>
 ///   2·Fz / (E·q_fz1 + √(E·(E·q_fz1² + 4·q_fz2·Fz))), one division where Fz / E first would take
 ///   two (the start heads the solve's dependent chain: measured −3 ns per solve). 0 where Fz or E
 ///   is not positive.
-/// - float and lanes: the root's continued fraction cut after its second convergent. With
+/// - float and lanes: the root's continued fraction cut after its third convergent. With
 ///   u = q_fz2·Fz/(E·q_fz1²) the root is (Fz/(E·q_fz1))·f(u), f = 2/(1 + √(1 + 4u)), and f solves
-///   f = 1/(1 + u·f); its second convergent (1 + u)/(1 + 2u) is above f by at most u³·f (0.03 % at
-///   u = 0.08, the sample MF 6.2 tyre at FNOMIN; 0.9 % at 0.3; 8 % at 1) and equal to it where
-///   Q_FZ2 = 0 (MF 5.2, PAC2002). Written as Fz·(A + w)/(E·q_fz1·(A + 2w)) with A = E·q_fz1²,
-///   w = q_fz2·Fz: one division and no square root, where the root took two divisions and a
-///   square root one after the other. The start heads the solve's dependent chain: four lanes'
-///   MF 6.2 evaluation measured 11–14 ns per group of four faster (MF 6.2 / MF 6.1 1.315 → 1.293),
-///   float 3–5 ns (1.30 → 1.29), the 16-lane batch 1.29 → 1.27 (alternating mf_bench runs), with
-///   the same evaluations on the benchmark's points (lanes 2.053 per group, float 2.278 per
-///   wheel). A start above the root is on the side where Fcy²'s power, which the start leaves
-///   out, puts the root. What it costs: where the quadratic is Fz62 itself (γ = 0 and Fy = 0
-///   exactly), the exact root converged in one evaluation and this start takes two above about
-///   0.5·FNOMIN, like every other point; over the envelope test's points float takes 0.5–1.6 %
-///   more evaluations (loads of several FNOMIN, where the convergent is coarse), lanes the same.
-///   0 where the denominator is 0 (Q_FZ1 = 0: the start is Romega); loaded_radius62 clamps a
-///   negative or non-finite start onto its bracket.
+///   f = 1/(1 + u·f); its third convergent (1 + 2u)/(1 + 3u + u²) is below f by at most u⁴·f
+///   (4e-5 at u = 0.08, the sample MF 6.2 tyre at FNOMIN; 0.2 % at 0.3; 3 % at 1) and equal to it
+///   where Q_FZ2 = 0 (MF 5.2, PAC2002). Written as Fz·q_fz1·(A + 2w)/(A·(A + 3w) + w²) with
+///   A = E·q_fz1², w = q_fz2·Fz: one division and no square root, where the root took two
+///   divisions and a square root one after the other. The start heads the solve's dependent
+///   chain: four lanes' MF 6.2 evaluation measured 8–14 ns per group of four faster (MF 6.2 /
+///   MF 6.1 1.31 → 1.29–1.30), float 3–5 ns (1.30 → 1.29), the 16-lane batch 1.29 → 1.27
+///   (alternating mf_bench runs), with the same evaluations on the benchmark's points (lanes 2.053
+///   per group of four, float 2.278 per wheel). Below the root, never above it: where Q_FCY2 > 0
+///   and the lateral term is strong, Fz62 can rise over Fz on a hump below Romega and fall below
+///   it again deeper in, and a start beyond the hump's far side ends on Rl = 0 (the second
+///   convergent, above the root, did that where the root did not; Mf62LoadedRadius.
+///   StartStaysOnTheRomegaSideOfALateralHump). What it costs: where the quadratic is Fz62 itself
+///   (γ = 0 and Fy = 0 exactly) the exact root converged in one evaluation, this start does so
+///   for 89 % of float wheels and 64 % of groups of four at 0.3–1.6·FNOMIN (else two, as every
+///   point with camber or a lateral force takes); over the envelope test's points float takes
+///   0.6–2.5 % more evaluations and lanes 0.2–0.4 % (loads of several FNOMIN, where the
+///   convergent is coarse). 0 where the denominator is 0; loaded_radius62 clamps a negative or
+///   non-finite start onto its bracket.
 /// - fixed point: Fz / E first, then the root: (E·Q_FZ1)² (~1e10) overflows Q31.32.
 template <typename T, typename P>
 [[gnu::always_inline]] inline T quadratic_deflection(const Fz62Curve<T, P>& c, const T& fz,
@@ -385,8 +389,8 @@ template <typename T, typename P>
     const T net = c.base - fcy * fcy;
     const T w = c.q_fz2 * fz;
     const T big_a = net * (c.stiffness_scale * c.q_fz1 * c.q_fz1);
-    const T num = fz * (big_a + w);
-    const T den = (net * (c.stiffness_scale * c.q_fz1)) * (big_a + T(2) * w);
+    const T num = (fz * c.q_fz1) * (big_a + T(2) * w);
+    const T den = big_a * (big_a + T(3) * w) + w * w;
     return div_or(num, den, T(0));
   }
   const T external = (c.base - fcy * fcy) * c.stiffness_scale;
@@ -420,7 +424,7 @@ struct LoadedRadius62 {
 ///   there, the branch has no root (loads beyond a fully squashed tyre, |γ| near 90° with the
 ///   limits off) and that end is the answer, as bisection gives.
 /// - Start: the MF 6.1-style deflection (the quadratic in ρ/R0 with the Rl-independent
-///   corrections; in float and on lanes its second convergent, quadratic_deflection) less the
+///   corrections; in float and on lanes its third convergent, quadratic_deflection) less the
 ///   camber's deflection at Romega. It leaves out Fcy's factor
 ///   (ρz/R0)^Q_FCY2 and is a few mm off (1 cm where that factor matters most). Where the start lies
 ///   below Romega on that branch and Q_FCY2 ≠ 0, the power at the start's deflection is computed
