@@ -454,8 +454,9 @@ struct LoadedRadius62 {
 /// test tyre, loads 0 … 10·FZMAX, |γ| to 1.5707, slips, speeds, pressures, limits on and off) that
 /// it converges in at most 11 steps (2–3 at most points; MF 5.2 and PAC2002, without the camber
 /// and lateral terms, in 1: the start is their root, in float and on lanes where Q_FZ2 = 0) to the
-/// least-deflection root, the one a tyre reaches when loaded from Romega. Should a lane still be unconverged after kNewtonSteps,
-/// bisection of its remaining bracket finishes it (lanes: a converged lane keeps its value).
+/// least-deflection root, the one a tyre reaches when loaded from Romega. Should a lane still be
+/// unconverged after kNewtonSteps, bisection of its remaining bracket finishes it (lanes: a
+/// converged lane keeps its value).
 /// Outside the envelope, where 1 + PFZ1·dpi < 0 (a tyre of negative stiffness: PFZ1 > 1 at a low
 /// pressure with the limits off), Fz62 below Romega is positive only on a hump near Romega
 /// (where Fcy² > 1 + speed − Fx²); where the hump reaches Fz, a step that leaves the bracket

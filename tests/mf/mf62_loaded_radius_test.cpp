@@ -443,7 +443,8 @@ double rl_least_deflection(const MfParameters<double>& p, const MfOutput<double>
 /// is answered. The start (the quadratic's root without Fcy's power, which is below 1 here) lies
 /// deeper than that root; float's and the lanes' convergent never deeper than the quadratic's
 /// root (a convergent above it answered 0 at the first point). At the second point double's exact
-/// start is already beyond the hump and double answers 0 (left as it is: see the README).
+/// start is already beyond the hump and double answers 0: not asserted here (an open defect, see
+/// the README), float and the lanes are.
 TEST(Mf62LoadedRadius, StartStaysOnTheRomegaSideOfALateralHump) {
   MfParameters<double> p = load("MagicFormula62_Parameters.tir");
   p.q_fcy *= 3.0;
@@ -472,8 +473,6 @@ TEST(Mf62LoadedRadius, StartStaysOnTheRomegaSideOfALateralHump) {
         detail::fz62_curve(p, pt.gamma, pt.omega, romega, pt.dpi, pt.fx, pt.fy), pt.fz);
     if (pt.double_finds_it) {
       EXPECT_NEAR(solved.rl_m, expected, 1e-9) << where;
-    } else {
-      EXPECT_EQ(solved.rl_m, 0.0) << where << " (if double finds the root now, update this test)";
     }
     const auto f = [](double x) { return static_cast<float>(x); };
     const auto solvedf = detail::loaded_radius62(
