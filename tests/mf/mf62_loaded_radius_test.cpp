@@ -35,6 +35,13 @@ MfParameters<double> load(const char* name) {
   return tyre::load_mf_parameters(testing::tyre_file(name)).params;
 }
 
+/// Romega at a wheel speed ω: R0·(Q_RE0 + Q_V1·(ω·R0/V0)²), as calculateRe has it.
+template <typename P>
+P romega_at(const MfParameters<P>& p, P omega) {
+  const P w = omega * p.unloaded_radius_m / p.longvl_mps;
+  return p.unloaded_radius_m * (p.q_re0 + p.q_v1 * w * w);
+}
+
 /// The MF-Tyre 6.2 vertical force at loaded radius `rl` (MFeval's calculateFz62 equations).
 double fz62_reference(const MfParameters<double>& p, double gamma, double omega, double dpi,
                       double fx, double fy, double rl) {
@@ -154,8 +161,7 @@ TEST(Mf62LoadedRadius, HalleyEstimateWaitsForTheCubicRegime) {
   const float fx = -941.736F;
   const float fy = -5043.65F;
   const float fz = 61.9948F;
-  const float w = omega * pf.unloaded_radius_m / pf.longvl_mps;
-  const float romega = pf.unloaded_radius_m * (pf.q_re0 + pf.q_v1 * w * w);
+  const float romega = romega_at(pf, omega);
   const auto solved =
       detail::loaded_radius62(detail::fz62_curve(p, double{gamma}, double{omega}, double{romega},
                                                  double{dpi}, double{fx}, double{fy}),
@@ -407,9 +413,7 @@ std::vector<EnvelopePoint> envelope(const MfParameters<double>& p) {
 /// root.
 double rl_least_deflection(const MfParameters<double>& p, const MfOutput<double>& out, double dpi,
                            double fz_target) {
-  const double r0 = p.unloaded_radius_m;
-  const double w = out.omega_radps * r0 / p.longvl_mps;
-  const double romega = r0 * (p.q_re0 + p.q_v1 * w * w);
+  const double romega = romega_at(p, out.omega_radps);
   const auto above = [&](double rl) {
     return fz62_reference(p, out.gamma_rad, out.omega_radps, dpi, out.fx_n, out.fy_n, rl) >
            fz_target;
@@ -467,8 +471,7 @@ TEST(Mf62LoadedRadius, StartStaysOnTheRomegaSideOfALateralHump) {
     const double expected = rl_least_deflection(p, out, pt.dpi, pt.fz);
     const std::string where = "gamma " + std::to_string(pt.gamma) + ", Fz " + std::to_string(pt.fz);
     ASSERT_GT(expected, 0.3) << where;
-    const double w = pt.omega * p.unloaded_radius_m / p.longvl_mps;
-    const double romega = p.unloaded_radius_m * (p.q_re0 + p.q_v1 * w * w);
+    const double romega = romega_at(p, pt.omega);
     const auto solved = detail::loaded_radius62(
         detail::fz62_curve(p, pt.gamma, pt.omega, romega, pt.dpi, pt.fx, pt.fy), pt.fz);
     if (pt.double_finds_it) {
@@ -567,9 +570,7 @@ TEST(Mf62LoadedRadius, NewtonConvergesWithinItsBudgetOverTheEnvelope) {
                                      ? fz_envelope
                                      : std::min(fz_envelope, p.fzmax_n);
         const double expected = rl_least_deflection(p, out, dpi, fz_target);
-        const double r0 = p.unloaded_radius_m;
-        const double w = out.omega_radps * r0 / p.longvl_mps;
-        const double romega = r0 * (p.q_re0 + p.q_v1 * w * w);
+        const double romega = romega_at(p, out.omega_radps);
         const auto curve =
             detail::fz62_curve(p, gamma, out.omega_radps, romega, dpi, out.fx_n, out.fy_n);
         const auto solved = detail::loaded_radius62(curve, fz_target);
@@ -591,8 +592,7 @@ TEST(Mf62LoadedRadius, NewtonConvergesWithinItsBudgetOverTheEnvelope) {
         // Float: its own Fz62 (Fx, Fy, ω in float).
         const MfOutput<float> outf = evaluate(pf, input_at<float>(p, e), o);
         const float dpif = (outf.p_pa - pf.nompres_pa) / pf.nompres_pa;
-        const float wf = outf.omega_radps * pf.unloaded_radius_m / pf.longvl_mps;
-        const float romegaf = pf.unloaded_radius_m * (pf.q_re0 + pf.q_v1 * wf * wf);
+        const float romegaf = romega_at(pf, outf.omega_radps);
         const auto curvef = detail::fz62_curve(pf, static_cast<float>(gamma), outf.omega_radps,
                                                romegaf, dpif, outf.fx_n, outf.fy_n);
         const auto solvedf = detail::loaded_radius62(curvef, static_cast<float>(fz_target));
@@ -695,7 +695,6 @@ BoundScan scan_bound(const MfParameters<double>& p, const std::vector<double>& p
   const std::array<double, 8> gammas = {-1.0, -0.5, -0.1, 0.0, 0.05, 0.1, 0.5, 1.0};
   const std::array<std::array<double, 2>, 5> slips = {
       {{0.0, 0.0}, {0.1, 0.2}, {-0.1, -0.2}, {0.0, 0.5}, {0.05, -0.5}}};
-  const double r0 = p.unloaded_radius_m;
   BoundScan scan;
   for (const double fz : loads) {
     for (const double gamma : gammas) {
@@ -715,8 +714,7 @@ BoundScan scan_bound(const MfParameters<double>& p, const std::vector<double>& p
           const bool fails = !(factor > 0.0);
           if (fails) {
             ++scan.factor_not_positive;
-            const double w = out.omega_radps * r0 / p.longvl_mps;
-            const double romega = r0 * (p.q_re0 + p.q_v1 * w * w);
+            const double romega = romega_at(p, out.omega_radps);
             beyond = fz62_reference(p, out.gamma_rad, out.omega_radps, dpi, out.fx_n, out.fy_n,
                                     romega) > fz;
             if (beyond) ++scan.beyond_romega;
@@ -757,10 +755,8 @@ TEST(Mf62LoadedRadius, LightestLoadsNeedNoFallback) {
     const MfParameters<double> p = load(name.c_str());
     const MfParameters<Fixed64> px = to_fixed_parameters(p);
     const MfParameters<float> pf = convert_parameters<float>(p);
-    const double r0 = p.unloaded_radius_m;
     const double omega = 50.0;
-    const double w = omega * r0 / p.longvl_mps;
-    const double romega = r0 * (p.q_re0 + p.q_v1 * w * w);
+    const double romega = romega_at(p, omega);
     for (const double fz : {1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 0.1, 1.0, 10.0}) {
       lanes::F4 gamma4;
       lanes::F4 fy4;
