@@ -49,10 +49,12 @@ void rolling_radius(const MfParameters<P>& p, Prepared<T>& in) {
   in.romega = romega;
 }
 
-/// Whether (1 + δ)^q near fz62_pow's memo is its [3/3] Padé approximant (float, double, Jets) or
-/// its binomial series to δ⁶ (lanes, fixed point); see fz62_pow.
+/// How fz62_pow takes (1 + δ)^q near its memo: the [3/3] Padé approximant (kPowPade: float,
+/// double, Jets), the [5/5] one (kPowPade55: lanes) or the binomial series to δ⁶ (fixed point).
 template <typename T>
 inline constexpr bool kPowPade = !is_lanes<T> && !is_fixed_point<T>;
+template <typename T>
+inline constexpr bool kPowPade55 = is_lanes<T>;
 
 /// MF 6.2's vertical force as a function of the loaded radius, Fz62(Rl) (calculateFz62), at a
 /// given γ, ω, Romega, Fx, Fy and pressure. What does not depend on Rl is computed once here
@@ -82,10 +84,14 @@ struct Fz62Curve {
   // known, (1 + δ)^q (see fz62_pow) by
   //   - float, double, Jets: its [3/3] Padé approximant N(δ)/D(δ), N/D − (1 + δ)^q ≈ e7·δ⁷
   //     with e7 = (q − 3)(q − 2)(q − 1)q(q + 1)(q + 2)(q + 3)/100800;
-  //   - lanes, fixed point: its binomial series to δ⁶ (no division), remainder C(q, 7)·δ⁷.
-  T pow_n1, pow_n2, pow_n3;  // N(δ) = 1 + n1·δ + n2·δ² + n3·δ³ (series: C(q, 1…3))
-  T pow_d1, pow_d2, pow_d3;  // D(δ) = 1 + d1·δ + d2·δ² + d3·δ³ (series: C(q, 4…6))
-  T pow_remainder;           // the bound's factor on |δ|⁷ (see fz62_pow)
+  //   - lanes: its [5/5] Padé approximant, N/D − (1 + δ)^q ≈ e11·δ¹¹ with
+  //     e11 = q(q² − 1)(q² − 4)(q² − 9)(q² − 16)(q² − 25)·(5!)²/(10!·11!);
+  //   - fixed point: its binomial series to δ⁶ (no division), remainder C(q, 7)·δ⁷.
+  T pow_n1, pow_n2, pow_n3;  // N(δ) = 1 + n1·δ + n2·δ² + n3·δ³ (+ n4·δ⁴ + n5·δ⁵; series: C(q, 1…3))
+  T pow_d1, pow_d2, pow_d3;  // D(δ) = 1 + d1·δ + d2·δ² + d3·δ³ (+ d4·δ⁴ + d5·δ⁵; series: C(q, 4…6))
+  T pow_n4, pow_n5, pow_d4, pow_d5;  // lanes only
+  T pow_remainder;  // the bound's factor on |δ|⁷ (lanes: on t¹¹; see fz62_pow)
+  T pow_floor;      // lanes: the least δ the approximant takes (see fz62_pow)
 };
 
 template <typename T, typename P>
@@ -131,7 +137,37 @@ Fz62Curve<T, P> fz62_curve(const MfParameters<P>& p, const T& gamma, const T& om
   c.fcy_per_force = T(P(p.q_fcy) / fz0);
   c.fy = fy;
   const P q = c.pow_q;
-  if constexpr (!kPowPade<T>) {
+  if constexpr (kPowPade55<T>) {
+    // N = ₂F₁(−5, −5 − q; −10; −δ), D = ₂F₁(−5, q − 5; −10; −δ): the term in δ^k is the one in
+    // δ^(k−1) times (6 − k)(6 ± q − k)/((11 − k)·k)·δ.
+    const P n1 = (P(5) + q) * P(0.5);
+    const P n2 = n1 * (P(4) + q) * P(4.0 / 18.0);
+    const P n3 = n2 * (P(3) + q) * P(3.0 / 24.0);
+    const P n4 = n3 * (P(2) + q) * P(2.0 / 28.0);
+    const P d1 = (P(5) - q) * P(0.5);
+    const P d2 = d1 * (P(4) - q) * P(4.0 / 18.0);
+    const P d3 = d2 * (P(3) - q) * P(3.0 / 24.0);
+    const P d4 = d3 * (P(2) - q) * P(2.0 / 28.0);
+    c.pow_n1 = n1;
+    c.pow_n2 = n2;
+    c.pow_n3 = n3;
+    c.pow_n4 = n4;
+    c.pow_n5 = n4 * (P(1) + q) * P(1.0 / 30.0);
+    c.pow_d1 = d1;
+    c.pow_d2 = d2;
+    c.pow_d3 = d3;
+    c.pow_d4 = d4;
+    c.pow_d5 = d4 * (P(1) - q) * P(1.0 / 30.0);
+    const P q2 = q * q;
+    // e11 = (5!)²/(10!·11!)·q(q² − 1)(q² − 4)(q² − 9)(q² − 16)(q² − 25).
+    const P e11 = (q2 - P(1)) * (q2 - P(4)) * (q2 - P(9)) * (q2 - P(16)) * (q2 - P(25)) * q *
+                  P(9.941312851e-11);
+    c.pow_remainder = T(P(8) * (e11 < P(0) ? -e11 : e11));
+    // Below δ = −0.5/(1 + (|q| − 1)/2) (−0.5 for |q| ≤ 1) N's or D's terms cancel enough for
+    // float's rounding to exceed (8 + |q|)·ε near whole |q| of 4 or 5, where e11 is about 0.
+    const P magnitude = q < P(0) ? -q : q;
+    c.pow_floor = T(P(-0.5) / (P(1) + P(0.5) * max_of(magnitude - P(1), P(0))));
+  } else if constexpr (!kPowPade<T>) {
     const P c2 = q * (q - P(1)) / P(2);
     const P c3 = c2 * (q - P(2)) / P(3);
     const P c4 = c3 * (q - P(3)) / P(4);
@@ -144,8 +180,8 @@ Fz62Curve<T, P> fz62_curve(const MfParameters<P>& p, const T& gamma, const T& om
     c.pow_d1 = c4;
     c.pow_d2 = c5;
     c.pow_d3 = c6;
-    // At least 1e-3, as when a fit's Jets took the series too: the lanes' and fixed point's
-    // results do not change.
+    // At least 1e-3, as when a fit's Jets took the series too: fixed point's results do not
+    // change.
     c.pow_remainder = T(max_of(c7 < P(0) ? -c7 : c7, P(1e-3)));
   } else {
     // N's and D's coefficients (the Padé approximant of (1 + δ)^q: ₂F₁(−3, −3 − q; −6; −δ) over
@@ -220,21 +256,29 @@ struct Fz62PowMemo {
   T value = T(0);
 };
 
-/// x^q from the memo's base b, (b·(1 + δ))^q = b^q·(1 + δ)^q, where pow_remainder·|δ|⁷ (there a
-/// bound on the approximation's relative error; Fz62Curve) is below half of ε, else pow, which
+/// x^q from the memo's base b, (b·(1 + δ))^q = b^q·(1 + δ)^q, where a bound on the
+/// approximation's relative error (Fz62Curve's pow_remainder) is below half of ε, else pow, which
 /// becomes the new base:
-///   - float, double, Jets: b^q·N(δ)/D(δ), the [3/3] Padé approximant, for |δ| < 0.3. It is
-///     far closer than the binomial series to δ⁶ (q = −0.95, δ = 0.3: 2e-9 against 1.9e-4), so
-///     that the step after a start a few mm off need not wait for pow: on the benchmark's points
-///     float's pows inside the loop went from 0.69 to 0.33 per solve, those left where the
-///     second evaluation's deflection is 1.3 to 2.3 times the start's (Fcy²'s power, which the
-///     start leaves out, matters most there);
-///   - lanes, fixed point: b^q·(1 + C(q,1)δ + … + C(q,6)δ⁶) for |δ| < ¼, without a division.
-///     Fixed point has no FPU to overlap a division with. On four lanes one lane far enough
-///     makes the group take pow: with the series 51 000 of 51 200 groups of the benchmark's
-///     points take one inside the loop, with the approximant most still would (from float's
-///     0.33 per solve, about 80 %), so it mainly added its division: MF 6.2 about 1 % slower
-///     (alternating runs of mf_bench: MF 6.2 / MF 6.1 1.30 → 1.32).
+///   - float, double, Jets: b^q·N(δ)/D(δ), the [3/3] Padé approximant, for |δ| < 0.3, where
+///     4·|e7|·|δ|⁷ is below half of ε. It is far closer than the binomial series to δ⁶ (q = −0.95,
+///     δ = 0.3: 2e-9 against 1.9e-4), so that the step after a start a few mm off need not wait
+///     for pow: on the benchmark's points float's pows inside the loop went from 0.69 to 0.33 per
+///     solve, those left where the second evaluation's deflection is 1.3 to 2.3 times the
+///     start's (Fcy²'s power, which the start leaves out, matters most there). The [5/5] one in
+///     float measured 10 ns slower per evaluation (the portable scalar build has no FMA).
+///   - lanes: the [5/5] Padé approximant where 8·|e11|·t¹¹ (t = δ/(1 + δ/2)) is below half of
+///     ε, tested without a division, for pow_floor < δ < 1.5: for the sample tyre's q = −0.95
+///     −0.5 < δ < 1.34. The t form held as a bound wherever it accepts over q ∈ [−20, 20] and
+///     δ ∈ (−0.9, 2] (a long double grid, step 0.01 in q and 0.001 in δ; the asymptotic e11·δ¹¹
+///     is no bound). On four lanes one lane beyond reach makes the group take pow, and the second
+///     evaluation's deflection lies up to twice the start's (the start leaves Fcy²'s power out):
+///     with the binomial series (reach |δ| < 0.095 there) 12 822 of 12 800 groups of four of the
+///     benchmark's points took a pow inside the loop, with the [5/5] approximant 133. The
+///     instructions per evaluate_four stay about the same (5 757 → 5 747 under callgrind), but pow
+///     was on the second evaluation's chain: evaluate_four on MF 6.2 measured 18 ns per group of
+///     four faster (p10 of 400 passes, 10 alternating runs: 806–825 → 788–805 ns).
+///   - fixed point: b^q·(1 + C(q,1)δ + … + C(q,6)δ⁶) for |δ| < ¼, without a division (no FPU
+///     to overlap one with).
 /// Its derivatives are not needed: fz62 takes them as the power times q·x'/x (exact for x^q, and
 /// for the approximation to its accuracy).
 template <typename T, typename P>
@@ -246,23 +290,40 @@ template <typename T, typename P>
   T approx = T(0);
   if (any_lane(near)) {
     const T delta = x * memo.inv_base - T(1);
-    const T d = abs(delta);
-    const T d3 = d * d * d;
-    const T reach = T(kPowPade<T> ? 0.3 : 0.25);
-    near = near && d < reach && c.pow_remainder * (d3 * d3 * d) < T(coarse ? 6e-8 : 1.1e-16);
     const T delta2 = delta * delta;
-    if constexpr (!kPowPade<T>) {
-      // Estrin's scheme: three independent pairs, then δ² and δ⁴ (a shorter chain than Horner's).
-      const T s12 = c.pow_n1 + delta * c.pow_n2;
-      const T s34 = c.pow_n3 + delta * c.pow_d1;
-      const T s56 = c.pow_d2 + delta * c.pow_d3;
-      approx = memo.value * (T(1) + delta * (s12 + delta2 * (s34 + delta2 * s56)));
-    } else {
-      // N and D side by side, each as two independent pairs; the value multiplies N while D is
-      // computed, so one division follows.
-      const T num = (T(1) + c.pow_n1 * delta) + delta2 * (c.pow_n2 + c.pow_n3 * delta);
-      const T den = (T(1) + c.pow_d1 * delta) + delta2 * (c.pow_d2 + c.pow_d3 * delta);
+    if constexpr (kPowPade55<T>) {
+      // pow_remainder·|δ|¹¹ ≤ (ε/2)·(1 + δ/2)¹¹, the bound in t without its division (off the
+      // chain: it only feeds the branch to pow). N and D by Estrin's scheme, side by side.
+      const T h = T(1) + T(0.5) * delta;
+      const T h2 = h * h;
+      const T h4 = h2 * h2;
+      const T d4 = delta2 * delta2;
+      near = near && delta > c.pow_floor && delta < T(1.5) &&
+             c.pow_remainder * (d4 * d4 * delta2 * abs(delta)) <= T(6e-8) * (h4 * h4 * h2 * h);
+      const T num = (T(1) + c.pow_n1 * delta) + delta2 * (c.pow_n2 + c.pow_n3 * delta) +
+                    d4 * (c.pow_n4 + c.pow_n5 * delta);
+      const T den = (T(1) + c.pow_d1 * delta) + delta2 * (c.pow_d2 + c.pow_d3 * delta) +
+                    d4 * (c.pow_d4 + c.pow_d5 * delta);
       approx = (memo.value * num) / den;
+    } else {
+      const T d = abs(delta);
+      const T d3 = d * d * d;
+      const T reach = T(kPowPade<T> ? 0.3 : 0.25);
+      near = near && d < reach && c.pow_remainder * (d3 * d3 * d) < T(coarse ? 6e-8 : 1.1e-16);
+      if constexpr (!kPowPade<T>) {
+        // Estrin's scheme: three independent pairs, then δ² and δ⁴ (a shorter chain than
+        // Horner's).
+        const T s12 = c.pow_n1 + delta * c.pow_n2;
+        const T s34 = c.pow_n3 + delta * c.pow_d1;
+        const T s56 = c.pow_d2 + delta * c.pow_d3;
+        approx = memo.value * (T(1) + delta * (s12 + delta2 * (s34 + delta2 * s56)));
+      } else {
+        // N and D side by side, each as two independent pairs; the value multiplies N while D is
+        // computed, so one division follows.
+        const T num = (T(1) + c.pow_n1 * delta) + delta2 * (c.pow_n2 + c.pow_n3 * delta);
+        const T den = (T(1) + c.pow_d1 * delta) + delta2 * (c.pow_d2 + c.pow_d3 * delta);
+        approx = (memo.value * num) / den;
+      }
     }
   }
   const auto far = !near;

@@ -174,48 +174,64 @@ TEST(Mf62LoadedRadius, HalleyEstimateWaitsForTheCubicRegime) {
   EXPECT_NEAR(static_cast<double>(solved4.rl_m[0]), solved.rl_m, 1e-7);
 }
 
-// (1 + δ)^q's [3/3] Padé approximant in long double, its coefficients from ₂F₁(−3, −3 − q; −6; −δ)
-// over ₂F₁(−3, q − 3; −6; −δ) (term by term, independently of fz62_curve's closed forms).
-long double pade33(long double q, long double delta) {
+// (1 + δ)^q's [n/n] Padé approximant in long double, its coefficients from ₂F₁(−n, −n − q; −2n; −δ)
+// over ₂F₁(−n, q − n; −2n; −δ) (term by term, independently of fz62_curve's closed forms).
+long double pade(int n, long double q, long double delta) {
   long double num = 1.0L;
   long double den = 1.0L;
   long double tn = 1.0L;
   long double td = 1.0L;
-  for (int k = 0; k < 3; ++k) {
+  const long double nn = n;
+  for (int k = 0; k < n; ++k) {
     const long double kk = k;
-    tn *= (-3.0L + kk) * (-3.0L - q + kk) / ((-6.0L + kk) * (kk + 1.0L)) * -delta;
-    td *= (-3.0L + kk) * (-3.0L + q + kk) / ((-6.0L + kk) * (kk + 1.0L)) * -delta;
+    tn *= (-nn + kk) * (-nn - q + kk) / ((-2.0L * nn + kk) * (kk + 1.0L)) * -delta;
+    td *= (-nn + kk) * (-nn + q + kk) / ((-2.0L * nn + kk) * (kk + 1.0L)) * -delta;
     num += tn;
     den += td;
   }
   return num / den;
 }
 
-// fz62_pow in float and double: near its memo (b, b^q) it takes (x/b)^q from the [3/3] Padé
-// approximant wherever the approximant's error bound is below half of the type's ε, else pow,
-// which becomes the new memo. Over q from −10 to 10 (whole values too; for whole q in [−3, 3] the
-// approximant is exact, and q near those, where its error term is tiny, tests the reach of
-// |δ| < 0.3) and steps δ = x/b − 1 up to ±0.8:
+template <typename T>
+double lane_value(const T& v, int k) {
+  if constexpr (detail::is_lanes<T>) {
+    return static_cast<double>(v[k]);
+  } else {
+    static_cast<void>(k);
+    return static_cast<double>(v);
+  }
+}
+
+// fz62_pow: near its memo (b, b^q) it takes (x/b)^q from a Padé approximant wherever the
+// approximant's error bound is below half of the type's ε, else pow, which becomes the new memo:
+// [3/3] in float and double (|δ| < 0.3), [5/5] on lanes (−0.5 < δ < 1.5). Over q from −10 to 10
+// (whole values too; for whole q in [−3, 3] ([−5, 5] on lanes) the approximant is exact, and q
+// near those, where its error term is tiny, tests the reach) and steps δ = x/b − 1 from −0.8 to
+// 1.6 (on lanes four different steps in the four lanes of a call):
 //   - where the approximant was taken, its truncation error alone (the approximant in long double
-//     at the δ the type computed, against (1 + δ)^q) is at most half of ε: 6e-8 in float,
-//     1.1e-16 in double;
+//     at the δ the type computed, against (1 + δ)^q) is at most half of ε: 6e-8 in float and on
+//     lanes, 1.1e-16 in double;
 //   - each result is within that plus the arithmetic's rounding of x^q (from long double): the
 //     rounding of δ = x·(1/b) − 1, amplified by |q|, and of b^q·N/D, within (8 + |q|) ε;
-//   - where pow was taken the result is pow's and the memo moved to x.
-// For MagicFormula62's q = −0.9502 the approximant (not pow) serves every |δ| < 0.3 in float; the
-// binomial series to δ⁶ it replaced served only |δ| < 0.095.
+//   - where pow was taken the result is pow's and the memo moved to x (only in that lane).
+// For MagicFormula62's q = −0.9502 the approximant (not pow) serves every |δ| < 0.3 in float and
+// −0.55 < δ < 1.3 on lanes; the binomial series to δ⁶ they replaced served only |δ| < 0.095.
 template <typename T, typename P>
 void check_pow_near_memo(const MfParameters<P>& base_params, double half_epsilon, double epsilon,
-                         double float_reach) {
+                         double reach_below, double reach_above) {
+  constexpr int kOrder = detail::kPowPade55<T> ? 5 : 3;
+  constexpr int kWidth = detail::is_lanes<T> ? 4 : 1;
   int approximated = 0;
   int computed = 0;
-  // MagicFormula62's first (−0.9502), then q near the whole values where e7 vanishes.
+  // MagicFormula62's first (−0.9502), then q near the whole values where the error term vanishes.
   std::vector<double> qs{2.0 * static_cast<double>(base_params.q_fcy2),
                          1e-4,
                          -1e-3,
                          1.0 + 1e-4,
                          -2.0 + 1e-3,
-                         3.0 - 1e-4};
+                         3.0 - 1e-4,
+                         -4.0 + 1e-4,
+                         5.0 - 1e-3};
   for (int qi = -40; qi <= 40; ++qi) {
     for (const double offset : {0.0, 0.0123, 0.31}) {
       if (qi * 0.25 + offset <= 10.0) qs.push_back(qi * 0.25 + offset);
@@ -231,37 +247,54 @@ void check_pow_near_memo(const MfParameters<P>& base_params, double half_epsilon
     const double tolerance = half_epsilon + (8.0 + std::fabs(q_t)) * epsilon;
     for (const double b : {1e-4, 0.02, 0.3}) {
       if (std::fabs(q * std::log10(b)) > 30.0) continue;  // b^q outside float's normal range
-      for (int di = -80; di <= 80; ++di) {
+      for (int di = -80; di <= 160; di += kWidth) {
         const T base = T(static_cast<P>(b));
-        const T x = T(static_cast<P>(b * (1.0 + di * 0.01)));
+        T x = base;
+        if constexpr (kWidth == 1) {
+          x = T(static_cast<P>(b * (1.0 + di * 0.01)));
+        } else {
+          x = T(lanes::FloatVec<4>{static_cast<P>(b * (1.0 + di * 0.01)),
+                                   static_cast<P>(b * (1.0 + (di + 1) * 0.01)),
+                                   static_cast<P>(b * (1.0 + (di + 2) * 0.01)),
+                                   static_cast<P>(b * (1.0 + (di + 3) * 0.01))});
+        }
         detail::Fz62PowMemo<T> memo;
         memo.base = base;
         memo.inv_base = T(1) / base;
-        memo.value = T(std::pow(base, T(static_cast<P>(q_t))));
+        memo.value = T(std::pow(static_cast<P>(b), static_cast<P>(q_t)));
         const T delta = x * memo.inv_base - T(1);  // as fz62_pow computes it
         const T got = detail::fz62_pow(c, x, memo);
-        const long double exact =
-            std::pow(static_cast<long double>(x), static_cast<long double>(q_t));
-        const long double rel = std::fabs(static_cast<long double>(got) / exact - 1.0L);
-        SCOPED_TRACE("q " + std::to_string(q_t) + " b " + std::to_string(b) + " δ " +
-                     std::to_string(di * 0.01));
-        const bool kept = !(memo.base < base) && !(memo.base > base);  // the memo did not move
-        if (kept) {
-          ++approximated;
-          const long double d = static_cast<long double>(delta);
-          const long double truncation =
-              std::fabs(pade33(static_cast<long double>(q_t), d) /
-                            std::pow(1.0L + d, static_cast<long double>(q_t)) -
-                        1.0L);
-          EXPECT_LE(static_cast<double>(truncation), half_epsilon);
-          EXPECT_LE(static_cast<double>(rel), tolerance);
-        } else {
-          ++computed;
-          EXPECT_EQ(memo.base, x);
-          EXPECT_EQ(got, T(std::pow(x, T(static_cast<P>(q_t)))));
-        }
-        if (qi == 0 && std::abs(di) * 0.01 <= float_reach + 1e-9) {
-          EXPECT_TRUE(kept) << "pow taken within the approximation's reach";
+        using std::pow;  // the type's own pow (on lanes found by argument-dependent lookup)
+        const T computed_pow = T(pow(x, T(static_cast<P>(q_t))));
+        for (int k = 0; k < kWidth; ++k) {
+          const auto xk = static_cast<P>(lane_value(x, k));
+          const long double exact =
+              std::pow(static_cast<long double>(xk), static_cast<long double>(q_t));
+          const long double rel =
+              std::fabs(static_cast<long double>(lane_value(got, k)) / exact - 1.0L);
+          const double step = (di + k) * 0.01;
+          SCOPED_TRACE("q " + std::to_string(q_t) + " b " + std::to_string(b) + " δ " +
+                       std::to_string(step));
+          const double moved_to = lane_value(memo.base, k);
+          const auto held = static_cast<double>(static_cast<P>(b));
+          const bool kept = !(moved_to < held) && !(moved_to > held);  // the memo did not move
+          if (kept) {
+            ++approximated;
+            const long double d = lane_value(delta, k);
+            const long double truncation =
+                std::fabs(pade(kOrder, static_cast<long double>(q_t), d) /
+                              std::pow(1.0L + d, static_cast<long double>(q_t)) -
+                          1.0L);
+            EXPECT_LE(static_cast<double>(truncation), half_epsilon);
+            EXPECT_LE(static_cast<double>(rel), tolerance);
+          } else {
+            ++computed;
+            EXPECT_EQ(moved_to, static_cast<double>(xk));
+            EXPECT_EQ(lane_value(got, k), lane_value(computed_pow, k));
+          }
+          if (qi == 0 && step >= reach_below - 1e-9 && step <= reach_above + 1e-9) {
+            EXPECT_TRUE(kept) << "pow taken within the approximation's reach";
+          }
         }
       }
     }
@@ -272,9 +305,10 @@ void check_pow_near_memo(const MfParameters<P>& base_params, double half_epsilon
 
 TEST(Mf62LoadedRadius, PowNearItsMemoWithinHalfAnEpsilon) {
   MfParameters<double> p = load("MagicFormula62_Parameters.tir");
-  check_pow_near_memo<double>(p, 1.1e-16, 2.2e-16, 0.0);
+  check_pow_near_memo<double>(p, 1.1e-16, 2.2e-16, 0.0, 0.0);
   const MfParameters<float> pf = convert_parameters<float>(p);
-  check_pow_near_memo<float>(pf, 6e-8, 1.2e-7, 0.29);
+  check_pow_near_memo<float>(pf, 6e-8, 1.2e-7, -0.29, 0.29);
+  check_pow_near_memo<lanes::F4>(pf, 6e-8, 1.2e-7, -0.49, 1.3);
 }
 
 /// The float and lanes start (detail::quadratic_deflection) against the root of its quadratic in
