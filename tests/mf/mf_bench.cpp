@@ -6,10 +6,13 @@
 // predicted. Target (issue 3): MF 6.1 combined Fx, Fy, Mz, Mx, My in float ≤ 100 ns per wheel.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "golden_path.hpp"
 #include "mf/mf_evaluate.hpp"
@@ -157,6 +160,100 @@ void BM_Mf61_FloatBatch16_Combined_Extras(benchmark::State& s) {
 void BM_Mf62_FloatBatch_Combined_Extras(benchmark::State& s) {
   bench_batch(s, batch_lanes(), "MagicFormula62_Parameters.tir", true);
 }
+/// MF 6.2 / MF 6.1 with all outputs in one path, measured in pairs (issue 17's ratio): each
+/// iteration times a block of MF 6.1 evaluations and the same block in MF 6.2 right after it (which
+/// of the two goes first alternates), so that the load of a shared machine, which changes over
+/// seconds (one benchmark's repetitions ranged 895–1426 ns here), falls on both alike. The counter
+/// `mf62_over_mf61` is the median of the pairs' ratios; the reported time is that of a pair.
+template <typename Block>
+void paired_ratio(benchmark::State& state, Block&& block) {
+  using Clock = std::chrono::steady_clock;
+  std::vector<double> ratios;
+  ratios.reserve(1U << 20U);
+  bool mf62_first = false;
+  for (auto _ : state) {
+    double seconds[2] = {0.0, 0.0};  // MF 6.1, MF 6.2
+    for (int k = 0; k < 2; ++k) {
+      const bool mf62 = (k == 0) == mf62_first;
+      const auto start = Clock::now();
+      block(mf62);
+      seconds[mf62 ? 1 : 0] = std::chrono::duration<double>(Clock::now() - start).count();
+    }
+    mf62_first = !mf62_first;
+    if (seconds[0] > 0.0) ratios.push_back(seconds[1] / seconds[0]);
+  }
+  if (!ratios.empty()) {
+    auto middle = ratios.begin() + static_cast<std::ptrdiff_t>(ratios.size() / 2);
+    std::nth_element(ratios.begin(), middle, ratios.end());
+    state.counters["mf62_over_mf61"] = *middle;
+  }
+}
+
+template <typename T>
+void ratio_scalar(benchmark::State& state) {
+  const MfParameters<T> p61 =
+      convert_parameters<T>(tyre::load_mf_parameters(testing::tyre_file(kMf61)).params);
+  const MfParameters<T> p62 =
+      convert_parameters<T>(tyre::load_mf_parameters(testing::tyre_file(kMf62)).params);
+  const MfOptions o = options_from_use_mode(111).value;
+  const auto inputs = make_inputs<T>();
+  std::size_t at = 0;  // both models evaluate the same 64 points of a pair
+  paired_ratio(state, [&](bool mf62) {
+    const MfParameters<T>& p = mf62 ? p62 : p61;
+    for (std::size_t i = 0; i < 64; ++i) {
+      MfOutput<T> out = evaluate(p, inputs[at + i], o);
+      benchmark::DoNotOptimize(out);
+    }
+    if (mf62) at = (at + 64) % kInputs;
+  });
+}
+
+void BM_Ratio_Double(benchmark::State& s) {
+  ratio_scalar<double>(s);
+}
+void BM_Ratio_Float(benchmark::State& s) {
+  ratio_scalar<float>(s);
+}
+void BM_Ratio_FloatFour(benchmark::State& s) {
+  const MfParameters<float> p61 =
+      convert_parameters<float>(tyre::load_mf_parameters(testing::tyre_file(kMf61)).params);
+  const MfParameters<float> p62 =
+      convert_parameters<float>(tyre::load_mf_parameters(testing::tyre_file(kMf62)).params);
+  const MfOptions o = options_from_use_mode(111).value;
+  const auto inputs = make_inputs<float>();
+  const std::array<MountedSide, 4> sides{MountedSide::left, MountedSide::right, MountedSide::left,
+                                         MountedSide::right};
+  MfOutput<lanes::F4> out{};
+  std::size_t at = 0;
+  paired_ratio(s, [&](bool mf62) {
+    const MfParameters<float>& p = mf62 ? p62 : p61;
+    for (std::size_t i = 0; i < 64; i += 4) {
+      const std::array<MfInput<float>, 4> four{inputs[at + i], inputs[at + i + 1],
+                                               inputs[at + i + 2], inputs[at + i + 3]};
+      evaluate_four(p, four, o, sides, out);
+      benchmark::DoNotOptimize(out);
+    }
+    if (mf62) at = (at + 64) % kInputs;
+  });
+}
+void BM_Ratio_FloatBatch(benchmark::State& s) {
+  const MfParameters<float> p61 =
+      convert_parameters<float>(tyre::load_mf_parameters(testing::tyre_file(kMf61)).params);
+  const MfParameters<float> p62 =
+      convert_parameters<float>(tyre::load_mf_parameters(testing::tyre_file(kMf62)).params);
+  const MfOptions o = options_from_use_mode(111).value;
+  const auto inputs = make_inputs<float>();
+  std::array<MfOutput<float>, kInputs> out{};
+  paired_ratio(s, [&](bool mf62) {
+    evaluate_batch_on(batch_lanes(), mf62 ? p62 : p61, inputs, o, out);
+    benchmark::DoNotOptimize(out);
+  });
+}
+BENCHMARK(BM_Ratio_Double);
+BENCHMARK(BM_Ratio_Float);
+BENCHMARK(BM_Ratio_FloatFour);
+BENCHMARK(BM_Ratio_FloatBatch);
+
 BENCHMARK(BM_Mf61_FloatBatch_Combined_Extras);
 BENCHMARK(BM_Mf61_FloatBatch8_Combined_Extras);
 BENCHMARK(BM_Mf61_FloatBatch16_Combined_Extras);
