@@ -89,9 +89,9 @@ struct Fz62Curve {
   //   - fixed point: its binomial series to δ⁶ (no division), remainder C(q, 7)·δ⁷.
   T pow_n1, pow_n2, pow_n3;  // N(δ) = 1 + n1·δ + n2·δ² + n3·δ³ (+ n4·δ⁴ + n5·δ⁵; series: C(q, 1…3))
   T pow_d1, pow_d2, pow_d3;  // D(δ) = 1 + d1·δ + d2·δ² + d3·δ³ (+ d4·δ⁴ + d5·δ⁵; series: C(q, 4…6))
-  T pow_n4, pow_n5, pow_d4, pow_d5;  // lanes only
-  T pow_remainder;  // the bound's factor on |δ|⁷ (lanes: on t¹¹; see fz62_pow)
-  T pow_floor;      // lanes: the least δ the approximant takes (see fz62_pow)
+  T pow_n4 = T(0), pow_n5 = T(0), pow_d4 = T(0), pow_d5 = T(0);  // lanes only
+  T pow_remainder;     // the bound's factor on |δ|⁷ (lanes: on t¹¹; see fz62_pow)
+  T pow_floor = T(0);  // lanes: the least δ the approximant takes (see fz62_pow)
 };
 
 template <typename T, typename P>
