@@ -204,7 +204,8 @@ double lane_value(const T& v, int k) {
 
 // fz62_pow: near its memo (b, b^q) it takes (x/b)^q from a Padé approximant wherever the
 // approximant's error bound is below half of the type's ε, else pow, which becomes the new memo:
-// [3/3] in float and double (|δ| < 0.3), [5/5] on lanes (−0.5 < δ < 1.5). Over q from −10 to 10
+// [3/3] in float and double (|δ| < 0.3), [5/5] on lanes (pow_floor < δ < 1.5; the floor is −0.5
+// where |q| ≤ 1 and nearer 0 beyond, where rounding grows). Over q from −10 to 10
 // (whole values too; for whole q in [−3, 3] ([−5, 5] on lanes) the approximant is exact, and q
 // near those, where its error term is tiny, tests the reach) and steps δ = x/b − 1 from −0.8 to
 // 1.6 (on lanes four different steps in the four lanes of a call):
@@ -215,7 +216,8 @@ double lane_value(const T& v, int k) {
 //     rounding of δ = x·(1/b) − 1, amplified by |q|, and of b^q·N/D, within (8 + |q|) ε;
 //   - where pow was taken the result is pow's and the memo moved to x (only in that lane).
 // For MagicFormula62's q = −0.9502 the approximant (not pow) serves every |δ| < 0.3 in float and
-// −0.55 < δ < 1.3 on lanes; the binomial series to δ⁶ they replaced served only |δ| < 0.095.
+// −0.49 ≤ δ ≤ 1.3 on lanes (the bound's reach there is −0.57 … 1.34); the binomial series to δ⁶
+// they replaced served only |δ| < 0.095.
 template <typename T, typename P>
 void check_pow_near_memo(const MfParameters<P>& base_params, double half_epsilon, double epsilon,
                          double reach_below, double reach_above) {
