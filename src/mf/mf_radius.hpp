@@ -471,7 +471,8 @@ struct LoadedRadius62 {
   T rl_m;
   T rho_m;
   int newton_steps;  // steps of the safeguarded Newton iteration (the most of any lane)
-  bool fallback;     // a lane needed the bisection fallback (never in the tested envelope)
+  bool fallback;     // a lane needed the bisection fallback (in the tested envelope only where a
+                     // lateral hump stays below Fz: the bracket closes on its peak)
 };
 
 /// Rl with Fz62(Rl) = Fz: a safeguarded Newton (in double and on lanes: Halley) iteration on the
@@ -500,6 +501,10 @@ struct LoadedRadius62 {
 ///   build (no FMA) the second derivative costs more than the evaluations it saves (measured: +6 ns
 ///   per solve alone, +8 ns per MF 6.2 evaluation); fixed point too (F'² of ~1e6 N/m overflows
 ///   Q31.32), and neither computes the second derivative.
+/// - Past a lateral hump (Q_FCY2 > 0: Fcy² grows with the deflection), a point below Fz may lie
+///   deeper than the root: one whose Fz62 rises with Rl while ρz falls, or is negative, bounds the
+///   search from below; where the bracket closes on the hump's peak without Fz62 reaching Fz, the
+///   answer is the branch's end, 0, as the scan from Romega gives (see `hump` below).
 /// - A step is taken where it lands inside the bracket and the slope is negative, else the
 ///   bracket's midpoint (or its far end, not yet evaluated). Converged when a step is at most
 ///   R0·ε^(3/4), ε of the output type (the error after it is of order the step² times
@@ -557,8 +562,22 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
   const T hi_end = if_else(beyond, c.romega + c.width, c.romega);
   T lo = lo_end;
   T hi = hi_end;
-  auto lo_known = beyond;   // Fz62(lo) > Fz is known
+  auto lo_known = beyond;   // the root, if any, lies above lo (Fz62(lo) > Fz, or past the hump)
   auto hi_known = !beyond;  // Fz62(hi) ≤ Fz is known
+  // Past a lateral hump: where Fcy² grows with the deflection (Q_FCY2 > 0) and the pressure factor
+  // is positive, Fz62 below Romega rises from Romega over a hump and falls again deeper in, below
+  // Fz (Fcy² outgrows 1 + speed − Fx²), below 0 where Fcy² exceeds it (and may rise again towards
+  // Rl = 0 there, the camber's share of ρz vanishing). A point below Fz whose Fz62 rises with Rl
+  // while its deflection falls with Rl, or whose Fz62 is negative, is past the hump's peak: the
+  // least-deflection root, if the hump reaches Fz, lies on the Romega side of it, and the point
+  // bounds the search from below as a point above Fz does. Where every such bound was a point past
+  // the peak (lo_crossed false) and the bracket has closed on the peak, the hump does not reach Fz:
+  // the branch has no root and its end, 0, is the answer, as for a load beyond a fully squashed
+  // tyre.
+  const bool hump_possible = c.pow_q > P(0);  // not on the benchmark's tyre (Q_FCY2 < 0)
+  const auto hump = (hump_possible ? T(1) : T(0)) > T(0) && !beyond && c.pressure > T(0);
+  auto lo_crossed = beyond;      // Fz62 > Fz seen at lo
+  auto collapsed = T(0) > T(0);  // no lane yet: lanes whose hump stays below Fz
   // Start: q_fz2·x² + q_fz1·x = Fz / ((1 + speed − Fx² − Fcy²)(1 + PFZ1·dpi)·Fz0), x = ρ/R0.
   const T x0 = quadratic_deflection(c, fz_target, c.fcy_per_force * c.fy);
   // The camber's deflection at Romega is carried already; the free-rolling part makes up the rest
@@ -603,10 +622,15 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
     const T resid = at.excess;
     const T slope = at.slope;
     const auto above = resid > T(0);
-    lo = if_else(active && above, rl, lo);
-    hi = if_else(active && !above, rl, hi);
-    lo_known = lo_known || (active && above);
-    hi_known = hi_known || (active && !above);
+    auto deep = above;
+    if (hump_possible) {
+      deep = above || (hump && (resid < -fz_target || (slope > T(0) && at.drho_z < T(0))));
+    }
+    lo = if_else(active && deep, rl, lo);
+    hi = if_else(active && !deep, rl, hi);
+    lo_known = lo_known || (active && deep);
+    hi_known = hi_known || (active && !deep);
+    lo_crossed = lo_crossed || (active && above);
     T step = T(0);
     auto falling = slope < T(0);
     auto settles = !(T(0) > T(0));  // this step is of the kind the settled estimate assumes
@@ -631,8 +655,11 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
     // remaining error is at most ε·R0 (this saves the confirming step): Newton's C·step² with
     // C ≈ step / previous² (quadratic convergence), |step|³ ≤ ε·R0·previous²; Halley's K·step³
     // with K ≈ step / previous³ (cubic), step⁴ ≤ ε·R0·previous³/20 (see above).
-    // At an end with Fz62 on the far side of Fz, the branch has no root: that end.
-    const auto no_root = (above && !(rl < hi_end)) || (!above && !(rl > lo_end));
+    // At an end with Fz62 on the far side of Fz, the branch has no root: that end. Nor where the
+    // bracket has closed on a hump's peak below Fz (lo past the peak, never above Fz): its end.
+    const auto no_root = (above && !(rl < hi_end)) || (!deep && !(rl > lo_end));
+    const auto peak_below =
+        lo_known && !lo_crossed && !beyond && !is_zero(resid) && !(hi - lo > tolerance);
     const T step_abs = abs(step);
     const T previous2 = previous_step * previous_step;
     const T remaining =
@@ -642,12 +669,13 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
     const auto settled =
         previous_settles && settles && inside && step_abs < previous_step && remaining <= allowed;
     const auto converged =
-        is_zero(resid) || no_root || (falling && (step_abs <= tolerance || settled));
+        is_zero(resid) || no_root || peak_below || (falling && (step_abs <= tolerance || settled));
     T next = if_else(inside, newton, T(0.5) * (lo + hi));
-    next = if_else(!inside && above && !hi_known, hi_end, next);
-    next = if_else(!inside && !above && !lo_known, lo_end, next);
+    next = if_else(!inside && deep && !hi_known, hi_end, next);
+    next = if_else(!inside && !deep && !lo_known, lo_end, next);
     const T landed = min_of(max_of(newton, lo), hi);
-    next = if_else(converged, if_else(no_root, rl, landed), next);
+    next = if_else(converged, if_else(no_root, rl, if_else(peak_below, lo_end, landed)), next);
+    collapsed = collapsed || (active && peak_below && !no_root);
     // The converged step as computed, not as Rl's rounding leaves it: ρz below takes it (a light
     // load's ρz, ~1e-7 m, is only a few of float's Rl steps, 6e-8 m at 0.5 m; a step below half
     // of one rounds back onto Rl, the bracket's end).
@@ -665,11 +693,21 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
     result.fallback = true;
     for (int i = 0; i < 80; ++i) {
       const T mid = T(0.5) * (lo + hi);
-      const auto above = fz62<false>(c, mid, fz_target, memo).excess > T(0);
-      lo = if_else(active && above, mid, lo);
-      hi = if_else(active && !above, mid, hi);
+      const Fz62Value<T> at = fz62<false>(c, mid, fz_target, memo);
+      const auto above = at.excess > T(0);
+      auto deep = above;
+      if (hump_possible) {
+        deep = above || (hump && (at.excess < -fz_target || (at.slope > T(0) && at.drho_z < T(0))));
+      }
+      lo = if_else(active && deep, mid, lo);
+      hi = if_else(active && !deep, mid, hi);
+      lo_crossed = lo_crossed || (active && above);
     }
     rl = if_else(active, T(0.5) * (lo + hi), rl);
+    // Closed on a hump's peak below Fz: the branch's end (see above).
+    const auto none = active && lo_known && !lo_crossed && !beyond;
+    collapsed = collapsed || none;
+    rl = if_else(none, lo_end, rl);
   }
   // ρz at the root from its Taylor polynomial about the last point evaluated (a step away at most,
   // where ρz is smooth: the camber part a quartic in Rl, the free-rolling part linear below
@@ -689,7 +727,7 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
   const auto at_romega = !(rl_at < c.romega) && !(rl_at > c.romega);
   const auto from_romega = at_romega && below && !(rho_at > T(0)) && !(c.camber_scale < T(0));
   const auto afresh =
-      active ||
+      active || collapsed ||
       (((below && !below_at) || (below_at && !below) || !(rho_at > T(0))) && !from_romega);
   if (any_lane(afresh)) {
     T unused = T(0);
