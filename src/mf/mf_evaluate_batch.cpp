@@ -76,6 +76,31 @@ __attribute__((target("arch=x86-64-v4"))) inline void store_rows16(const char* l
 #pragma GCC diagnostic pop
 #endif
 
+/// Eight rows of eight floats → their columns: out[j] = {in[0][j], …, in[7][j]}. Generic vectors
+/// (unpack pairs, then pairs of pairs, then 128-bit halves: 24 shuffles), which the AVX2 clone
+/// compiles to unpcklps/shufps/vperm2f128 and the SSE2 one to pairs of 4-lane shuffles, instead of
+/// 64 scalar moves through memory.
+[[gnu::always_inline]] inline void transpose8(const lanes::FloatVec<8> (&in)[8],
+                                              lanes::FloatVec<8> (&out)[8]) {
+  using W = lanes::FloatVec<8>;
+  W t[8];
+  for (std::size_t k = 0; k < 8; k += 2) {
+    t[k] = __builtin_shufflevector(in[k], in[k + 1], 0, 8, 1, 9, 4, 12, 5, 13);
+    t[k + 1] = __builtin_shufflevector(in[k], in[k + 1], 2, 10, 3, 11, 6, 14, 7, 15);
+  }
+  W u[8];
+  for (std::size_t k = 0; k < 8; k += 4) {
+    u[k] = __builtin_shufflevector(t[k], t[k + 2], 0, 1, 8, 9, 4, 5, 12, 13);
+    u[k + 1] = __builtin_shufflevector(t[k], t[k + 2], 2, 3, 10, 11, 6, 7, 14, 15);
+    u[k + 2] = __builtin_shufflevector(t[k + 1], t[k + 3], 0, 1, 8, 9, 4, 5, 12, 13);
+    u[k + 3] = __builtin_shufflevector(t[k + 1], t[k + 3], 2, 3, 10, 11, 6, 7, 14, 15);
+  }
+  for (std::size_t j = 0; j < 4; ++j) {
+    out[j] = __builtin_shufflevector(u[j], u[j + 4], 0, 1, 2, 3, 8, 9, 10, 11);
+    out[j + 4] = __builtin_shufflevector(u[j], u[j + 4], 4, 5, 6, 7, 12, 13, 14, 15);
+  }
+}
+
 /// N wheels: inputs packed field by field into lanes, evaluated, outputs unpacked.
 template <int N>
 [[gnu::always_inline]] inline void evaluate_block(const MfParameters<float>& params,
@@ -85,17 +110,32 @@ template <int N>
   using L = lanes::Lanes<N>;
   static_assert(std::is_standard_layout_v<MfOutput<L>> &&
                 offsetof(MfOutput<L>, status) == kOutputFields * sizeof(L));
-  // The inputs (and below 16 lanes the outputs) transposed through plain float arrays in memory:
-  // element access of a vector held in registers would be one insert or extract per float.
+  // In and out of lanes by transposes in registers at 8 and (out) 16 lanes; at 4 lanes (the batch
+  // where the CPU has no wider vectors) through plain float arrays in memory: element access of a
+  // vector held in registers would be one insert or extract per float.
   constexpr auto kWheels = static_cast<std::size_t>(N);
-  float rows_in[kWheels][kInputFields];
-  std::memcpy(rows_in, reinterpret_cast<const char*>(inputs), sizeof(rows_in));
-  float columns_in[kInputFields][kWheels];
-  for (std::size_t i = 0; i < kWheels; ++i) {
-    for (std::size_t f = 0; f < kInputFields; ++f) columns_in[f][i] = rows_in[i][f];
-  }
   std::array<lanes::FloatVec<N>, kInputFields> packed;
-  std::memcpy(packed.data(), columns_in, sizeof(packed));
+  if constexpr (N == 8) {
+    // Each wheel's 7 fields and the next wheel's first (the last wheel's 8th float is 0), as a
+    // row of eight; the transpose's first 7 columns are the fields.
+    lanes::FloatVec<8> rows[8];
+    lanes::FloatVec<8> columns[8];
+    for (std::size_t i = 0; i < kWheels; ++i) {
+      rows[i] = lanes::FloatVec<8>{};
+      std::memcpy(&rows[i], reinterpret_cast<const char*>(&inputs[i]),
+                  i + 1 < kWheels ? sizeof(rows[i]) : sizeof(MfInput<float>));
+    }
+    transpose8(rows, columns);
+    std::memcpy(packed.data(), columns, sizeof(packed));
+  } else {
+    float rows_in[kWheels][kInputFields];
+    std::memcpy(rows_in, reinterpret_cast<const char*>(inputs), sizeof(rows_in));
+    float columns_in[kInputFields][kWheels];
+    for (std::size_t i = 0; i < kWheels; ++i) {
+      for (std::size_t f = 0; f < kInputFields; ++f) columns_in[f][i] = rows_in[i][f];
+    }
+    std::memcpy(packed.data(), columns_in, sizeof(packed));
+  }
   MfInput<L> in;
   in.fz_n = L(packed[0]);
   in.kappa = L(packed[1]);
@@ -111,12 +151,32 @@ template <int N>
   MfOutput<L> out = evaluate(params, detail::mirror_input(in, flip), lane_options);
   detail::mirror_output(out, flip);
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-  if constexpr (N == 16) {
+  constexpr bool kRows16 = N == 16;
+#else
+  constexpr bool kRows16 = false;
+#endif
+  if constexpr (N == 8) {
+    // Eight fields at a time transposed into the eight wheels' rows (the last group's 5 fields
+    // stored alone: the status follows them).
+    lanes::FloatVec<8> fields[kOutputFields];
+    std::memcpy(fields, reinterpret_cast<const char*>(&out), sizeof(fields));
+    for (std::size_t first = 0; first < kOutputFields; first += 8) {
+      const std::size_t count = std::min<std::size_t>(8, kOutputFields - first);
+      lanes::FloatVec<8> group[8];
+      for (std::size_t f = 0; f < 8; ++f) group[f] = f < count ? fields[first + f] : fields[0];
+      lanes::FloatVec<8> rows[8];
+      transpose8(group, rows);
+      for (std::size_t i = 0; i < kWheels; ++i) {
+        std::memcpy(reinterpret_cast<char*>(&outputs[i]) + first * sizeof(float), &rows[i],
+                    count * sizeof(float));
+      }
+    }
+  } else if constexpr (kRows16) {
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
     // _mm512_loadu_ps reads through a may_alias type: straight from the lanes.
     store_rows16(reinterpret_cast<const char*>(&out), outputs);
-  } else
 #endif
-  {
+  } else {
     float columns_out[kOutputFields][kWheels];
     std::memcpy(columns_out, reinterpret_cast<const char*>(&out), sizeof(columns_out));
     for (std::size_t i = 0; i < kWheels; ++i) {
