@@ -576,8 +576,14 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
   // tyre.
   const bool hump_possible = c.pow_q > P(0);  // not on the benchmark's tyre (Q_FCY2 < 0)
   const auto hump = (hump_possible ? T(1) : T(0)) > T(0) && !beyond && c.pressure > T(0);
-  auto lo_crossed = beyond;      // Fz62 > Fz seen at lo
+  auto lo_crossed = beyond;      // Fz62 > Fz seen at lo (kept only where a hump is possible)
   auto collapsed = T(0) > T(0);  // no lane yet: lanes whose hump stays below Fz
+  // The side of the root an evaluated point bounds: the deep side (lo) where Fz62 > Fz, or past a
+  // hump's peak; else the Romega side (hi).
+  const auto deep_side = [&](const auto& above, const T& excess, const T& slope, const T& drho_z) {
+    if (!hump_possible) return above;
+    return above || (hump && (excess < -fz_target || (slope > T(0) && drho_z < T(0))));
+  };
   // Start: q_fz2·x² + q_fz1·x = Fz / ((1 + speed − Fx² − Fcy²)(1 + PFZ1·dpi)·Fz0), x = ρ/R0.
   const T x0 = quadratic_deflection(c, fz_target, c.fcy_per_force * c.fy);
   // The camber's deflection at Romega is carried already; the free-rolling part makes up the rest
@@ -622,15 +628,11 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
     const T resid = at.excess;
     const T slope = at.slope;
     const auto above = resid > T(0);
-    auto deep = above;
-    if (hump_possible) {
-      deep = above || (hump && (resid < -fz_target || (slope > T(0) && at.drho_z < T(0))));
-    }
+    const auto deep = deep_side(above, resid, slope, at.drho_z);
     lo = if_else(active && deep, rl, lo);
     hi = if_else(active && !deep, rl, hi);
     lo_known = lo_known || (active && deep);
     hi_known = hi_known || (active && !deep);
-    lo_crossed = lo_crossed || (active && above);
     T step = T(0);
     auto falling = slope < T(0);
     auto settles = !(T(0) > T(0));  // this step is of the kind the settled estimate assumes
@@ -658,8 +660,6 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
     // At an end with Fz62 on the far side of Fz, the branch has no root: that end. Nor where the
     // bracket has closed on a hump's peak below Fz (lo past the peak, never above Fz): its end.
     const auto no_root = (above && !(rl < hi_end)) || (!deep && !(rl > lo_end));
-    const auto peak_below =
-        lo_known && !lo_crossed && !beyond && !is_zero(resid) && !(hi - lo > tolerance);
     const T step_abs = abs(step);
     const T previous2 = previous_step * previous_step;
     const T remaining =
@@ -668,14 +668,21 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
     const auto inside = falling && newton > lo && newton < hi;
     const auto settled =
         previous_settles && settles && inside && step_abs < previous_step && remaining <= allowed;
-    const auto converged =
-        is_zero(resid) || no_root || peak_below || (falling && (step_abs <= tolerance || settled));
+    auto converged = is_zero(resid) || no_root || (falling && (step_abs <= tolerance || settled));
+    const T landed = min_of(max_of(newton, lo), hi);
+    T landed_or_end = landed;  // where a converged lane's Rl goes, unless it has no root
+    if (hump_possible) {
+      lo_crossed = lo_crossed || (active && above);
+      const auto peak_below =
+          lo_known && !lo_crossed && !beyond && !is_zero(resid) && !(hi - lo > tolerance);
+      converged = converged || peak_below;
+      landed_or_end = if_else(peak_below, lo_end, landed);
+      collapsed = collapsed || (active && peak_below && !no_root);
+    }
     T next = if_else(inside, newton, T(0.5) * (lo + hi));
     next = if_else(!inside && deep && !hi_known, hi_end, next);
     next = if_else(!inside && !deep && !lo_known, lo_end, next);
-    const T landed = min_of(max_of(newton, lo), hi);
-    next = if_else(converged, if_else(no_root, rl, if_else(peak_below, lo_end, landed)), next);
-    collapsed = collapsed || (active && peak_below && !no_root);
+    next = if_else(converged, if_else(no_root, rl, landed_or_end), next);
     // The converged step as computed, not as Rl's rounding leaves it: ρz below takes it (a light
     // load's ρz, ~1e-7 m, is only a few of float's Rl steps, 6e-8 m at 0.5 m; a step below half
     // of one rounds back onto Rl, the bracket's end).
@@ -695,19 +702,18 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
       const T mid = T(0.5) * (lo + hi);
       const Fz62Value<T> at = fz62<false>(c, mid, fz_target, memo);
       const auto above = at.excess > T(0);
-      auto deep = above;
-      if (hump_possible) {
-        deep = above || (hump && (at.excess < -fz_target || (at.slope > T(0) && at.drho_z < T(0))));
-      }
+      const auto deep = deep_side(above, at.excess, at.slope, at.drho_z);
       lo = if_else(active && deep, mid, lo);
       hi = if_else(active && !deep, mid, hi);
-      lo_crossed = lo_crossed || (active && above);
+      if (hump_possible) lo_crossed = lo_crossed || (active && above);
     }
     rl = if_else(active, T(0.5) * (lo + hi), rl);
-    // Closed on a hump's peak below Fz: the branch's end (see above).
-    const auto none = active && lo_known && !lo_crossed && !beyond;
-    collapsed = collapsed || none;
-    rl = if_else(none, lo_end, rl);
+    if (hump_possible) {
+      // Closed on a hump's peak below Fz: the branch's end (see above).
+      const auto none = active && lo_known && !lo_crossed && !beyond;
+      collapsed = collapsed || none;
+      rl = if_else(none, lo_end, rl);
+    }
   }
   // ρz at the root from its Taylor polynomial about the last point evaluated (a step away at most,
   // where ρz is smooth: the camber part a quartic in Rl, the free-rolling part linear below
