@@ -1,0 +1,137 @@
+// mf::evaluate_batch with the core alone (no .tir reader): the test that runs on every target,
+// cross builds included (aarch64 and armhf under qemu-user, where the batch is 4 lanes wide and
+// packs and unpacks its blocks by 4 × 4 transposes). tests/mf/mf_evaluate_batch_test.cpp checks
+// every shipped tyre file on the host.
+//   - Every wheel's outputs are evaluate_four's for it on the same CPU, bit for bit, with the same
+//     status: the default (MF 6.1) tyre evaluated as MF 6.1, MF 6.2 and MF 5.2, all eight useModes,
+//     extras on/off/loaded radius only, the three mounted sides, physical and wild inputs.
+//   - Batches of every length from 0 to 3 blocks and every start give each wheel the outputs it
+//     has alone.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstddef>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <span>
+#include <vector>
+
+#include "mf/mf_evaluate_batch.hpp"
+#include "mf/mf_evaluate_four.hpp"
+#include "mf/mf_options.hpp"
+#include "mf/mf_parameters.hpp"
+#include "wild_value.hpp"
+
+namespace tread::mf {
+namespace {
+
+constexpr std::array<int, 8> kUseModes = {111, 112, 121, 122, 211, 212, 221, 222};
+
+std::vector<MfInput<float>> inputs(std::mt19937_64& rng, std::size_t n) {
+  std::uniform_real_distribution<double> fz(-500.0, 12000.0), kappa(-1.0, 1.0), alpha(-0.6, 0.6),
+      gamma(-0.2, 0.2), vx(-5.0, 60.0), phit(-2.0, 2.0), p(0.0, 4e5);
+  std::vector<MfInput<float>> in(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    MfInput<float>& x = in[i];
+    if (i % 5 == 4) {
+      x.fz_n = testing::wild<float>(rng, 5000.0);
+      x.kappa = testing::wild<float>(rng, 0.2);
+      x.alpha_rad = testing::wild<float>(rng, 0.2);
+      x.gamma_rad = testing::wild<float>(rng, 0.05);
+      x.vx_mps = testing::wild<float>(rng, 20.0);
+      x.phit_1pm = testing::wild<float>(rng, 0.5);
+      x.p_pa = testing::wild<float>(rng, 2e5);
+    } else {
+      x.fz_n = static_cast<float>(fz(rng));
+      x.kappa = static_cast<float>(kappa(rng));
+      x.alpha_rad = static_cast<float>(alpha(rng));
+      x.gamma_rad = static_cast<float>(gamma(rng));
+      x.vx_mps = static_cast<float>(i % 7 == 3 ? 0.0 : vx(rng));
+      x.phit_1pm = static_cast<float>(i % 3 == 0 ? phit(rng) : 0.0);
+      x.p_pa = static_cast<float>(p(rng));
+    }
+  }
+  if (n > 1) in[1].kappa = std::numeric_limits<float>::quiet_NaN();
+  return in;
+}
+
+/// Every float field's bits and the status.
+bool same_bits(const MfOutput<float>& a, const MfOutput<float>& b) {
+  constexpr std::size_t kFloats = offsetof(MfOutput<float>, status);
+  return std::memcmp(&a, &b, kFloats) == 0 && a.status == b.status;
+}
+
+std::vector<MfParameters<float>> tyres() {
+  std::vector<MfParameters<float>> t;
+  for (const FitType fit : {FitType::mf61, FitType::mf62, FitType::mf52}) {
+    MfParameters<float> p;
+    p.fit_type = fit;
+    t.push_back(p);
+  }
+  return t;
+}
+
+TEST(MfBatchCore, EqualsEvaluateFourBitForBit) {
+  const int lanes = batch_lanes();
+  std::mt19937_64 rng(31);
+  const auto n = static_cast<std::size_t>(3 * lanes + 5);
+  std::size_t compared = 0;
+  for (const MfParameters<float>& p : tyres()) {
+    for (const int mode : kUseModes) {
+      for (int extras = 0; extras < 3; ++extras) {
+        MfOptions o = options_from_use_mode(mode).value;
+        o.extras = extras > 0;
+        o.extras_loaded_radius_only = extras == 2;
+        for (const MountedSide side :
+             {MountedSide::as_measured, MountedSide::left, MountedSide::right}) {
+          o.side = side;
+          const std::vector<MfInput<float>> in = inputs(rng, n);
+          std::vector<MfOutput<float>> got(n);
+          evaluate_batch(p, in, o, got);
+          const std::array<MountedSide, 4> sides = {side, side, side, side};
+          for (std::size_t g = 0; g < n; g += 4) {
+            std::array<MfInput<float>, 4> four;
+            for (std::size_t k = 0; k < 4; ++k) four[k] = in[g + k < n ? g + k : g];
+            std::array<MfOutput<float>, 4> expected;
+            evaluate_four(p, four, o, sides, expected);
+            for (std::size_t k = 0; k < 4 && g + k < n; ++k) {
+              ASSERT_TRUE(same_bits(got[g + k], expected[k]))
+                  << "fit " << static_cast<int>(p.fit_type) << " mode " << mode << " extras "
+                  << extras << " side " << static_cast<int>(side) << " wheel " << g + k;
+              ++compared;
+            }
+          }
+        }
+      }
+    }
+  }
+  EXPECT_EQ(compared, tyres().size() * kUseModes.size() * 3 * 3 * n);
+}
+
+TEST(MfBatchCore, EveryLengthAndStartGivesTheWheelsOwnOutputs) {
+  const int lanes = batch_lanes();
+  const MfParameters<float> p;
+  const MfOptions o = options_from_use_mode(111).value;
+  std::mt19937_64 rng(5);
+  const auto most = static_cast<std::size_t>(3 * lanes);
+  const std::vector<MfInput<float>> all = inputs(rng, most);
+  std::vector<MfOutput<float>> alone(most);
+  for (std::size_t i = 0; i < most; ++i) {
+    evaluate_batch(p, std::span<const MfInput<float>>(all).subspan(i, 1), o,
+                   std::span<MfOutput<float>>(alone).subspan(i, 1));
+  }
+  for (std::size_t length = 0; length <= most; ++length) {
+    for (std::size_t start = 0; start + length <= most; ++start) {
+      std::vector<MfOutput<float>> got(length);
+      evaluate_batch(p, std::span<const MfInput<float>>(all).subspan(start, length), o, got);
+      for (std::size_t i = 0; i < length; ++i) {
+        ASSERT_TRUE(same_bits(got[i], alone[start + i]))
+            << "lanes " << lanes << " length " << length << " start " << start << " wheel " << i;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace tread::mf
