@@ -10,6 +10,7 @@
 #include <cstring>
 #include <type_traits>
 
+#include "mf/mf_lane_transpose.hpp"
 #include "mf/mf_lanes.hpp"
 
 namespace tread::mf {
@@ -18,7 +19,6 @@ namespace {
 
 using lanes::F4;
 using lanes::V;
-using lanes::VI;
 
 // MfInput and MfOutput are runs of floats (MfOutput: then its status): packing and unpacking
 // transpose four of them at a time.
@@ -36,27 +36,6 @@ static_assert(std::is_standard_layout_v<MfOutput<float>> &&
               std::is_standard_layout_v<MfOutput<F4>>);
 static_assert(offsetof(MfOutput<F4>, status) == kOutputFields * sizeof(F4));
 static_assert(offsetof(MfOutput<float>, kxk_n) == (kOutputFields - 1) * sizeof(float));
-
-/// Lanes of two vectors by constant indices (0–3 from `a`, 4–7 from `b`): GCC's
-/// __builtin_shuffle, clang's __builtin_shufflevector (the fuzz preset builds with clang).
-#if defined(__clang__)
-#define TREAD_SHUFFLE(a, b, i0, i1, i2, i3) __builtin_shufflevector(a, b, i0, i1, i2, i3)
-#else
-#define TREAD_SHUFFLE(a, b, i0, i1, i2, i3) __builtin_shuffle(a, b, VI{i0, i1, i2, i3})
-#endif
-
-/// Rows a, b, c, d → columns: r[i] = {a[i], b[i], c[i], d[i]}.
-void transpose(const V (&in)[4], V (&out)[4]) {
-  const V t0 = TREAD_SHUFFLE(in[0], in[1], 0, 4, 1, 5);
-  const V t1 = TREAD_SHUFFLE(in[0], in[1], 2, 6, 3, 7);
-  const V t2 = TREAD_SHUFFLE(in[2], in[3], 0, 4, 1, 5);
-  const V t3 = TREAD_SHUFFLE(in[2], in[3], 2, 6, 3, 7);
-  out[0] = TREAD_SHUFFLE(t0, t2, 0, 1, 4, 5);
-  out[1] = TREAD_SHUFFLE(t0, t2, 2, 3, 6, 7);
-  out[2] = TREAD_SHUFFLE(t1, t3, 0, 1, 4, 5);
-  out[3] = TREAD_SHUFFLE(t1, t3, 2, 3, 6, 7);
-}
-#undef TREAD_SHUFFLE
 
 /// Four consecutive floats of each wheel's struct, from float `field` on.
 template <typename S>
@@ -93,12 +72,12 @@ TREAD_LANES_FUNCTION void evaluate_four(const MfParameters<float>& params,
   V columns[4];
   MfInput<F4> in;
   load_rows(inputs, 0, rows);
-  transpose(rows, columns);
+  lanes::transpose<4>(rows, columns);
   in.fz_n = F4(columns[0]);
   in.kappa = F4(columns[1]);
   in.alpha_rad = F4(columns[2]);
   load_rows(inputs, 3, rows);
-  transpose(rows, columns);
+  lanes::transpose<4>(rows, columns);
   in.gamma_rad = F4(columns[0]);
   in.vx_mps = F4(columns[1]);
   in.phit_1pm = F4(columns[2]);
@@ -122,7 +101,7 @@ void evaluate_four(const MfParameters<float>& params, const std::array<MfInput<f
   std::size_t f = 0;
   for (; f + 4 <= kOutputFields; f += 4) {
     const V group[4] = {fields[f], fields[f + 1], fields[f + 2], fields[f + 3]};
-    transpose(group, columns);
+    lanes::transpose<4>(group, columns);
     for (std::size_t i = 0; i < 4; ++i) {
       std::memcpy(reinterpret_cast<char*>(&outputs[i]) + f * sizeof(float), &columns[i], sizeof(V));
     }

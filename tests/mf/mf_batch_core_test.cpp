@@ -17,50 +17,16 @@
 #include <span>
 #include <vector>
 
+#include "batch_inputs.hpp"
 #include "mf/mf_evaluate_batch.hpp"
 #include "mf/mf_evaluate_four.hpp"
 #include "mf/mf_options.hpp"
 #include "mf/mf_parameters.hpp"
-#include "wild_value.hpp"
 
 namespace tread::mf {
 namespace {
 
 constexpr std::array<int, 8> kUseModes = {111, 112, 121, 122, 211, 212, 221, 222};
-
-std::vector<MfInput<float>> inputs(std::mt19937_64& rng, std::size_t n) {
-  std::uniform_real_distribution<double> fz(-500.0, 12000.0), kappa(-1.0, 1.0), alpha(-0.6, 0.6),
-      gamma(-0.2, 0.2), vx(-5.0, 60.0), phit(-2.0, 2.0), p(0.0, 4e5);
-  std::vector<MfInput<float>> in(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    MfInput<float>& x = in[i];
-    if (i % 5 == 4) {
-      x.fz_n = testing::wild<float>(rng, 5000.0);
-      x.kappa = testing::wild<float>(rng, 0.2);
-      x.alpha_rad = testing::wild<float>(rng, 0.2);
-      x.gamma_rad = testing::wild<float>(rng, 0.05);
-      x.vx_mps = testing::wild<float>(rng, 20.0);
-      x.phit_1pm = testing::wild<float>(rng, 0.5);
-      x.p_pa = testing::wild<float>(rng, 2e5);
-    } else {
-      x.fz_n = static_cast<float>(fz(rng));
-      x.kappa = static_cast<float>(kappa(rng));
-      x.alpha_rad = static_cast<float>(alpha(rng));
-      x.gamma_rad = static_cast<float>(gamma(rng));
-      x.vx_mps = static_cast<float>(i % 7 == 3 ? 0.0 : vx(rng));
-      x.phit_1pm = static_cast<float>(i % 3 == 0 ? phit(rng) : 0.0);
-      x.p_pa = static_cast<float>(p(rng));
-    }
-  }
-  if (n > 1) in[1].kappa = std::numeric_limits<float>::quiet_NaN();
-  return in;
-}
-
-/// Every float field's bits and the status.
-bool same_bits(const MfOutput<float>& a, const MfOutput<float>& b) {
-  constexpr std::size_t kFloats = offsetof(MfOutput<float>, status);
-  return std::memcmp(&a, &b, kFloats) == 0 && a.status == b.status;
-}
 
 std::vector<MfParameters<float>> tyres() {
   std::vector<MfParameters<float>> t;
@@ -86,7 +52,7 @@ TEST(MfBatchCore, EqualsEvaluateFourBitForBit) {
         for (const MountedSide side :
              {MountedSide::as_measured, MountedSide::left, MountedSide::right}) {
           o.side = side;
-          const std::vector<MfInput<float>> in = inputs(rng, n);
+          const std::vector<MfInput<float>> in = testing::batch_inputs(rng, n);
           std::vector<MfOutput<float>> got(n);
           evaluate_batch(p, in, o, got);
           const std::array<MountedSide, 4> sides = {side, side, side, side};
@@ -96,7 +62,7 @@ TEST(MfBatchCore, EqualsEvaluateFourBitForBit) {
             std::array<MfOutput<float>, 4> expected;
             evaluate_four(p, four, o, sides, expected);
             for (std::size_t k = 0; k < 4 && g + k < n; ++k) {
-              ASSERT_TRUE(same_bits(got[g + k], expected[k]))
+              ASSERT_TRUE(testing::same_bits(got[g + k], expected[k]))
                   << "fit " << static_cast<int>(p.fit_type) << " mode " << mode << " extras "
                   << extras << " side " << static_cast<int>(side) << " wheel " << g + k;
               ++compared;
@@ -115,7 +81,7 @@ TEST(MfBatchCore, EveryLengthAndStartGivesTheWheelsOwnOutputs) {
   const MfOptions o = options_from_use_mode(111).value;
   std::mt19937_64 rng(5);
   const auto most = static_cast<std::size_t>(3 * lanes);
-  const std::vector<MfInput<float>> all = inputs(rng, most);
+  const std::vector<MfInput<float>> all = testing::batch_inputs(rng, most);
   std::vector<MfOutput<float>> alone(most);
   for (std::size_t i = 0; i < most; ++i) {
     evaluate_batch(p, std::span<const MfInput<float>>(all).subspan(i, 1), o,
@@ -126,7 +92,7 @@ TEST(MfBatchCore, EveryLengthAndStartGivesTheWheelsOwnOutputs) {
       std::vector<MfOutput<float>> got(length);
       evaluate_batch(p, std::span<const MfInput<float>>(all).subspan(start, length), o, got);
       for (std::size_t i = 0; i < length; ++i) {
-        ASSERT_TRUE(same_bits(got[i], alone[start + i]))
+        ASSERT_TRUE(testing::same_bits(got[i], alone[start + i]))
             << "lanes " << lanes << " length " << length << " start " << start << " wheel " << i;
       }
     }

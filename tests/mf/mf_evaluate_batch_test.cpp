@@ -23,12 +23,12 @@
 #include <string>
 #include <vector>
 
+#include "batch_inputs.hpp"
 #include "golden_path.hpp"
 #include "mf/mf_evaluate.hpp"
 #include "mf/mf_evaluate_batch.hpp"
 #include "mf/mf_evaluate_four.hpp"
 #include "tyre/mf_parameters_from_tir.hpp"
-#include "wild_value.hpp"
 
 namespace tread::mf {
 namespace {
@@ -48,34 +48,6 @@ std::vector<MfParameters<float>> all_mf_tyres() {
   return tyres;
 }
 
-std::vector<MfInput<float>> inputs(std::mt19937_64& rng, std::size_t n) {
-  std::uniform_real_distribution<double> fz(-500.0, 12000.0), kappa(-1.0, 1.0), alpha(-0.6, 0.6),
-      gamma(-0.2, 0.2), vx(-5.0, 60.0), phit(-2.0, 2.0), p(0.0, 4e5);
-  std::vector<MfInput<float>> in(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    MfInput<float>& x = in[i];
-    if (i % 5 == 4) {  // wild
-      x.fz_n = testing::wild<float>(rng, 5000.0);
-      x.kappa = testing::wild<float>(rng, 0.2);
-      x.alpha_rad = testing::wild<float>(rng, 0.2);
-      x.gamma_rad = testing::wild<float>(rng, 0.05);
-      x.vx_mps = testing::wild<float>(rng, 20.0);
-      x.phit_1pm = testing::wild<float>(rng, 0.5);
-      x.p_pa = testing::wild<float>(rng, 2e5);
-    } else {
-      x.fz_n = static_cast<float>(fz(rng));
-      x.kappa = static_cast<float>(kappa(rng));
-      x.alpha_rad = static_cast<float>(alpha(rng));
-      x.gamma_rad = static_cast<float>(gamma(rng));
-      x.vx_mps = static_cast<float>(i % 7 == 3 ? 0.0 : vx(rng));
-      x.phit_1pm = static_cast<float>(i % 3 == 0 ? phit(rng) : 0.0);
-      x.p_pa = static_cast<float>(p(rng));
-    }
-  }
-  in[1].kappa = std::numeric_limits<float>::quiet_NaN();
-  return in;
-}
-
 /// evaluate_four on groups of four (the last padded with its first input), every wheel on `side`.
 std::vector<MfOutput<float>> in_fours(const MfParameters<float>& p,
                                       const std::vector<MfInput<float>>& in,
@@ -90,12 +62,6 @@ std::vector<MfOutput<float>> in_fours(const MfParameters<float>& p,
     for (std::size_t k = 0; k < 4 && g + k < in.size(); ++k) out[g + k] = result[k];
   }
   return out;
-}
-
-/// The outputs' bits (every float field) and status.
-bool same_bits(const MfOutput<float>& a, const MfOutput<float>& b) {
-  constexpr std::size_t kFloats = offsetof(MfOutput<float>, status);
-  return std::memcmp(&a, &b, kFloats) == 0 && a.status == b.status;
 }
 
 constexpr std::size_t kFields = offsetof(MfOutput<float>, status) / sizeof(float);
@@ -129,7 +95,7 @@ TEST(MfEvaluateBatch, EqualsEvaluateFour) {
           for (const MountedSide side :
                {MountedSide::as_measured, MountedSide::left, MountedSide::right}) {
             o.side = side;
-            const std::vector<MfInput<float>> in = inputs(rng, n);
+            const std::vector<MfInput<float>> in = testing::batch_inputs(rng, n);
             const std::vector<MfOutput<float>> expected = in_fours(p, in, o, side);
             std::vector<MfOutput<float>> got(n);
             evaluate_batch_on(lanes, p, in, o, got);
@@ -163,7 +129,7 @@ TEST(MfEvaluateBatch, EveryLengthAndPlaceInABlock) {
       const MfOptions o = options_from_use_mode(111).value;
       std::mt19937_64 rng(5);
       const auto most = static_cast<std::size_t>(3 * lanes);
-      const std::vector<MfInput<float>> all = inputs(rng, most);
+      const std::vector<MfInput<float>> all = testing::batch_inputs(rng, most);
       // Each wheel alone (its block padded with copies of it).
       std::vector<MfOutput<float>> alone(most);
       for (std::size_t i = 0; i < most; ++i) {
@@ -176,7 +142,7 @@ TEST(MfEvaluateBatch, EveryLengthAndPlaceInABlock) {
           evaluate_batch_on(lanes, p, std::span<const MfInput<float>>(all).subspan(start, length),
                             o, got);
           for (std::size_t i = 0; i < length; ++i) {
-            ASSERT_TRUE(same_bits(got[i], alone[start + i]))
+            ASSERT_TRUE(testing::same_bits(got[i], alone[start + i]))
                 << tyre << " lanes " << lanes << " length " << length << " start " << start
                 << " wheel " << i;
           }
@@ -188,13 +154,13 @@ TEST(MfEvaluateBatch, EveryLengthAndPlaceInABlock) {
   const MfParameters<float> p = convert_parameters<float>(
       tyre::load_mf_parameters(testing::tyre_file("MagicFormula61_Parameters.tir")).params);
   std::mt19937_64 rng(9);
-  const std::vector<MfInput<float>> in = inputs(rng, 37);
+  const std::vector<MfInput<float>> in = testing::batch_inputs(rng, 37);
   const MfOptions o = options_from_use_mode(111).value;
   std::vector<MfOutput<float>> a(in.size());
   std::vector<MfOutput<float>> b(in.size());
   evaluate_batch(p, in, o, a);
   evaluate_batch_on(batch_lanes(), p, in, o, b);
-  for (std::size_t i = 0; i < in.size(); ++i) ASSERT_TRUE(same_bits(a[i], b[i])) << i;
+  for (std::size_t i = 0; i < in.size(); ++i) ASSERT_TRUE(testing::same_bits(a[i], b[i])) << i;
 }
 
 TEST(MfEvaluateBatch, SixteenLanesEqualEightBitForBit) {
@@ -204,13 +170,13 @@ TEST(MfEvaluateBatch, SixteenLanesEqualEightBitForBit) {
   for (const MfParameters<float>& p : all_mf_tyres()) {
     for (const int mode : kUseModes) {
       const MfOptions o = options_from_use_mode(mode).value;
-      const std::vector<MfInput<float>> in = inputs(rng, 53);
+      const std::vector<MfInput<float>> in = testing::batch_inputs(rng, 53);
       std::vector<MfOutput<float>> eight(in.size());
       std::vector<MfOutput<float>> sixteen(in.size());
       evaluate_batch_on(8, p, in, o, eight);
       evaluate_batch_on(16, p, in, o, sixteen);
       for (std::size_t i = 0; i < in.size(); ++i) {
-        ASSERT_TRUE(same_bits(eight[i], sixteen[i])) << "mode " << mode << " wheel " << i;
+        ASSERT_TRUE(testing::same_bits(eight[i], sixteen[i])) << "mode " << mode << " wheel " << i;
         ++compared;
       }
     }
