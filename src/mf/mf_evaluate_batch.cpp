@@ -3,7 +3,8 @@
 // block is compiled for x86-64-v4 (AVX-512) and the 8-lane block twice, for x86-64-v3 (AVX2, FMA)
 // and the SSE2 baseline (GCC target_clones); the CPU's features choose at run time. As in
 // mf_evaluate_four.cpp, the v3/v4 code contracts a·b + c into FMAs the same way at every width, so
-// a wheel's results do not depend on the width or its lane.
+// a wheel's results do not depend on the width or its lane. Elsewhere (4 lanes: NEON, or a clang
+// build) a block is evaluate_four.
 #include "mf/mf_evaluate_batch.hpp"
 
 #include <algorithm>
@@ -12,6 +13,7 @@
 #include <cstring>
 #include <type_traits>
 
+#include "mf/mf_evaluate_four.hpp"
 #include "mf/mf_lane_transpose.hpp"
 #include "mf/mf_lanes.hpp"
 
@@ -86,116 +88,96 @@ template <int N>
   using L = lanes::Lanes<N>;
   static_assert(std::is_standard_layout_v<MfOutput<L>> &&
                 offsetof(MfOutput<L>, status) == kOutputFields * sizeof(L));
-  // In and out of lanes by transposes in registers at 4 and 8 lanes and (out) at 16; else (the
-  // 16 lanes' inputs) through plain float arrays in memory: element access of a vector held in
-  // registers would be one insert or extract per float.
   constexpr auto kWheels = static_cast<std::size_t>(N);
-  std::array<lanes::FloatVec<N>, kInputFields> packed;
-  if constexpr (N == 8) {
-    // Each wheel's 7 fields and the next wheel's first (the last wheel's 8th float is 0), as a
-    // row of eight; the transpose's first 7 columns are the fields.
-    lanes::FloatVec<8> rows[8];
-    lanes::FloatVec<8> columns[8];
-    for (std::size_t i = 0; i < kWheels; ++i) {
-      rows[i] = lanes::FloatVec<8>{};
-      std::memcpy(&rows[i], reinterpret_cast<const char*>(&inputs[i]),
-                  i + 1 < kWheels ? sizeof(rows[i]) : sizeof(MfInput<float>));
-    }
-    lanes::transpose<8>(rows, columns);
-    std::memcpy(packed.data(), columns, sizeof(packed));
-  } else if constexpr (N == 4) {
-    // Fields 0–3 and 3–6 of each wheel (as evaluate_four packs them).
-    for (const std::size_t first : {std::size_t{0}, std::size_t{3}}) {
-      lanes::FloatVec<4> rows[4];
-      lanes::FloatVec<4> columns[4];
-      for (std::size_t i = 0; i < kWheels; ++i) {
-        std::memcpy(&rows[i], reinterpret_cast<const char*>(&inputs[i]) + first * sizeof(float),
-                    sizeof(rows[i]));
-      }
-      lanes::transpose<4>(rows, columns);
-      std::memcpy(&packed[first], columns, sizeof(columns));
-    }
+  if constexpr (N == 4) {
+    // Four lanes (where the CPU has no wider vectors) are evaluate_four's, packing and unpacking
+    // included: each wheel on the batch's mounted side.
+    std::array<MfInput<float>, 4> four;
+    std::copy_n(inputs, 4, four.begin());
+    const std::array<MountedSide, 4> sides = {options.side, options.side, options.side,
+                                              options.side};
+    std::array<MfOutput<float>, 4> result;
+    evaluate_four(params, four, options, sides, result);
+    std::copy_n(result.begin(), 4, outputs);
+    static_cast<void>(mirror);  // evaluate_four mirrors by `sides`
   } else {
-    float rows_in[kWheels][kInputFields];
-    std::memcpy(rows_in, reinterpret_cast<const char*>(inputs), sizeof(rows_in));
-    float columns_in[kInputFields][kWheels];
-    for (std::size_t i = 0; i < kWheels; ++i) {
-      for (std::size_t f = 0; f < kInputFields; ++f) columns_in[f][i] = rows_in[i][f];
-    }
-    std::memcpy(packed.data(), columns_in, sizeof(packed));
-  }
-  MfInput<L> in;
-  in.fz_n = L(packed[0]);
-  in.kappa = L(packed[1]);
-  in.alpha_rad = L(packed[2]);
-  in.gamma_rad = L(packed[3]);
-  in.vx_mps = L(packed[4]);
-  in.phit_1pm = L(packed[5]);
-  in.p_pa = L(packed[6]);
-  lanes::Mask<N> flip;
-  if (mirror) flip = !flip;
-  MfOptions lane_options = options;
-  lane_options.side = MountedSide::as_measured;
-  MfOutput<L> out = evaluate(params, detail::mirror_input(in, flip), lane_options);
-  detail::mirror_output(out, flip);
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-  constexpr bool kRows16 = N == 16;
-#else
-  constexpr bool kRows16 = false;
-#endif
-  if constexpr (N == 8) {
-    // Eight fields at a time transposed into the eight wheels' rows (the last group's 5 fields
-    // stored alone: the status follows them).
-    lanes::FloatVec<8> fields[kOutputFields];
-    std::memcpy(fields, reinterpret_cast<const char*>(&out), sizeof(fields));
-    for (std::size_t first = 0; first < kOutputFields; first += 8) {
-      const std::size_t count = std::min<std::size_t>(8, kOutputFields - first);
-      lanes::FloatVec<8> group[8];
-      for (std::size_t f = 0; f < 8; ++f) group[f] = f < count ? fields[first + f] : fields[0];
+    // In and out of lanes by transposes in registers at 8 lanes and (out) at 16; else (the 16
+    // lanes' inputs) through plain float arrays in memory: element access of a vector held in
+    // registers would be one insert or extract per float.
+    std::array<lanes::FloatVec<N>, kInputFields> packed;
+    if constexpr (N == 8) {
+      // Each wheel's 7 fields and the next wheel's first (the last wheel's 8th float is 0), as a
+      // row of eight; the transpose's first 7 columns are the fields.
       lanes::FloatVec<8> rows[8];
-      lanes::transpose<8>(group, rows);
+      lanes::FloatVec<8> columns[8];
       for (std::size_t i = 0; i < kWheels; ++i) {
-        std::memcpy(reinterpret_cast<char*>(&outputs[i]) + first * sizeof(float), &rows[i],
-                    count * sizeof(float));
+        rows[i] = lanes::FloatVec<8>{};
+        std::memcpy(&rows[i], reinterpret_cast<const char*>(&inputs[i]),
+                    i + 1 < kWheels ? sizeof(rows[i]) : sizeof(MfInput<float>));
       }
-    }
-  } else if constexpr (N == 4) {
-    // Four fields at a time; the last (field 28) lane by lane.
-    lanes::FloatVec<4> fields[kOutputFields];
-    std::memcpy(fields, reinterpret_cast<const char*>(&out), sizeof(fields));
-    std::size_t first = 0;
-    for (; first + 4 <= kOutputFields; first += 4) {
-      const lanes::FloatVec<4> group[4] = {fields[first], fields[first + 1], fields[first + 2],
-                                           fields[first + 3]};
-      lanes::FloatVec<4> rows[4];
-      lanes::transpose<4>(group, rows);
+      lanes::transpose<8>(rows, columns);
+      std::memcpy(packed.data(), columns, sizeof(packed));
+    } else {
+      float rows_in[kWheels][kInputFields];
+      std::memcpy(rows_in, reinterpret_cast<const char*>(inputs), sizeof(rows_in));
+      float columns_in[kInputFields][kWheels];
       for (std::size_t i = 0; i < kWheels; ++i) {
-        std::memcpy(reinterpret_cast<char*>(&outputs[i]) + first * sizeof(float), &rows[i],
-                    sizeof(rows[i]));
+        for (std::size_t f = 0; f < kInputFields; ++f) columns_in[f][i] = rows_in[i][f];
       }
+      std::memcpy(packed.data(), columns_in, sizeof(packed));
     }
-    for (std::size_t i = 0; i < kWheels; ++i) {
-      for (std::size_t f = first; f < kOutputFields; ++f) {
-        std::memcpy(reinterpret_cast<char*>(&outputs[i]) + f * sizeof(float),
-                    reinterpret_cast<const char*>(&fields[f]) + i * sizeof(float), sizeof(float));
-      }
-    }
-  } else if constexpr (kRows16) {
+    MfInput<L> in;
+    in.fz_n = L(packed[0]);
+    in.kappa = L(packed[1]);
+    in.alpha_rad = L(packed[2]);
+    in.gamma_rad = L(packed[3]);
+    in.vx_mps = L(packed[4]);
+    in.phit_1pm = L(packed[5]);
+    in.p_pa = L(packed[6]);
+    lanes::Mask<N> flip;
+    if (mirror) flip = !flip;
+    MfOptions lane_options = options;
+    lane_options.side = MountedSide::as_measured;
+    MfOutput<L> out = evaluate(params, detail::mirror_input(in, flip), lane_options);
+    detail::mirror_output(out, flip);
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-    // _mm512_loadu_ps reads through a may_alias type: straight from the lanes.
-    store_rows16(reinterpret_cast<const char*>(&out), outputs);
+    constexpr bool kRows16 = N == 16;
+#else
+    constexpr bool kRows16 = false;
 #endif
-  } else {
-    float columns_out[kOutputFields][kWheels];
-    std::memcpy(columns_out, reinterpret_cast<const char*>(&out), sizeof(columns_out));
-    for (std::size_t i = 0; i < kWheels; ++i) {
-      float row[kOutputFields];
-      for (std::size_t f = 0; f < kOutputFields; ++f) row[f] = columns_out[f][i];
-      std::memcpy(reinterpret_cast<char*>(&outputs[i]), row, sizeof(row));
+    if constexpr (N == 8) {
+      // Eight fields at a time transposed into the eight wheels' rows (the last group's 5 fields
+      // stored alone: the status follows them).
+      lanes::FloatVec<8> fields[kOutputFields];
+      std::memcpy(fields, reinterpret_cast<const char*>(&out), sizeof(fields));
+      for (std::size_t first = 0; first < kOutputFields; first += 8) {
+        const std::size_t count = std::min<std::size_t>(8, kOutputFields - first);
+        lanes::FloatVec<8> group[8];
+        for (std::size_t f = 0; f < 8; ++f) group[f] = f < count ? fields[first + f] : fields[0];
+        lanes::FloatVec<8> rows[8];
+        lanes::transpose<8>(group, rows);
+        for (std::size_t i = 0; i < kWheels; ++i) {
+          std::memcpy(reinterpret_cast<char*>(&outputs[i]) + first * sizeof(float), &rows[i],
+                      count * sizeof(float));
+        }
+      }
+    } else if constexpr (kRows16) {
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+      // _mm512_loadu_ps reads through a may_alias type: straight from the lanes.
+      store_rows16(reinterpret_cast<const char*>(&out), outputs);
+#endif
+    } else {
+      float columns_out[kOutputFields][kWheels];
+      std::memcpy(columns_out, reinterpret_cast<const char*>(&out), sizeof(columns_out));
+      for (std::size_t i = 0; i < kWheels; ++i) {
+        float row[kOutputFields];
+        for (std::size_t f = 0; f < kOutputFields; ++f) row[f] = columns_out[f][i];
+        std::memcpy(reinterpret_cast<char*>(&outputs[i]), row, sizeof(row));
+      }
     }
+    const auto status = out.status.each();
+    for (std::size_t i = 0; i < kWheels; ++i) outputs[i].status = status[i];
   }
-  const auto status = out.status.each();
-  for (std::size_t i = 0; i < kWheels; ++i) outputs[i].status = status[i];
 }
 
 template <int N>

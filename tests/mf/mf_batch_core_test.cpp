@@ -1,7 +1,7 @@
 // mf::evaluate_batch with the core alone (no .tir reader): the test that runs on every target,
-// cross builds included (aarch64 and armhf under qemu-user, where the batch is 4 lanes wide and
-// packs and unpacks its blocks by 4 × 4 transposes). tests/mf/mf_evaluate_batch_test.cpp checks
-// every shipped tyre file on the host.
+// cross builds included (aarch64 and armhf under qemu-user, where the batch is 4 lanes wide: its
+// blocks evaluate_four's, and its padding and tail its own). tests/mf/mf_evaluate_batch_test.cpp
+// checks every shipped tyre file on the host.
 //   - Every wheel's outputs are evaluate_four's for it on the same CPU, bit for bit, with the same
 //     status: the default (MF 6.1) tyre evaluated as MF 6.1, MF 6.2 and MF 5.2, all eight useModes,
 //     extras on/off/loaded radius only, the three mounted sides, physical and wild inputs.
