@@ -1,13 +1,18 @@
-// Inputs and the bit-for-bit comparison of the batch tests (mf_evaluate_batch_test.cpp with every
-// shipped tyre on the host, mf_batch_core_test.cpp with the core alone on every target).
+// Inputs, option sets, the evaluate_four reference and the bit-for-bit comparison of the batch
+// tests (mf_evaluate_batch_test.cpp with every shipped tyre on the host, mf_batch_core_test.cpp
+// with the core alone on every target).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstring>
 #include <limits>
 #include <random>
+#include <string>
 #include <vector>
 
+#include "mf/mf_evaluate_four.hpp"
+#include "mf/mf_options.hpp"
 #include "mf/mf_types.hpp"
 #include "wild_value.hpp"
 
@@ -41,6 +46,52 @@ inline std::vector<mf::MfInput<float>> batch_inputs(std::mt19937_64& rng, std::s
   }
   if (n > 1) in[1].kappa = std::numeric_limits<float>::quiet_NaN();
   return in;
+}
+
+/// One set of options the batch is checked with, and how to name it in a failure.
+struct BatchOptionSet {
+  mf::MfOptions options;
+  std::string name;
+};
+
+/// The eight useModes (limits on or off × α* or not × turn slip or not).
+inline constexpr std::array<int, 8> kUseModes = {111, 112, 121, 122, 211, 212, 221, 222};
+
+/// Every useMode × extras off / on / loaded radius only × the three mounted sides.
+inline std::vector<BatchOptionSet> batch_option_sets() {
+  std::vector<BatchOptionSet> sets;
+  for (const int mode : kUseModes) {
+    for (int extras = 0; extras < 3; ++extras) {
+      for (const mf::MountedSide side :
+           {mf::MountedSide::as_measured, mf::MountedSide::left, mf::MountedSide::right}) {
+        mf::MfOptions o = mf::options_from_use_mode(mode).value;
+        o.extras = extras > 0;
+        o.extras_loaded_radius_only = extras == 2;
+        o.side = side;
+        sets.push_back({o, "mode " + std::to_string(mode) + " extras " + std::to_string(extras) +
+                               " side " + std::to_string(static_cast<int>(side))});
+      }
+    }
+  }
+  return sets;
+}
+
+/// evaluate_four on groups of four (the last padded with its first input), every wheel on the
+/// options' side: what the batch must give bit for bit.
+inline std::vector<mf::MfOutput<float>> in_fours(const mf::MfParameters<float>& p,
+                                                 const std::vector<mf::MfInput<float>>& in,
+                                                 const mf::MfOptions& options) {
+  std::vector<mf::MfOutput<float>> out(in.size());
+  const std::array<mf::MountedSide, 4> sides = {options.side, options.side, options.side,
+                                                options.side};
+  for (std::size_t g = 0; g < in.size(); g += 4) {
+    std::array<mf::MfInput<float>, 4> four;
+    for (std::size_t k = 0; k < 4; ++k) four[k] = in[g + k < in.size() ? g + k : g];
+    std::array<mf::MfOutput<float>, 4> result;
+    mf::evaluate_four(p, four, options, sides, result);
+    for (std::size_t k = 0; k < 4 && g + k < in.size(); ++k) out[g + k] = result[k];
+  }
+  return out;
 }
 
 /// The outputs' bits (every float field) and status.

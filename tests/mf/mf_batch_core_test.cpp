@@ -26,8 +26,6 @@
 namespace tread::mf {
 namespace {
 
-constexpr std::array<int, 8> kUseModes = {111, 112, 121, 122, 211, 212, 221, 222};
-
 std::vector<MfParameters<float>> tyres() {
   std::vector<MfParameters<float>> t;
   for (const FitType fit : {FitType::mf61, FitType::mf62, FitType::mf52}) {
@@ -43,36 +41,21 @@ TEST(MfBatchCore, EqualsEvaluateFourBitForBit) {
   std::mt19937_64 rng(31);
   const auto n = static_cast<std::size_t>(3 * lanes + 5);
   std::size_t compared = 0;
+  const std::vector<testing::BatchOptionSet> sets = testing::batch_option_sets();
   for (const MfParameters<float>& p : tyres()) {
-    for (const int mode : kUseModes) {
-      for (int extras = 0; extras < 3; ++extras) {
-        MfOptions o = options_from_use_mode(mode).value;
-        o.extras = extras > 0;
-        o.extras_loaded_radius_only = extras == 2;
-        for (const MountedSide side :
-             {MountedSide::as_measured, MountedSide::left, MountedSide::right}) {
-          o.side = side;
-          const std::vector<MfInput<float>> in = testing::batch_inputs(rng, n);
-          std::vector<MfOutput<float>> got(n);
-          evaluate_batch(p, in, o, got);
-          const std::array<MountedSide, 4> sides = {side, side, side, side};
-          for (std::size_t g = 0; g < n; g += 4) {
-            std::array<MfInput<float>, 4> four;
-            for (std::size_t k = 0; k < 4; ++k) four[k] = in[g + k < n ? g + k : g];
-            std::array<MfOutput<float>, 4> expected;
-            evaluate_four(p, four, o, sides, expected);
-            for (std::size_t k = 0; k < 4 && g + k < n; ++k) {
-              ASSERT_TRUE(testing::same_bits(got[g + k], expected[k]))
-                  << "fit " << static_cast<int>(p.fit_type) << " mode " << mode << " extras "
-                  << extras << " side " << static_cast<int>(side) << " wheel " << g + k;
-              ++compared;
-            }
-          }
-        }
+    for (const testing::BatchOptionSet& set : sets) {
+      const std::vector<MfInput<float>> in = testing::batch_inputs(rng, n);
+      std::vector<MfOutput<float>> got(n);
+      evaluate_batch(p, in, set.options, got);
+      const std::vector<MfOutput<float>> expected = testing::in_fours(p, in, set.options);
+      for (std::size_t i = 0; i < n; ++i) {
+        ASSERT_TRUE(testing::same_bits(got[i], expected[i]))
+            << "fit " << static_cast<int>(p.fit_type) << " " << set.name << " wheel " << i;
+        ++compared;
       }
     }
   }
-  EXPECT_EQ(compared, tyres().size() * kUseModes.size() * 3 * 3 * n);
+  EXPECT_EQ(compared, tyres().size() * sets.size() * n);
 }
 
 TEST(MfBatchCore, EveryLengthAndStartGivesTheWheelsOwnOutputs) {

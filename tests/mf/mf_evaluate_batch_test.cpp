@@ -33,8 +33,6 @@
 namespace tread::mf {
 namespace {
 
-constexpr std::array<int, 8> kUseModes = {111, 112, 121, 122, 211, 212, 221, 222};
-
 std::vector<MfParameters<float>> all_mf_tyres() {
   std::vector<MfParameters<float>> tyres;
   for (const auto& entry : std::filesystem::directory_iterator(testing::tyres_dir())) {
@@ -46,22 +44,6 @@ std::vector<MfParameters<float>> all_mf_tyres() {
     }
   }
   return tyres;
-}
-
-/// evaluate_four on groups of four (the last padded with its first input), every wheel on `side`.
-std::vector<MfOutput<float>> in_fours(const MfParameters<float>& p,
-                                      const std::vector<MfInput<float>>& in,
-                                      const MfOptions& options, MountedSide side) {
-  std::vector<MfOutput<float>> out(in.size());
-  const std::array<MountedSide, 4> sides = {side, side, side, side};
-  for (std::size_t g = 0; g < in.size(); g += 4) {
-    std::array<MfInput<float>, 4> four;
-    for (std::size_t k = 0; k < 4; ++k) four[k] = in[g + k < in.size() ? g + k : g];
-    std::array<MfOutput<float>, 4> result;
-    evaluate_four(p, four, options, sides, result);
-    for (std::size_t k = 0; k < 4 && g + k < in.size(); ++k) out[g + k] = result[k];
-  }
-  return out;
 }
 
 constexpr std::size_t kFields = offsetof(MfOutput<float>, status) / sizeof(float);
@@ -85,34 +67,25 @@ TEST(MfEvaluateBatch, EqualsEvaluateFour) {
     ASSERT_GE(tyres.size(), 8U);
     std::mt19937_64 rng(17);
     const std::size_t n = static_cast<std::size_t>(3 * batch_lanes() + 5);
+    const std::vector<testing::BatchOptionSet> sets = testing::batch_option_sets();
     std::size_t compared = 0;
     for (const MfParameters<float>& p : tyres) {
-      for (const int mode : kUseModes) {
-        for (int extras = 0; extras < 3; ++extras) {
-          MfOptions o = options_from_use_mode(mode).value;
-          o.extras = extras > 0;
-          o.extras_loaded_radius_only = extras == 2;
-          for (const MountedSide side :
-               {MountedSide::as_measured, MountedSide::left, MountedSide::right}) {
-            o.side = side;
-            const std::vector<MfInput<float>> in = testing::batch_inputs(rng, n);
-            const std::vector<MfOutput<float>> expected = in_fours(p, in, o, side);
-            std::vector<MfOutput<float>> got(n);
-            evaluate_batch_on(lanes, p, in, o, got);
-            for (std::size_t i = 0; i < n; ++i) {
-              const std::string where = "fit " + std::to_string(static_cast<int>(p.fit_type)) +
-                                        " mode " + std::to_string(mode) + " extras " +
-                                        std::to_string(extras) + " wheel " + std::to_string(i);
-              ASSERT_EQ(got[i].status, expected[i].status) << where;
-              const auto a = fields_of(got[i]);
-              const auto b = fields_of(expected[i]);
-              for (std::size_t k = 0; k < kFields; ++k) {
-                ASSERT_EQ(std::memcmp(&a[k], &b[k], sizeof(float)), 0)
-                    << where << " field " << k << ": " << a[k] << " vs " << b[k];
-              }
-              ++compared;
-            }
+      for (const testing::BatchOptionSet& set : sets) {
+        const std::vector<MfInput<float>> in = testing::batch_inputs(rng, n);
+        const std::vector<MfOutput<float>> expected = testing::in_fours(p, in, set.options);
+        std::vector<MfOutput<float>> got(n);
+        evaluate_batch_on(lanes, p, in, set.options, got);
+        for (std::size_t i = 0; i < n; ++i) {
+          const std::string where = "fit " + std::to_string(static_cast<int>(p.fit_type)) + " " +
+                                    set.name + " wheel " + std::to_string(i);
+          ASSERT_EQ(got[i].status, expected[i].status) << where;
+          const auto a = fields_of(got[i]);
+          const auto b = fields_of(expected[i]);
+          for (std::size_t k = 0; k < kFields; ++k) {
+            ASSERT_EQ(std::memcmp(&a[k], &b[k], sizeof(float)), 0)
+                << where << " field " << k << ": " << a[k] << " vs " << b[k];
           }
+          ++compared;
         }
       }
     }
@@ -168,7 +141,7 @@ TEST(MfEvaluateBatch, SixteenLanesEqualEightBitForBit) {
   std::mt19937_64 rng(23);
   std::size_t compared = 0;
   for (const MfParameters<float>& p : all_mf_tyres()) {
-    for (const int mode : kUseModes) {
+    for (const int mode : testing::kUseModes) {
       const MfOptions o = options_from_use_mode(mode).value;
       const std::vector<MfInput<float>> in = testing::batch_inputs(rng, 53);
       std::vector<MfOutput<float>> eight(in.size());
