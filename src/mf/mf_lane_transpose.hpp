@@ -27,18 +27,22 @@ template <int N>
     out[3] = __builtin_shufflevector(t1, t3, 2, 3, 6, 7);
   } else {
     static_assert(N == 8);
+    // Unrolled: as loops (GCC -O2 keeps them), every step went through memory.
     W t[8];
+#pragma GCC unroll 8
     for (std::size_t k = 0; k < 8; k += 2) {
       t[k] = __builtin_shufflevector(in[k], in[k + 1], 0, 8, 1, 9, 4, 12, 5, 13);
       t[k + 1] = __builtin_shufflevector(in[k], in[k + 1], 2, 10, 3, 11, 6, 14, 7, 15);
     }
     W u[8];
+#pragma GCC unroll 8
     for (std::size_t k = 0; k < 8; k += 4) {
       u[k] = __builtin_shufflevector(t[k], t[k + 2], 0, 1, 8, 9, 4, 5, 12, 13);
       u[k + 1] = __builtin_shufflevector(t[k], t[k + 2], 2, 3, 10, 11, 6, 7, 14, 15);
       u[k + 2] = __builtin_shufflevector(t[k + 1], t[k + 3], 0, 1, 8, 9, 4, 5, 12, 13);
       u[k + 3] = __builtin_shufflevector(t[k + 1], t[k + 3], 2, 3, 10, 11, 6, 7, 14, 15);
     }
+#pragma GCC unroll 8
     for (std::size_t j = 0; j < 4; ++j) {
       out[j] = __builtin_shufflevector(u[j], u[j + 4], 0, 1, 2, 3, 8, 9, 10, 11);
       out[j + 4] = __builtin_shufflevector(u[j], u[j + 4], 4, 5, 6, 7, 12, 13, 14, 15);
