@@ -157,13 +157,14 @@ inline float mf_pow(const float& x, const float& y) {
 inline constexpr int kMaxCores = 8;
 
 /// Arguments of up to eight Magic Formula cores y = trig(c·atan(x − e·(x − atan x))), trig = sin,
-/// or cos where `cosine` is set. Cores from `count` on are not evaluated by the generic version
-/// (and are zero in the float version).
+/// or cos where `cosine` is set. Slots from `count` on are not set (not zeroed either: for lanes,
+/// zeroing them was 800 bytes of stores an evaluation); the versions that evaluate four cores at a
+/// time take the group's first core in their place (slot_of) and nothing reads those outputs.
 template <typename T>
 struct Cores {
-  T c[kMaxCores] = {};
-  T x[kMaxCores] = {};
-  T e[kMaxCores] = {};
+  T c[kMaxCores];
+  T x[kMaxCores];
+  T e[kMaxCores];
   bool cosine[kMaxCores] = {};
   int count = 0;
   /// Adds a core, returns its lane.
@@ -174,6 +175,9 @@ struct Cores {
     cosine[count] = cosine_;
     return count++;
   }
+  /// The slot a pass of four cores from `group` reads for its core `group + k`: that core, or the
+  /// group's first where there is none (group < count).
+  int slot_of(int group, int k) const { return group + k < count ? group + k : group; }
 };
 
 /// Generic scalars (double, ceres::Jet): each core exactly as the formula is written, one by one.
@@ -302,17 +306,18 @@ inline void mf_cores(const Cores<float>& in, float (&out)[kMaxCores]) {
     fast::F4 e;
     fast::I4 quarter_turns;
     for (int i = 0; i < 4; ++i) {
-      c[i] = in.c[g + i];
-      x[i] = in.x[g + i];
-      e[i] = in.e[g + i];
-      quarter_turns[i] = in.cosine[g + i] ? 1 : 0;
+      const int s = in.slot_of(g, i);
+      c[i] = in.c[s];
+      x[i] = in.x[s];
+      e[i] = in.e[s];
+      quarter_turns[i] = in.cosine[s] ? 1 : 0;
     }
     const fast::F4 y = c * fast::atan4(x - e * (x - fast::atan4(x)));
     const fast::F4 v = fast::sin_cos4(y, quarter_turns);
     for (int i = 0; i < 4; ++i) {
       out[g + i] = v[i];
       if (!(std::fabs(y[i]) <= fast::kTrigMax))
-        out[g + i] = in.cosine[g + i] ? std::cos(y[i]) : std::sin(y[i]);
+        out[g + i] = in.cosine[in.slot_of(g, i)] ? std::cos(y[i]) : std::sin(y[i]);
     }
   }
 }
