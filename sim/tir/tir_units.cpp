@@ -213,10 +213,10 @@ std::optional<double> number_si(const TirFile& file, const UnitSystem& units,
   return info == nullptr ? *v : *v * units.to_si(info->dimension);
 }
 
-void set_si(TirFile& file, std::string_view section, std::string_view key, double si_value) {
+void set_si(TirFile& file, std::string_view section, std::string_view key, double value_si) {
   const KeyInfo* info = find_key_info(key);
   const double factor = info == nullptr ? 1.0 : read_units(file).to_si(info->dimension);
-  file.set(section, key, si_value / factor);
+  file.set(section, key, value_si / factor);
 }
 
 std::vector<std::string> convert_to_si(TirFile& file) {

@@ -53,7 +53,7 @@ std::optional<double> number_si(const TirFile& file, const UnitSystem& units,
                                 std::string_view section, std::string_view key);
 
 /// TirFile::set() of an SI value, written in the file's own unit for that key.
-void set_si(TirFile& file, std::string_view section, std::string_view key, double si_value);
+void set_si(TirFile& file, std::string_view section, std::string_view key, double value_si);
 
 /// Rewrites `file` in SI: every numeric value of a known dimensional key is converted (so are the
 /// {pen fz} rows of [DEFLECTION_LOAD_CURVE] / [BOTTOMING_CURVE]), and [UNITS] becomes meter /
