@@ -16,7 +16,8 @@ log_dir=build/logs
 mkdir -p "$log_dir"
 
 run_workflow() {
-  local preset=$1 log="$log_dir/$1.log"
+  local preset=$1 log="$log_dir/$1.log" began
+  began=$(date +%s)
   echo "=== workflow: $preset ==="
   cmake --workflow --preset "$preset" 2>&1 | tee "$log" | grep -E --line-buffered \
     '(tests passed|Test +#|FAILED|Error|error:|image size|text\s+data|tread_firmware\.elf)' | grep -v 'Passed'
@@ -35,6 +36,7 @@ run_workflow() {
     # A step that failed before or besides its tests (configure, build, a cross link) counts once.
     if [[ -z $summary || $failed == 0 ]]; then total_failed=$((total_failed + 1)); fi
   fi
+  echo "    ($preset: $(($(date +%s) - began)) s)"
 }
 
 start=$(date +%s)
