@@ -744,11 +744,28 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
   return result;
 }
 
+/// MF 6.2, MF 5.2 and PAC2002: Rl with Fz62(Rl) = Fz (decreasing in Rl) by loaded_radius62, at the
+/// forces Fx and Fy after the lifted wheel's zeroing. It needs nothing else of the evaluation:
+/// evaluate starts it as soon as the forces are known, so that the moments' work overlaps its
+/// chain of dependent steps. The load: MF 6.2 solves for the load as given (MFeval 4.x's
+/// calculateRhoRl62 takes uFz, not the Fz limited to FZMAX that the forces see); MF 5.2 / PAC2002
+/// for the limited load.
+template <typename T, typename P>
+[[gnu::always_inline]] inline LoadedRadius62<T> solve_loaded_radius62(const MfParameters<P>& p,
+                                                                      const Prepared<T>& in,
+                                                                      const Basic<T>& b,
+                                                                      const T& fx, const T& fy) {
+  const T fz_target = p.fit_type == FitType::mf62 ? in.ufz : in.fz;
+  return loaded_radius62(fz62_curve(p, in.gamma, in.omega, in.romega, b.dpi, fx, fy), fz_target);
+}
+
 /// doExtras: Re, ω, and the loaded radius Rl, deflection ρ and vertical stiffness Cz, from the
-/// forces in `out` (after the lifted wheel's zeroing).
+/// forces in `out` (after the lifted wheel's zeroing); for every model but MF 6.1 from `solved`,
+/// solve_loaded_radius62 at those forces.
 template <typename T, typename P>
 [[gnu::always_inline]] inline void loaded_radius(const MfParameters<P>& p, const Prepared<T>& in,
-                                                 const Basic<T>& b, MfOutput<T>& out) {
+                                                 const Basic<T>& b, const LoadedRadius62<T>& solved,
+                                                 MfOutput<T>& out) {
   const T r0 = p.unloaded_radius_m;
   const T dpi = b.dpi;
   out.re_m = in.re;
@@ -772,12 +789,6 @@ template <typename T, typename P>
     out.rho_m = rho_z;
     out.cz_npm = fz / rho_z;
   } else {
-    // Rl with Fz62(Rl) = Fz (decreasing in Rl), solved by loaded_radius62. The load: MF 6.2
-    // solves for the load as given (MFeval 4.x's calculateRhoRl62 takes uFz, not the Fz limited
-    // to FZMAX that the forces see); MF 5.2 / PAC2002 for the limited load.
-    const T fz_target = p.fit_type == FitType::mf62 ? in.ufz : in.fz;
-    const LoadedRadius62<T> solved = loaded_radius62(
-        fz62_curve(p, in.gamma, in.omega, in.romega, dpi, out.fx_n, out.fy_n), fz_target);
     out.rl_m = solved.rl_m;
     T rho_z = solved.rho_m;
     rho_z = if_else(is_zero(in.fz) || !(rho_z > T(0)), T(1e-6), rho_z);
