@@ -141,9 +141,10 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
   const T fy = options.combined ? gyk * y0.fy0 + svyk : y0.fy0;
   // MF 6.2's (and MF 5.2's, PAC2002's) loaded radius, a root search whose steps depend on each
   // other, needs only the forces (zeroed on a lifted wheel, as zero_lifted does below). On lanes it
-  // is started here, so that Mz's and the moments' work overlaps its chain (AVX2 VM, 8 alternating
-  // runs: the 8-lane batch's MF 6.2 / MF 6.1 1.345 → 1.276, four lanes unchanged); in float and
-  // double after everything else, as before (there it measured about 1 % slower here).
+  // is started here, so that Mz's and the moments' work overlaps its chain (AVX2 VM, two sets of 8
+  // alternating runs: the 8-lane batch's MF 6.2 / MF 6.1 1.31–1.35 → 1.27–1.28, medians; four
+  // lanes unchanged); in float and double after everything else, as before (there it measured
+  // about 1 % slower here, 13 ns in float on the AVX-512 VM).
   const bool solve62 = options.extras && p.fit_type != FitType::mf61;
   LoadedRadius62<T> solved{T(0), T(0), 0, false};
   if constexpr (is_lanes<T>) {
