@@ -30,6 +30,7 @@
 #include <concepts>
 #include <cstdint>
 #include <cstring>
+#include <utility>
 
 #include "mf/mf_math.hpp"
 #include "mf/mf_types.hpp"
@@ -284,12 +285,82 @@ Lanes<N> mf_tan(const Lanes<N>& x) {
   }
   return t;
 }
+/// Four-lane cores two at a time: cores 2i and 2i+1 side by side in eight lanes, `Pairs` such
+/// eight-lane chains interleaved (a slot past `count` repeats core 0). In the four-wheel path's
+/// AVX2 and AVX-512 clones an eight-lane vector is one ymm register, so the cores (a fifth of
+/// evaluate_four's instructions) take half the instructions; every lane computes what the
+/// eight-lane batch computes for its wheel (the same templated atan and sin/cos on the same vector
+/// type), so the batch and evaluate_four still agree bit for bit.
+template <int Pairs, bool kFull>
+void mf_core_pairs(const detail::Cores<Lanes<4>>& in, Lanes<4> (&out)[detail::kMaxCores]) {
+  using W = FloatVec<8>;
+  constexpr auto kPairs = static_cast<std::size_t>(Pairs);
+  const auto slot = [&](int k) { return kFull || k < in.count ? k : 0; };
+  // The cores' sin/cos choices, one lane each, then spread to four lanes per core (on x86: one
+  // widening, then one lane permutation per pair).
+  using Bytes = std::uint8_t __attribute__((vector_size(8)));
+  Bytes cosine{};
+  for (int k = 0; k < 2 * Pairs; ++k) cosine[k] = in.cosine[slot(k)] ? 1 : 0;
+  const IntVec<8> each = __builtin_convertvector(cosine, IntVec<8>);
+  IntVec<8> turns[kPairs];
+  [&]<int... K>(std::integer_sequence<int, K...>) {
+    ((turns[K] = __builtin_shufflevector(each, each, 2 * K, 2 * K, 2 * K, 2 * K, 2 * K + 1,
+                                         2 * K + 1, 2 * K + 1, 2 * K + 1)),
+     ...);
+  }
+  (std::make_integer_sequence<int, Pairs>{});
+  W y[kPairs];
+#pragma GCC unroll 4
+  for (int k = 0; k < Pairs; ++k) {
+    const int a = slot(2 * k);
+    const int b = slot(2 * k + 1);
+    const W x = __builtin_shufflevector(in.x[a].v, in.x[b].v, 0, 1, 2, 3, 4, 5, 6, 7);
+    const W e = __builtin_shufflevector(in.e[a].v, in.e[b].v, 0, 1, 2, 3, 4, 5, 6, 7);
+    y[k] = x - e * (x - detail::fast::atan_lanes(x));
+  }
+#pragma GCC unroll 4
+  for (int k = 0; k < Pairs; ++k) {
+    const int a = slot(2 * k);
+    const int b = slot(2 * k + 1);
+    const W c = __builtin_shufflevector(in.c[a].v, in.c[b].v, 0, 1, 2, 3, 4, 5, 6, 7);
+    y[k] = c * detail::fast::atan_lanes(y[k]);
+  }
+  Mask<8> wide;
+#pragma GCC unroll 4
+  for (int k = 0; k < Pairs; ++k) {
+    const W v = detail::fast::sin_cos_lanes(y[k], turns[k]);
+    out[2 * k] = Lanes<4>(__builtin_shufflevector(v, v, 0, 1, 2, 3));
+    out[2 * k + 1] = Lanes<4>(__builtin_shufflevector(v, v, 4, 5, 6, 7));
+    wide = wide || !(abs(Lanes<8>(y[k])) <= Lanes<8>(detail::fast::kTrigMax));
+  }
+  if (any_lane(wide)) {
+    for (int k = 0; k < 2 * Pairs; ++k) {
+      const W& yk = y[k / 2];
+      const Lanes<4> part(k % 2 == 0 ? __builtin_shufflevector(yk, yk, 0, 1, 2, 3)
+                                     : __builtin_shufflevector(yk, yk, 4, 5, 6, 7));
+      out[k] = sin_or_cos(part, in.cosine[slot(k)]);
+    }
+  }
+}
+
 /// The Magic Formula cores of an evaluation (mf_math.hpp), each on N wheels: four cores at a
 /// time written side by side, so that their long dependent chains (atan, division, atan, sin)
 /// overlap. Angles beyond the reduction's range go through libm.
 template <int N>
 void mf_cores(const detail::Cores<Lanes<N>>& in, Lanes<N> (&out)[detail::kMaxCores]) {
   using W = FloatVec<N>;
+#if defined(__x86_64__)
+  if constexpr (N == 4) {
+    if (in.count == detail::kMaxCores) {
+      mf_core_pairs<4, true>(in, out);
+    } else if (in.count <= 4) {
+      mf_core_pairs<2, false>(in, out);
+    } else {
+      mf_core_pairs<4, false>(in, out);
+    }
+    return;
+  }
+#endif
   for (int g = 0; g < detail::kMaxCores; g += 4) {
     if (g >= in.count) break;
     W y[4];
