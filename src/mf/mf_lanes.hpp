@@ -285,6 +285,78 @@ Lanes<N> mf_tan(const Lanes<N>& x) {
   }
   return t;
 }
+// Two independent evaluations of a function (mf_math.hpp's *_two): on x86-64, four lanes of each
+// side by side in one eight-lane vector (one ymm in evaluate_four's AVX2 and AVX-512 clones), each
+// lane computing what the eight-lane batch computes for it; elsewhere the two calls.
+#if defined(__x86_64__)
+inline constexpr bool kTwoInOne = true;
+#else
+inline constexpr bool kTwoInOne = false;
+#endif
+
+/// Lanes beyond the trig reduction's range, redone with libm (as mf_sin, mf_cos and mf_tan do).
+template <typename F>
+void trig_wide_lanes(const Lanes<4>& x, Lanes<4>& r, F f) {
+  const Mask<4> out_of_range = !(abs(x) <= Lanes<4>(detail::fast::kTrigMax));
+  if (any_lane(out_of_range)) {
+    for (int i = 0; i < 4; ++i)
+      if (out_of_range[i]) r.v[i] = f(x.v[i]);
+  }
+}
+
+template <int N>
+detail::TwoOf<Lanes<N>> mf_atan_two(const Lanes<N>& a, const Lanes<N>& b) {
+  if constexpr (N == 4 && kTwoInOne) {
+    const FloatVec<8> r =
+        detail::fast::atan_lanes(__builtin_shufflevector(a.v, b.v, 0, 1, 2, 3, 4, 5, 6, 7));
+    return {Lanes<4>(__builtin_shufflevector(r, r, 0, 1, 2, 3)),
+            Lanes<4>(__builtin_shufflevector(r, r, 4, 5, 6, 7))};
+  } else {
+    return {mf_atan(a), mf_atan(b)};
+  }
+}
+template <int N>
+detail::TwoOf<Lanes<N>> mf_tan_two(const Lanes<N>& a, const Lanes<N>& b) {
+  if constexpr (N == 4 && kTwoInOne) {
+    const FloatVec<8> r =
+        detail::fast::tan_lanes(__builtin_shufflevector(a.v, b.v, 0, 1, 2, 3, 4, 5, 6, 7));
+    detail::TwoOf<Lanes<4>> t{Lanes<4>(__builtin_shufflevector(r, r, 0, 1, 2, 3)),
+                              Lanes<4>(__builtin_shufflevector(r, r, 4, 5, 6, 7))};
+    trig_wide_lanes(a, t.first, [](float x) { return std::tan(x); });
+    trig_wide_lanes(b, t.second, [](float x) { return std::tan(x); });
+    return t;
+  } else {
+    return {mf_tan(a), mf_tan(b)};
+  }
+}
+template <int N>
+detail::TwoOf<Lanes<N>> mf_pow_two(const Lanes<N>& x, const Lanes<N>& y, const Lanes<N>& u,
+                                   const Lanes<N>& v) {
+  if constexpr (N == 4 && kTwoInOne) {
+    const Lanes<8> r = pow(Lanes<8>(__builtin_shufflevector(x.v, u.v, 0, 1, 2, 3, 4, 5, 6, 7)),
+                           Lanes<8>(__builtin_shufflevector(y.v, v.v, 0, 1, 2, 3, 4, 5, 6, 7)));
+    return {Lanes<4>(__builtin_shufflevector(r.v, r.v, 0, 1, 2, 3)),
+            Lanes<4>(__builtin_shufflevector(r.v, r.v, 4, 5, 6, 7))};
+  } else {
+    return {pow(x, y), pow(u, v)};
+  }
+}
+template <int N>
+detail::TwoOf<Lanes<N>> mf_cos_sin(const Lanes<N>& a, const Lanes<N>& b) {
+  if constexpr (N == 4 && kTwoInOne) {
+    const IntVec<8> turns = {1, 1, 1, 1, 0, 0, 0, 0};
+    const FloatVec<8> r = detail::fast::sin_cos_lanes(
+        __builtin_shufflevector(a.v, b.v, 0, 1, 2, 3, 4, 5, 6, 7), turns);
+    detail::TwoOf<Lanes<4>> t{Lanes<4>(__builtin_shufflevector(r, r, 0, 1, 2, 3)),
+                              Lanes<4>(__builtin_shufflevector(r, r, 4, 5, 6, 7))};
+    trig_wide_lanes(a, t.first, [](float x) { return std::cos(x); });
+    trig_wide_lanes(b, t.second, [](float x) { return std::sin(x); });
+    return t;
+  } else {
+    return {mf_cos(a), mf_sin(b)};
+  }
+}
+
 /// Four-lane cores two at a time: cores 2i and 2i+1 side by side in eight lanes, `Pairs` such
 /// eight-lane chains interleaved (a slot past `count` repeats core 0). In the four-wheel path's
 /// AVX2 and AVX-512 clones an eight-lane vector is one ymm register, so the cores (a fifth of

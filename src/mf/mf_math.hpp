@@ -152,6 +152,33 @@ inline float mf_pow(const float& x, const float& y) {
   return std::exp(y * std::log(x));
 }
 
+// ---- two independent evaluations of a function --------------------------------------------------
+// Where an evaluation needs the same function of two independent arguments. For scalars these are
+// the two calls; the four-lane path (mf_lanes.hpp) evaluates both in one eight-lane vector on
+// x86-64, with the same results per lane.
+template <typename T>
+struct TwoOf {
+  T first, second;
+};
+template <typename T>
+TwoOf<T> mf_atan_two(const T& a, const T& b) {
+  return {mf_atan(a), mf_atan(b)};
+}
+template <typename T>
+TwoOf<T> mf_tan_two(const T& a, const T& b) {
+  return {mf_tan(a), mf_tan(b)};
+}
+/// x^y and u^v.
+template <typename T>
+TwoOf<T> mf_pow_two(const T& x, const T& y, const T& u, const T& v) {
+  return {mf_pow(x, y), mf_pow(u, v)};
+}
+/// cos a and sin b.
+template <typename T>
+TwoOf<T> mf_cos_sin(const T& a, const T& b) {
+  return {mf_cos(a), mf_sin(b)};
+}
+
 // ---- the Magic Formula cores, all of an evaluation at once
 // ---------------------------------------
 inline constexpr int kMaxCores = 8;

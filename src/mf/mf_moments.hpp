@@ -23,11 +23,11 @@ T mx(const MfParameters<P>& p, const Prepared<T>& in, const Basic<T>& b, const T
   fz = if_else(fz < p.fzmin_n, fz * (fz / p.fzmin_n) * (fz / p.fzmin_n), fz);
   const T fz0 = p.fnomin_n;
   const T g = in.gamma;
+  const TwoOf<T> at = mf_atan_two((p.qsx6 * fz / fz0) * (p.qsx6 * fz / fz0), p.qsx9 * fy / fz0);
+  const TwoOf<T> cs = mf_cos_sin(p.qsx5 * at.first, p.qsx7 * g + p.qsx8 * at.second);
   return p.unloaded_radius_m * fz * p.lmx *
              (p.qsx1 * p.lvmx - p.qsx2 * g * (T(1) + p.ppmx1 * b.dpi) - p.qsx12 * g * abs(g) +
-              p.qsx3 * fy / fz0 +
-              p.qsx4 * mf_cos(p.qsx5 * mf_atan((p.qsx6 * fz / fz0) * (p.qsx6 * fz / fz0))) *
-                  mf_sin(p.qsx7 * g + p.qsx8 * mf_atan(p.qsx9 * fy / fz0)) +
+              p.qsx3 * fy / fz0 + p.qsx4 * cs.first * cs.second +
               p.qsx10 * mf_atan(p.qsx11 * fz / fz0) * g) +
          p.unloaded_radius_m * fy * p.lmx * (p.qsx13 + p.qsx14 * abs(g));
 }
@@ -52,9 +52,17 @@ T my(const MfParameters<P>& p, const Prepared<T>& in, const T& fx) {
     m = -r0 * fz * p.lmy * (p.qsy1 + p.qsy2 * (fx / fz0) + p.qsy3 * abs(v) + p.qsy4 * v2 * v2);
   } else {
     const T fz_ratio = fz / fz0;
-    const T load = if_else(fz_ratio > T(0), mf_pow(fz_ratio, T(p.qsy7)), T(0));
     const T p_ratio = in.p / p.nompres_pa;
-    const T pressure = is_zero(p.qsy8) ? T(1) : mf_pow(p_ratio, T(p.qsy8));
+    T load;
+    T pressure;
+    if (is_zero(p.qsy8)) {
+      load = if_else(fz_ratio > T(0), mf_pow(fz_ratio, T(p.qsy7)), T(0));
+      pressure = T(1);
+    } else {
+      const TwoOf<T> powers = mf_pow_two(fz_ratio, T(p.qsy7), p_ratio, T(p.qsy8));
+      load = if_else(fz_ratio > T(0), powers.first, T(0));
+      pressure = powers.second;
+    }
     m = -r0 * fz0 * p.lmy *
         (p.qsy1 + p.qsy2 * (fx / fz0) + p.qsy3 * abs(v) + p.qsy4 * v2 * v2 +
          (p.qsy5 + p.qsy6 * fz_ratio) * in.gamma * in.gamma) *
@@ -114,11 +122,9 @@ struct MzEquivalentSlip {
 template <typename T>
 MzEquivalentSlip<T> mz_equivalent_slip(const Prepared<T>& in, const MzTrail<T>& tr, const T& kxk) {
   const T kk = div_or(kxk, tr.kya_prime, T(0)) * in.kappa;
-  const T tan_r = mf_tan(tr.alphar);
-  const T tan_t = mf_tan(tr.alphat);
-  const T alphar_eq = mf_atan(hypot_of(tan_r, kk)) * sgn(tr.alphar);
-  const T alphat_eq = mf_atan(hypot_of(tan_t, kk)) * sgn(tr.alphat);
-  return {alphar_eq, alphat_eq};
+  const TwoOf<T> tans = mf_tan_two(tr.alphar, tr.alphat);
+  const TwoOf<T> eq = mf_atan_two(hypot_of(tans.first, kk), hypot_of(tans.second, kk));
+  return {eq.first * sgn(tr.alphar), eq.second * sgn(tr.alphat)};
 }
 
 /// The residual aligning moment's Dr, Br and Cr (calculateMz0), with the turn-slip factors ζ.
