@@ -85,7 +85,20 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
   T mux = T(0);
   T kxk = T(0);
   const Fx0Args<T> x0 = fx0_args(p, in, b, options, mux, kxk);
-  Fy0Result<T> y0 = fy0_args(p, in, b, options, b.gamma_star, options.use_turn_slip);
+  // Kyα's load curve at γ* and, where Mz needs Fy0 at γ = 0 (combined, MF 6.x), at γ = 0: side
+  // by side.
+  const bool mf5x = is_mf5x(p);
+  const bool with_y00 = options.combined && !mf5x;
+  TwoOf<T> kya_load{T(0), T(0)};
+  if (with_y00) {
+    const TwoOf<T> at =
+        mf_atan_two(kya_load_arg(p, in, b, b.gamma_star), kya_load_arg(p, in, b, T(0)));
+    kya_load = mf_sin_two(p.pky4 * at.first, p.pky4 * at.second);
+  } else {
+    kya_load.first = mf_sin(p.pky4 * mf_atan(kya_load_arg(p, in, b, b.gamma_star)));
+  }
+  Fy0Result<T> y0 =
+      fy0_args(p, in, b, options, b.gamma_star, options.use_turn_slip, kya_load.first);
 
   // Combined slip (or, with options.combined off, the pure-slip forces). The Magic Formula cores
   // of an evaluation are gathered first and evaluated together (mf_cores: float in passes of four
@@ -111,7 +124,6 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
   // calculateMz (combined): the equivalent slip angles and the cores of the trail, Gxa (two) and
   // (MF 6.x) Fy0 at γ = 0 for Fy' (turn slip as in the main evaluation; MFeval evaluates Gyk again
   // at γ = 0 but with the original γ* (its starVar), which is the same Gyk).
-  const bool mf5x = is_mf5x(p);
   MzEquivalentSlip<T> eq{T(0), T(0)};
   CombinedArgs<T> gxa_a{};
   Fy0Result<T> y00{};
@@ -124,8 +136,8 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
     lane_trail = cores.add(tr.ct, tr.bt * eq.alphat_eq, tr.et, true);
     lane_gxa = cores.add(gxa_a.c, gxa_a.s0, gxa_a.e, true);
     static_cast<void>(cores.add(gxa_a.c, gxa_a.s1, gxa_a.e, true));
-    if (!mf5x) {
-      y00 = fy0_args(p, in, b, options, T(0), options.use_turn_slip);
+    if (with_y00) {
+      y00 = fy0_args(p, in, b, options, T(0), options.use_turn_slip, kya_load.second);
       lane_fy00 = cores.add(y00.cy, y00.ba, y00.ey, false);
     }
   }

@@ -69,11 +69,23 @@ T fx0_finish(const Prepared<T>& in, const Fx0Args<T>& a, const T& core) {
   return if_else(in.vx < T(0), -f, f);
 }
 
-/// calculateFy0 up to its core (everything but fy0), with the given γ (and γ*) and turn slip switch
-/// (Mz evaluates it again at γ = 0).
+/// The argument of Kyα's load curve sin(pky4·atan(x)) at γ*. Always inlined: GCC's flatten left
+/// this small function out of line in the lane batches' AVX2/AVX-512 clones, called with the
+/// baseline ABI for its eight- and sixteen-lane vectors (a crash).
+template <typename T, typename P>
+[[gnu::always_inline]] inline T kya_load_arg(const MfParameters<P>& p, const Prepared<T>& in,
+                                             const Basic<T>& b, const T& gamma_star) {
+  const T gs2 = gamma_star * gamma_star;
+  return (in.fz / b.fz0_prime) / ((p.pky2 + p.pky5 * gs2) * (T(1) + p.ppy2 * b.dpi));
+}
+
+/// calculateFy0 up to its core (everything but fy0), with the given γ (and γ*), turn slip switch
+/// and Kyα's load curve at that γ* (`kya_load`: sin(pky4·atan(kya_load_arg))). Mz evaluates it
+/// again at γ = 0; the evaluation computes both load curves side by side (mf_sin_two).
 template <typename T, typename P>
 Fy0Result<T> fy0_args(const MfParameters<P>& p, const Prepared<T>& in, const Basic<T>& b,
-                      const MfOptions& options, const T& gamma_star, bool turn_slip) {
+                      const MfOptions& options, const T& gamma_star, bool turn_slip,
+                      const T& kya_load) {
   Fy0Result<T> r;
   const T dfz = b.dfz;
   const T dpi = b.dpi;
@@ -96,9 +108,7 @@ Fy0Result<T> fy0_args(const MfParameters<P>& p, const Prepared<T>& in, const Bas
 
   const T gs2 = gamma_star * gamma_star;
   r.kya = p.pky1 * fz0_prime * (T(1) + p.ppy1 * dpi) * (T(1) - p.pky3 * abs(gamma_star)) *
-          mf_sin(p.pky4 *
-                 mf_atan((fz / fz0_prime) / ((p.pky2 + p.pky5 * gs2) * (T(1) + p.ppy2 * dpi)))) *
-          zeta3 * p.lky;
+          kya_load * zeta3 * p.lky;
   const T svyg = fz * (p.pvy3 + p.pvy4 * dfz) * gamma_star * p.lkyc * b.lmuy_prime * zeta2;
   if (mf5x) {
     const T kya0 =
@@ -164,7 +174,8 @@ void fy0_finish(const Prepared<T>& in, const MfOptions& options, const T& core, 
 template <typename T, typename P>
 Fy0Result<T> fy0(const MfParameters<P>& p, const Prepared<T>& in, const Basic<T>& b,
                  const MfOptions& options, const T& gamma_star, bool turn_slip) {
-  Fy0Result<T> r = fy0_args(p, in, b, options, gamma_star, turn_slip);
+  Fy0Result<T> r = fy0_args(p, in, b, options, gamma_star, turn_slip,
+                            mf_sin(p.pky4 * mf_atan(kya_load_arg(p, in, b, gamma_star))));
   fy0_finish(in, options, mf_sin(r.cy * mf_atan(r.ba - r.ey * (r.ba - mf_atan(r.ba)))), r);
   return r;
 }

@@ -342,6 +342,20 @@ detail::TwoOf<Lanes<N>> mf_pow_two(const Lanes<N>& x, const Lanes<N>& y, const L
   }
 }
 template <int N>
+detail::TwoOf<Lanes<N>> mf_sin_two(const Lanes<N>& a, const Lanes<N>& b) {
+  if constexpr (N == 4 && kTwoInOne) {
+    const FloatVec<8> r = detail::fast::sin_cos_lanes(
+        __builtin_shufflevector(a.v, b.v, 0, 1, 2, 3, 4, 5, 6, 7), IntVec<8>{});
+    detail::TwoOf<Lanes<4>> t{Lanes<4>(__builtin_shufflevector(r, r, 0, 1, 2, 3)),
+                              Lanes<4>(__builtin_shufflevector(r, r, 4, 5, 6, 7))};
+    trig_wide_lanes(a, t.first, [](float x) { return std::sin(x); });
+    trig_wide_lanes(b, t.second, [](float x) { return std::sin(x); });
+    return t;
+  } else {
+    return {mf_sin(a), mf_sin(b)};
+  }
+}
+template <int N>
 detail::TwoOf<Lanes<N>> mf_cos_sin(const Lanes<N>& a, const Lanes<N>& b) {
   if constexpr (N == 4 && kTwoInOne) {
     const IntVec<8> turns = {1, 1, 1, 1, 0, 0, 0, 0};

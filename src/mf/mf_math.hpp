@@ -173,6 +173,10 @@ template <typename T>
 TwoOf<T> mf_pow_two(const T& x, const T& y, const T& u, const T& v) {
   return {mf_pow(x, y), mf_pow(u, v)};
 }
+template <typename T>
+TwoOf<T> mf_sin_two(const T& a, const T& b) {
+  return {mf_sin(a), mf_sin(b)};
+}
 /// cos a and sin b.
 template <typename T>
 TwoOf<T> mf_cos_sin(const T& a, const T& b) {
