@@ -251,16 +251,21 @@ Lanes<N> pow(const Lanes<N>& x, const Lanes<N>& y) {
 }
 
 // The Magic Formula's elementary functions (found by ADL from mf_evaluate.hpp).
+/// The lanes of x beyond the trig reduction's range, redone in r with libm's f.
+template <int N, typename F>
+void trig_wide_lanes(const Lanes<N>& x, Lanes<N>& r, F f) {
+  const Mask<N> out_of_range = !(abs(x) <= Lanes<N>(detail::fast::kTrigMax));
+  if (any_lane(out_of_range)) {
+    for (int i = 0; i < N; ++i)
+      if (out_of_range[i]) r.v[i] = f(x.v[i]);
+  }
+}
 /// sin (cosine false) or cos of lanes; lanes beyond the reduction's range go through libm.
 template <int N>
 Lanes<N> sin_or_cos(const Lanes<N>& y, bool cosine) {
   const IntVec<N> turns = IntVec<N>{} + (cosine ? 1 : 0);
   Lanes<N> r(detail::fast::sin_cos_lanes(y.v, turns));
-  const Mask<N> out_of_range = !(abs(y) <= Lanes<N>(detail::fast::kTrigMax));
-  if (any_lane(out_of_range)) {
-    for (int i = 0; i < N; ++i)
-      if (out_of_range[i]) r.v[i] = cosine ? std::cos(y.v[i]) : std::sin(y.v[i]);
-  }
+  trig_wide_lanes(y, r, [=](float a) { return cosine ? std::cos(a) : std::sin(a); });
   return r;
 }
 template <int N>
@@ -278,11 +283,7 @@ Lanes<N> mf_atan(const Lanes<N>& x) {
 template <int N>
 Lanes<N> mf_tan(const Lanes<N>& x) {
   Lanes<N> t(detail::fast::tan_lanes(x.v));
-  const Mask<N> out_of_range = !(abs(x) <= Lanes<N>(detail::fast::kTrigMax));
-  if (any_lane(out_of_range)) {
-    for (int i = 0; i < N; ++i)
-      if (out_of_range[i]) t.v[i] = std::tan(x.v[i]);
-  }
+  trig_wide_lanes(x, t, [](float a) { return std::tan(a); });
   return t;
 }
 // Two independent evaluations of a function (mf_math.hpp's *_two): on x86-64, four lanes of each
@@ -293,16 +294,6 @@ inline constexpr bool kTwoInOne = true;
 #else
 inline constexpr bool kTwoInOne = false;
 #endif
-
-/// Lanes beyond the trig reduction's range, redone with libm (as mf_sin, mf_cos and mf_tan do).
-template <typename F>
-void trig_wide_lanes(const Lanes<4>& x, Lanes<4>& r, F f) {
-  const Mask<4> out_of_range = !(abs(x) <= Lanes<4>(detail::fast::kTrigMax));
-  if (any_lane(out_of_range)) {
-    for (int i = 0; i < 4; ++i)
-      if (out_of_range[i]) r.v[i] = f(x.v[i]);
-  }
-}
 
 template <int N>
 detail::TwoOf<Lanes<N>> mf_atan_two(const Lanes<N>& a, const Lanes<N>& b) {
@@ -341,34 +332,33 @@ detail::TwoOf<Lanes<N>> mf_pow_two(const Lanes<N>& x, const Lanes<N>& y, const L
     return {pow(x, y), pow(u, v)};
   }
 }
+/// sin or cos of each of two sets of lanes (cosine_a, cosine_b: which), side by side.
 template <int N>
-detail::TwoOf<Lanes<N>> mf_sin_two(const Lanes<N>& a, const Lanes<N>& b) {
+detail::TwoOf<Lanes<N>> sin_or_cos_two(const Lanes<N>& a, bool cosine_a, const Lanes<N>& b,
+                                       bool cosine_b) {
   if constexpr (N == 4 && kTwoInOne) {
-    const FloatVec<8> r = detail::fast::sin_cos_lanes(
-        __builtin_shufflevector(a.v, b.v, 0, 1, 2, 3, 4, 5, 6, 7), IntVec<8>{});
-    detail::TwoOf<Lanes<4>> t{Lanes<4>(__builtin_shufflevector(r, r, 0, 1, 2, 3)),
-                              Lanes<4>(__builtin_shufflevector(r, r, 4, 5, 6, 7))};
-    trig_wide_lanes(a, t.first, [](float x) { return std::sin(x); });
-    trig_wide_lanes(b, t.second, [](float x) { return std::sin(x); });
-    return t;
-  } else {
-    return {mf_sin(a), mf_sin(b)};
-  }
-}
-template <int N>
-detail::TwoOf<Lanes<N>> mf_cos_sin(const Lanes<N>& a, const Lanes<N>& b) {
-  if constexpr (N == 4 && kTwoInOne) {
-    const IntVec<8> turns = {1, 1, 1, 1, 0, 0, 0, 0};
+    const int ta = cosine_a ? 1 : 0;
+    const int tb = cosine_b ? 1 : 0;
+    const IntVec<8> turns = {ta, ta, ta, ta, tb, tb, tb, tb};
     const FloatVec<8> r = detail::fast::sin_cos_lanes(
         __builtin_shufflevector(a.v, b.v, 0, 1, 2, 3, 4, 5, 6, 7), turns);
     detail::TwoOf<Lanes<4>> t{Lanes<4>(__builtin_shufflevector(r, r, 0, 1, 2, 3)),
                               Lanes<4>(__builtin_shufflevector(r, r, 4, 5, 6, 7))};
-    trig_wide_lanes(a, t.first, [](float x) { return std::cos(x); });
-    trig_wide_lanes(b, t.second, [](float x) { return std::sin(x); });
+    trig_wide_lanes(a, t.first, [=](float x) { return cosine_a ? std::cos(x) : std::sin(x); });
+    trig_wide_lanes(b, t.second, [=](float x) { return cosine_b ? std::cos(x) : std::sin(x); });
     return t;
   } else {
-    return {mf_cos(a), mf_sin(b)};
+    return {sin_or_cos(a, cosine_a), sin_or_cos(b, cosine_b)};
   }
+}
+template <int N>
+detail::TwoOf<Lanes<N>> mf_sin_two(const Lanes<N>& a, const Lanes<N>& b) {
+  return sin_or_cos_two(a, false, b, false);
+}
+/// cos a and sin b.
+template <int N>
+detail::TwoOf<Lanes<N>> mf_cos_sin(const Lanes<N>& a, const Lanes<N>& b) {
+  return sin_or_cos_two(a, true, b, false);
 }
 
 /// Four-lane cores two at a time: cores 2i and 2i+1 side by side in eight lanes, `Pairs` such
