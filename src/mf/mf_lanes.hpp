@@ -425,8 +425,7 @@ void mf_core_pairs(const detail::Cores<Lanes<4>>& in, Lanes<4> (&out)[detail::kM
 template <int N>
 void mf_cores(const detail::Cores<Lanes<N>>& in, Lanes<N> (&out)[detail::kMaxCores]) {
   using W = FloatVec<N>;
-#if defined(__x86_64__)
-  if constexpr (N == 4) {
+  if constexpr (N == 4 && kTwoInOne) {
     if (in.count == detail::kMaxCores) {
       mf_core_pairs<4, true>(in, out);
     } else if (in.count <= 4) {
@@ -436,7 +435,6 @@ void mf_cores(const detail::Cores<Lanes<N>>& in, Lanes<N> (&out)[detail::kMaxCor
     }
     return;
   }
-#endif
   for (int g = 0; g < detail::kMaxCores; g += 4) {
     if (g >= in.count) break;
     W y[4];
