@@ -28,6 +28,7 @@
 #include <bit>
 #include <cmath>
 #include <concepts>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <utility>
@@ -113,10 +114,22 @@ struct Lanes {
   friend Mask<N> operator>=(const Lanes& a, const Lanes& b) { return {a.v >= b.v}; }
 
  private:
-  static FloatVec<N> broadcast(float x) {
-    FloatVec<N> r;
-    for (int i = 0; i < N; ++i) r[i] = x;
-    return r;
+  // x in every lane. Four lanes: x in lane 0 shuffled into all (one vbroadcastss / shufps / dup),
+  // where the loop of element stores compiled to a chain of four inserts per broadcast in
+  // evaluate_four's AVX2 clone (about 6 % of its instructions). Eight and sixteen lanes keep the
+  // loop, which compiles to one vbroadcastss there: the shuffle left eight lanes with an insert
+  // and a move per broadcast in the AVX2 batch, and GCC's inlining of the batch's AVX2 clone
+  // then differed (an out-of-line call, see mf_math.hpp's fast functions); at sixteen GCC 12
+  // fails with an internal compiler error on a select in loaded_radius62's AVX-512 code.
+  [[gnu::always_inline]] static FloatVec<N> broadcast(float x) {
+    if constexpr (N == 4) {
+      const FloatVec<N> first = {x};
+      return __builtin_shufflevector(first, first, 0, 0, 0, 0);
+    } else {
+      FloatVec<N> r;
+      for (int i = 0; i < N; ++i) r[i] = x;
+      return r;
+    }
   }
 };
 using F4 = Lanes<4>;
@@ -251,13 +264,30 @@ Lanes<N> pow(const Lanes<N>& x, const Lanes<N>& y) {
 }
 
 // The Magic Formula's elementary functions (found by ADL from mf_evaluate.hpp).
-/// The lanes of x beyond the trig reduction's range, redone in r with libm's f.
+/// r[i] = f(x[i]) where which[i]: the rare redo of trig_wide_lanes, out of line and given plain
+/// arrays, so that a wide clone's call to it (compiled for the baseline target) passes pointers
+/// only, never a vector by value.
+template <typename F>
+[[gnu::noinline, gnu::cold]] void redo_lanes(int n, const float* x, const std::int32_t* which,
+                                             float* r, F f) {
+  for (int i = 0; i < n; ++i)
+    if (which[i] != 0) r[i] = f(x[i]);
+}
+/// The lanes of x beyond the trig reduction's range, redone in r with libm's f. The range check
+/// inline: out of line it was a call (and SSE code) for every tan of the AVX2 batch.
 template <int N, typename F>
-void trig_wide_lanes(const Lanes<N>& x, Lanes<N>& r, F f) {
+[[gnu::always_inline]] inline void trig_wide_lanes(const Lanes<N>& x, Lanes<N>& r, F f) {
   const Mask<N> out_of_range = !(abs(x) <= Lanes<N>(detail::fast::kTrigMax));
-  if (any_lane(out_of_range)) {
-    for (int i = 0; i < N; ++i)
-      if (out_of_range[i]) r.v[i] = f(x.v[i]);
+  if (any_lane(out_of_range)) [[unlikely]] {
+    constexpr auto kN = static_cast<std::size_t>(N);
+    float xs[kN];
+    float rs[kN];
+    std::int32_t which[kN];
+    std::memcpy(xs, &x.v, sizeof(xs));
+    std::memcpy(rs, &r.v, sizeof(rs));
+    std::memcpy(which, &out_of_range.m, sizeof(which));
+    redo_lanes(N, xs, which, rs, f);
+    std::memcpy(&r.v, rs, sizeof(rs));
   }
 }
 /// sin (cosine false) or cos of lanes; lanes beyond the reduction's range go through libm.

@@ -91,12 +91,16 @@ struct Reduced {
 };
 
 /// k = rint(x·2/π) and r = x − k·π/2, for a float or four lanes (V).
+// The functions of float vectors (V) here are always inlined: an out-of-line copy is compiled for
+// the baseline target, and a wider clone (AVX2, AVX-512) calling it passes its 8- or 16-lane
+// vectors by the baseline's ABI (GCC: -Wpsabi), slowly at best (an out-of-line atan_lanes made
+// the 8-lane batch a third slower) and with a crash where the two disagree.
 template <typename V>
-V quarter_turns_of(V x) {
+[[gnu::always_inline]] inline V quarter_turns_of(V x) {
   return (x * 0.636619772367581f + 12582912.0f) - 12582912.0f;
 }
 template <typename V>
-V reduce_by(V x, V k) {
+[[gnu::always_inline]] inline V reduce_by(V x, V k) {
   return ((x - k * 1.5703125f) - k * 4.837512969970703125e-4f) - k * 7.54978995489188e-8f;
 }
 
@@ -108,12 +112,12 @@ inline Reduced reduce_pio2(float x) {
 /// sin and cos of the reduced argument r ∈ [−π/4, π/4] (Cephes' minimax polynomials, a few
 /// ulp), for a float or four lanes (V).
 template <typename V>
-V sin_poly(V r) {
+[[gnu::always_inline]] inline V sin_poly(V r) {
   const V z = r * r;
   return r + r * z * (-1.6666654611e-1f + z * (8.3321608736e-3f + z * -1.9515295891e-4f));
 }
 template <typename V>
-V cos_poly(V r) {
+[[gnu::always_inline]] inline V cos_poly(V r) {
   const V z = r * r;
   return 1.0f - 0.5f * z +
          z * z * (4.166664568298827e-2f + z * (-1.388731625493765e-3f + z * 2.443315711809948e-5f));
@@ -269,7 +273,7 @@ using IntOf = typename IntVectorOf<V>::type;
 
 /// fast::atan on lanes (same reduction and polynomial, selects instead of branches).
 template <typename V>
-V atan_lanes(V x) {
+[[gnu::always_inline]] inline V atan_lanes(V x) {
   using I = IntOf<V>;
   const I sign_bit = I{} + static_cast<std::int32_t>(0x80000000u);
   const I bits = std::bit_cast<I>(x);
@@ -292,7 +296,7 @@ V atan_lanes(V x) {
 /// sin (quarter_turns 0) or cos (quarter_turns 1) of lanes with |y| ≤ kTrigMax: the reduction
 /// and polynomials of fast::tan, the quadrant advanced by a quarter turn for cos.
 template <typename V>
-V sin_cos_lanes(V y, IntOf<V> quarter_turns) {
+[[gnu::always_inline]] inline V sin_cos_lanes(V y, IntOf<V> quarter_turns) {
   using I = IntOf<V>;
   const V k = quarter_turns_of(y);
   const V r = reduce_by(y, k);
@@ -303,7 +307,7 @@ V sin_cos_lanes(V y, IntOf<V> quarter_turns) {
 
 /// fast::tan on lanes with |y| ≤ kTrigMax (same reduction and polynomials).
 template <typename V>
-V tan_lanes(V y) {
+[[gnu::always_inline]] inline V tan_lanes(V y) {
   const V k = quarter_turns_of(y);
   const V r = reduce_by(y, k);
   const V s = sin_poly(r);
