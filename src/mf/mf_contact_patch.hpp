@@ -14,19 +14,42 @@
 
 namespace tread::mf::detail {
 
-/// calculateContactPatch: out.contact_length_m and out.contact_width_m.
+/// The load, limited where the tyre bottoms on the rim, and (MF 6.x) the relative deflection
+/// Fz/(Cz·R0) of the contact patch.
+template <typename T>
+struct ContactLoad {
+  T fz, relative;
+};
 template <typename T, typename P>
-[[gnu::always_inline]] inline void contact_patch(const MfParameters<P>& p, const Prepared<T>& in,
-                                                 const Basic<T>& b, MfOutput<T>& out) {
+[[gnu::always_inline]] inline ContactLoad<T> contact_load(const MfParameters<P>& p,
+                                                          const Prepared<T>& in,
+                                                          const Basic<T>& b) {
   const T r0 = p.unloaded_radius_m;
-  const T fz0 = p.fnomin_n;
-  const T dpi = b.dpi;
-  const T ncz = p.vertical_stiffness_npm * (T(1) + p.pfz1 * dpi);
+  const T ncz = p.vertical_stiffness_npm * (T(1) + p.pfz1 * b.dpi);
   T fz = in.ufz;
   const T rl_approx = r0 - fz / ncz;
   fz = if_else(rl_approx - (p.rim_radius_m + p.bottom_offst_m) < T(0),
                (r0 - p.rim_radius_m - p.bottom_offst_m) * ncz, fz);
   fz = max_of(fz, T(0));
+  return {fz, fz / (ncz * r0)};
+}
+
+/// The power of the relative deflection the MF 6.x width takes: its cube root.
+template <typename T>
+T contact_width_power() {
+  return T(1) / T(3);
+}
+
+/// calculateContactPatch: out.contact_length_m and out.contact_width_m. MF 6.x: `cube_root` is
+/// the relative deflection's cube root where the caller has it (PowBeside), else null.
+template <typename T, typename P>
+[[gnu::always_inline]] inline void contact_patch(const MfParameters<P>& p, const Prepared<T>& in,
+                                                 const Basic<T>& b, MfOutput<T>& out,
+                                                 const T* cube_root_given = nullptr) {
+  const T r0 = p.unloaded_radius_m;
+  const T fz0 = p.fnomin_n;
+  const ContactLoad<T> load = contact_load(p, in, b);
+  const T fz = load.fz;
   if (is_mf5x(p)) {
     P q_a1 = p.q_a1;  // a property of the tyre: the same for every lane
     P q_a2 = p.q_a2;
@@ -39,9 +62,11 @@ template <typename T, typename P>
     out.contact_length_m = T(2) * r0 * (q_a2 * (fz / fz0) + q_a1 * sqrt(fz / fz0));
     out.contact_width_m = p.width_m;
   } else {
-    const T f = fz / (ncz * r0);
+    const T f = load.relative;
     out.contact_length_m = T(2) * r0 * (p.q_ra2 * f + p.q_ra1 * sqrt(f));
-    const T cube_root = if_else(f > T(0), mf_pow(f, T(1) / T(3)), T(0));
+    const T cube_root = if_else(
+        f > T(0),
+        cube_root_given != nullptr ? *cube_root_given : mf_pow(f, contact_width_power<T>()), T(0));
     out.contact_width_m = T(2) * p.width_m * (p.q_rb2 * f + p.q_rb1 * cube_root);
   }
 }

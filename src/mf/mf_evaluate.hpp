@@ -159,11 +159,20 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
   // about 1 % slower here, 13 ns in float on the AVX-512 VM).
   const bool solve62 = options.extras && p.fit_type != FitType::mf61;
   LoadedRadius62<T> solved{T(0), T(0), 0, false};
+  // MF 6.2's contact patch width takes a cube root (a power): where two powers cost about one
+  // (kTwoForOne), beside the solve's seeded power.
+  PowBeside<T> width_power;
+  const bool width_beside =
+      kTwoForOne<T> && p.fit_type == FitType::mf62 && !options.extras_loaded_radius_only;
   if constexpr (is_lanes<T>) {
     if (solve62) {
       const auto lifted = !(in.ufz > T(0));
-      solved =
-          solve_loaded_radius62(p, in, b, if_else(lifted, T(0), fx), if_else(lifted, T(0), fy));
+      if (width_beside) {
+        width_power.x = contact_load(p, in, b).relative;
+        width_power.y = contact_width_power<T>();
+      }
+      solved = solve_loaded_radius62(p, in, b, if_else(lifted, T(0), fx), if_else(lifted, T(0), fy),
+                                     width_beside ? &width_power : nullptr);
     }
   }
 
@@ -212,7 +221,7 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
     }
     loaded_radius(p, in, b, solved, out);
     if (!options.extras_loaded_radius_only) {
-      contact_patch(p, in, b, out);
+      contact_patch(p, in, b, out, width_power.done ? &width_power.value : nullptr);
       relaxation(p, in, b, kxk, y0.kya, out);
     }
   }

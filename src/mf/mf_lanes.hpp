@@ -44,6 +44,12 @@
 
 namespace tread::mf::lanes {
 
+// The lane functions below return lanes by value and are always inlined (as are the fast functions
+// of mf_math.hpp): an out-of-line copy is compiled for the baseline target, and a wide clone (AVX2,
+// AVX-512) calling it would pass 8 or 16 lanes by the baseline's ABI (tests/mf/
+// wide_clone_calls.sh). GCC's flatten alone left some out of line (mf_tan, atan_lanes,
+// trig_wide_lanes) as unrelated code changed.
+
 /// GCC vector types of N floats and N int32s.
 template <int N>
 using FloatVec = typename detail::fast::VectorOf<N>::F;
@@ -72,7 +78,7 @@ struct Mask {
 using Mask4 = Mask<4>;
 
 template <int N>
-bool any_lane(const Mask<N>& a) {
+[[gnu::always_inline]] inline bool any_lane(const Mask<N>& a) {
   if constexpr (N == 4) {
 #if defined(__SSE2__)
     return _mm_movemask_ps(__m128(a.m)) != 0;
@@ -137,21 +143,22 @@ using F8 = Lanes<8>;
 using F16 = Lanes<16>;
 
 template <int N>
-Lanes<N> if_else(const Mask<N>& m, const Lanes<N>& a, const Lanes<N>& b) {
+[[gnu::always_inline]] inline Lanes<N> if_else(const Mask<N>& m, const Lanes<N>& a,
+                                               const Lanes<N>& b) {
   return Lanes<N>(m.m ? a.v : b.v);
 }
 
 /// The evaluation's max_of/min_of (a < b ? b : a and b < a ? b : a) as single instructions where
 /// the target has them (x86 maxps(b, a) is exactly a < b ? b : a, NaN included).
 template <int N>
-Lanes<N> max_of(const Lanes<N>& a, const Lanes<N>& b) {
+[[gnu::always_inline]] inline Lanes<N> max_of(const Lanes<N>& a, const Lanes<N>& b) {
 #if defined(__SSE2__)
   if constexpr (N == 4) return Lanes<N>(V(_mm_max_ps(__m128(b.v), __m128(a.v))));
 #endif
   return Lanes<N>(a.v < b.v ? b.v : a.v);
 }
 template <int N>
-Lanes<N> min_of(const Lanes<N>& a, const Lanes<N>& b) {
+[[gnu::always_inline]] inline Lanes<N> min_of(const Lanes<N>& a, const Lanes<N>& b) {
 #if defined(__SSE2__)
   if constexpr (N == 4) return Lanes<N>(V(_mm_min_ps(__m128(b.v), __m128(a.v))));
 #endif
@@ -159,13 +166,13 @@ Lanes<N> min_of(const Lanes<N>& a, const Lanes<N>& b) {
 }
 
 template <int N>
-Lanes<N> abs(const Lanes<N>& x) {
+[[gnu::always_inline]] inline Lanes<N> abs(const Lanes<N>& x) {
   return Lanes<N>(
       std::bit_cast<FloatVec<N>>(IntVec<N>(std::bit_cast<IntVec<N>>(x.v) & 0x7fffffff)));
 }
 
 template <int N>
-Lanes<N> sqrt(const Lanes<N>& x) {
+[[gnu::always_inline]] inline Lanes<N> sqrt(const Lanes<N>& x) {
   if constexpr (N == 4) {
 #if defined(__SSE2__)
     return Lanes<N>(V(_mm_sqrt_ps(__m128(x.v))));
@@ -187,14 +194,14 @@ Lanes<N> sqrt(const Lanes<N>& x) {
 
 /// libm lane by lane (the rare paths).
 template <int N, typename F>
-Lanes<N> per_lane(const Lanes<N>& x, F f) {
+[[gnu::always_inline]] inline Lanes<N> per_lane(const Lanes<N>& x, F f) {
   Lanes<N> r;
   for (int i = 0; i < N; ++i) r.v[i] = f(x.v[i]);
   return r;
 }
 
 template <int N>
-Lanes<N> acos(const Lanes<N>& x) {
+[[gnu::always_inline]] inline Lanes<N> acos(const Lanes<N>& x) {
   return per_lane(x, [](float a) { return std::acos(a); });
 }
 
@@ -203,7 +210,7 @@ Lanes<N> acos(const Lanes<N>& x) {
 /// polynomials here and in log are evaluated by Estrin's scheme: pow lies on the dependent chain
 /// of MF 6.2's Rl solve, and Horner's chain of fused steps is about twice as long.
 template <int N>
-Lanes<N> exp(const Lanes<N>& x) {
+[[gnu::always_inline]] inline Lanes<N> exp(const Lanes<N>& x) {
   using W = FloatVec<N>;
   using WI = IntVec<N>;
   W a = x.v;
@@ -229,7 +236,7 @@ Lanes<N> exp(const Lanes<N>& x) {
 /// Natural logarithm for x > 0 (denormals included): Cephes' logf polynomial on the mantissa in
 /// [√½, √2). x ≤ 0, inf and NaN give unspecified finite values or NaN: callers select them away.
 template <int N>
-Lanes<N> log(const Lanes<N>& x) {
+[[gnu::always_inline]] inline Lanes<N> log(const Lanes<N>& x) {
   using W = FloatVec<N>;
   using WI = IntVec<N>;
   W a = x.v;
@@ -259,7 +266,7 @@ Lanes<N> log(const Lanes<N>& x) {
 
 /// x^y for x > 0 as exp(y·log x), like the scalar float path.
 template <int N>
-Lanes<N> pow(const Lanes<N>& x, const Lanes<N>& y) {
+[[gnu::always_inline]] inline Lanes<N> pow(const Lanes<N>& x, const Lanes<N>& y) {
   return exp(y * log(x));
 }
 
@@ -292,26 +299,26 @@ template <int N, typename F>
 }
 /// sin (cosine false) or cos of lanes; lanes beyond the reduction's range go through libm.
 template <int N>
-Lanes<N> sin_or_cos(const Lanes<N>& y, bool cosine) {
+[[gnu::always_inline]] inline Lanes<N> sin_or_cos(const Lanes<N>& y, bool cosine) {
   const IntVec<N> turns = IntVec<N>{} + (cosine ? 1 : 0);
   Lanes<N> r(detail::fast::sin_cos_lanes(y.v, turns));
   trig_wide_lanes(y, r, [=](float a) { return cosine ? std::cos(a) : std::sin(a); });
   return r;
 }
 template <int N>
-Lanes<N> mf_sin(const Lanes<N>& x) {
+[[gnu::always_inline]] inline Lanes<N> mf_sin(const Lanes<N>& x) {
   return sin_or_cos(x, false);
 }
 template <int N>
-Lanes<N> mf_cos(const Lanes<N>& x) {
+[[gnu::always_inline]] inline Lanes<N> mf_cos(const Lanes<N>& x) {
   return sin_or_cos(x, true);
 }
 template <int N>
-Lanes<N> mf_atan(const Lanes<N>& x) {
+[[gnu::always_inline]] inline Lanes<N> mf_atan(const Lanes<N>& x) {
   return Lanes<N>(detail::fast::atan_lanes(x.v));
 }
 template <int N>
-Lanes<N> mf_tan(const Lanes<N>& x) {
+[[gnu::always_inline]] inline Lanes<N> mf_tan(const Lanes<N>& x) {
   Lanes<N> t(detail::fast::tan_lanes(x.v));
   trig_wide_lanes(x, t, [](float a) { return std::tan(a); });
   return t;
@@ -325,8 +332,16 @@ inline constexpr bool kTwoInOne = true;
 inline constexpr bool kTwoInOne = false;
 #endif
 
+}  // namespace tread::mf::lanes
+namespace tread::mf::detail {
+template <>
+inline constexpr bool kTwoForOne<lanes::Lanes<4>> = lanes::kTwoInOne;
+}  // namespace tread::mf::detail
+namespace tread::mf::lanes {
+
 template <int N>
-detail::TwoOf<Lanes<N>> mf_atan_two(const Lanes<N>& a, const Lanes<N>& b) {
+[[gnu::always_inline]] inline detail::TwoOf<Lanes<N>> mf_atan_two(const Lanes<N>& a,
+                                                                  const Lanes<N>& b) {
   if constexpr (N == 4 && kTwoInOne) {
     const FloatVec<8> r =
         detail::fast::atan_lanes(__builtin_shufflevector(a.v, b.v, 0, 1, 2, 3, 4, 5, 6, 7));
@@ -337,7 +352,8 @@ detail::TwoOf<Lanes<N>> mf_atan_two(const Lanes<N>& a, const Lanes<N>& b) {
   }
 }
 template <int N>
-detail::TwoOf<Lanes<N>> mf_tan_two(const Lanes<N>& a, const Lanes<N>& b) {
+[[gnu::always_inline]] inline detail::TwoOf<Lanes<N>> mf_tan_two(const Lanes<N>& a,
+                                                                 const Lanes<N>& b) {
   if constexpr (N == 4 && kTwoInOne) {
     const FloatVec<8> r =
         detail::fast::tan_lanes(__builtin_shufflevector(a.v, b.v, 0, 1, 2, 3, 4, 5, 6, 7));
@@ -351,8 +367,10 @@ detail::TwoOf<Lanes<N>> mf_tan_two(const Lanes<N>& a, const Lanes<N>& b) {
   }
 }
 template <int N>
-detail::TwoOf<Lanes<N>> mf_pow_two(const Lanes<N>& x, const Lanes<N>& y, const Lanes<N>& u,
-                                   const Lanes<N>& v) {
+[[gnu::always_inline]] inline detail::TwoOf<Lanes<N>> mf_pow_two(const Lanes<N>& x,
+                                                                 const Lanes<N>& y,
+                                                                 const Lanes<N>& u,
+                                                                 const Lanes<N>& v) {
   if constexpr (N == 4 && kTwoInOne) {
     const Lanes<8> r = pow(Lanes<8>(__builtin_shufflevector(x.v, u.v, 0, 1, 2, 3, 4, 5, 6, 7)),
                            Lanes<8>(__builtin_shufflevector(y.v, v.v, 0, 1, 2, 3, 4, 5, 6, 7)));
@@ -364,8 +382,10 @@ detail::TwoOf<Lanes<N>> mf_pow_two(const Lanes<N>& x, const Lanes<N>& y, const L
 }
 /// sin or cos of each of two sets of lanes (cosine_a, cosine_b: which), side by side.
 template <int N>
-detail::TwoOf<Lanes<N>> sin_or_cos_two(const Lanes<N>& a, bool cosine_a, const Lanes<N>& b,
-                                       bool cosine_b) {
+[[gnu::always_inline]] inline detail::TwoOf<Lanes<N>> sin_or_cos_two(const Lanes<N>& a,
+                                                                     bool cosine_a,
+                                                                     const Lanes<N>& b,
+                                                                     bool cosine_b) {
   if constexpr (N == 4 && kTwoInOne) {
     const int ta = cosine_a ? 1 : 0;
     const int tb = cosine_b ? 1 : 0;
@@ -382,12 +402,14 @@ detail::TwoOf<Lanes<N>> sin_or_cos_two(const Lanes<N>& a, bool cosine_a, const L
   }
 }
 template <int N>
-detail::TwoOf<Lanes<N>> mf_sin_two(const Lanes<N>& a, const Lanes<N>& b) {
+[[gnu::always_inline]] inline detail::TwoOf<Lanes<N>> mf_sin_two(const Lanes<N>& a,
+                                                                 const Lanes<N>& b) {
   return sin_or_cos_two(a, false, b, false);
 }
 /// cos a and sin b.
 template <int N>
-detail::TwoOf<Lanes<N>> mf_cos_sin(const Lanes<N>& a, const Lanes<N>& b) {
+[[gnu::always_inline]] inline detail::TwoOf<Lanes<N>> mf_cos_sin(const Lanes<N>& a,
+                                                                 const Lanes<N>& b) {
   return sin_or_cos_two(a, true, b, false);
 }
 
@@ -489,15 +511,15 @@ void mf_cores(const detail::Cores<Lanes<N>>& in, Lanes<N> (&out)[detail::kMaxCor
 
 /// cos(atan x) = 1/√(1+x²) (x² = inf gives the limit 0).
 template <int N>
-Lanes<N> cos_atan(const Lanes<N>& x) {
+[[gnu::always_inline]] inline Lanes<N> cos_atan(const Lanes<N>& x) {
   return Lanes<N>(1.0f) / sqrt(Lanes<N>(1.0f) + x * x);
 }
 template <int N>
-Lanes<N> mf_exp(const Lanes<N>& x) {
+[[gnu::always_inline]] inline Lanes<N> mf_exp(const Lanes<N>& x) {
   return exp(x);
 }
 template <int N>
-Lanes<N> mf_pow(const Lanes<N>& x, const Lanes<N>& y) {
+[[gnu::always_inline]] inline Lanes<N> mf_pow(const Lanes<N>& x, const Lanes<N>& y) {
   return pow(x, y);
 }
 

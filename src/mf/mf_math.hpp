@@ -164,6 +164,10 @@ template <typename T>
 struct TwoOf {
   T first, second;
 };
+/// Whether the two evaluations of a *_two function cost about one (the four-lane path on x86-64:
+/// mf_lanes.hpp), so that a value needed later may be computed beside another.
+template <typename T>
+inline constexpr bool kTwoForOne = false;
 template <typename T>
 TwoOf<T> mf_atan_two(const T& a, const T& b) {
   return {mf_atan(a), mf_atan(b)};

@@ -466,6 +466,16 @@ template <typename T, typename P>
   }
 }
 
+/// A power x^y another part of the evaluation needs, computed beside the solve's seeded power
+/// (mf_pow_two) where that one is computed: MF 6.2's contact patch width on four lanes, where the
+/// two cost about one. `done` where it was; else the caller computes it.
+template <typename T>
+struct PowBeside {
+  T x, y;
+  T value;
+  bool done = false;
+};
+
 template <typename T>
 struct LoadedRadius62 {
   T rl_m;
@@ -529,7 +539,8 @@ struct LoadedRadius62 {
 /// evaluates Rl = 0, finds Fz62 below Fz there and answers 0, not the hump's root
 /// (Mf62LoadedRadius.PressureFactorAtOrBelowZero counts these points).
 template <typename T, typename P>
-LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) {
+LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target,
+                                  PowBeside<T>* beside = nullptr) {
   constexpr int kNewtonSteps = 16;
   // Halley's step in double and on lanes, Newton's in float and fixed point (see above).
   constexpr bool kHalley = !std::is_same_v<T, float> && !is_fixed_point<T>;
@@ -599,7 +610,15 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
     if (!is_zero(c.q_fcy2) && any_lane(seeded)) {
       // x0 > 0 wherever seeded; pow's argument does not wait for the mask.
       const T xs = if_else(x0 > T(0), x0, T(1));
-      const T value = T(pow(xs, T(c.pow_q)));
+      T value;
+      if (beside != nullptr) {
+        const TwoOf<T> both = mf_pow_two(xs, T(c.pow_q), beside->x, beside->y);
+        value = both.first;
+        beside->value = both.second;
+        beside->done = true;
+      } else {
+        value = T(pow(xs, T(c.pow_q)));
+      }
       memo.base = if_else(seeded, xs, memo.base);
       memo.inv_base = if_else(seeded, T(1) / xs, memo.inv_base);
       memo.value = if_else(seeded, value, memo.value);
@@ -751,12 +770,12 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target) 
 /// solves for the load as given (MFeval 4.x's calculateRhoRl62 takes uFz, not the Fz limited to
 /// FZMAX that the forces see); MF 5.2 / PAC2002 for the limited load.
 template <typename T, typename P>
-[[gnu::always_inline]] inline LoadedRadius62<T> solve_loaded_radius62(const MfParameters<P>& p,
-                                                                      const Prepared<T>& in,
-                                                                      const Basic<T>& b,
-                                                                      const T& fx, const T& fy) {
+[[gnu::always_inline]] inline LoadedRadius62<T> solve_loaded_radius62(
+    const MfParameters<P>& p, const Prepared<T>& in, const Basic<T>& b, const T& fx, const T& fy,
+    PowBeside<T>* beside = nullptr) {
   const T fz_target = p.fit_type == FitType::mf62 ? in.ufz : in.fz;
-  return loaded_radius62(fz62_curve(p, in.gamma, in.omega, in.romega, b.dpi, fx, fy), fz_target);
+  return loaded_radius62(fz62_curve(p, in.gamma, in.omega, in.romega, b.dpi, fx, fy), fz_target,
+                         beside);
 }
 
 /// doExtras: Re, ω, and the loaded radius Rl, deflection ρ and vertical stiffness Cz, from the
