@@ -197,11 +197,18 @@ template <int N>
   }
 }
 
+/// The blocks of a batch, one after the other. The parameters and options are copied first: GCC
+/// cannot tell that the outputs' stores leave the caller's MfParameters alone (both hold floats),
+/// so it loaded the parameters again in each block and recomputed what depends on them only; of a
+/// local copy whose address does not escape, it keeps such values across blocks (callgrind, per
+/// 8-lane block: MF 6.1 4 407 → 4 300 instructions, MF 6.2 5 700 → 5 585).
 template <int N>
-[[gnu::always_inline]] inline void evaluate_blocks(const MfParameters<float>& params,
+[[gnu::always_inline]] inline void evaluate_blocks(const MfParameters<float>& caller_params,
                                                    std::span<const MfInput<float>> inputs,
-                                                   const MfOptions& options,
+                                                   const MfOptions& caller_options,
                                                    std::span<MfOutput<float>> outputs) {
+  const MfParameters<float> params = caller_params;
+  const MfOptions options = caller_options;
   const bool mirror = mirrored(options.side, params.tyre_side);
   const std::size_t n = std::min(inputs.size(), outputs.size());
   std::size_t i = 0;
