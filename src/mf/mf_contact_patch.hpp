@@ -41,14 +41,16 @@ T contact_width_power() {
 }
 
 /// calculateContactPatch: out.contact_length_m and out.contact_width_m. MF 6.x: `cube_root` is
-/// the relative deflection's cube root where the caller has it (PowBeside), else null.
+/// the relative deflection's cube root where the caller has it (PowBeside), else null; `load`
+/// contact_load's result where the caller has it, else null.
 template <typename T, typename P>
 [[gnu::always_inline]] inline void contact_patch(const MfParameters<P>& p, const Prepared<T>& in,
                                                  const Basic<T>& b, MfOutput<T>& out,
-                                                 const T* cube_root_given = nullptr) {
+                                                 const T* cube_root_given = nullptr,
+                                                 const ContactLoad<T>* load_given = nullptr) {
   const T r0 = p.unloaded_radius_m;
   const T fz0 = p.fnomin_n;
-  const ContactLoad<T> load = contact_load(p, in, b);
+  const ContactLoad<T> load = load_given != nullptr ? *load_given : contact_load(p, in, b);
   const T fz = load.fz;
   if (is_mf5x(p)) {
     P q_a1 = p.q_a1;  // a property of the tyre: the same for every lane

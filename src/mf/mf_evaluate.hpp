@@ -55,6 +55,8 @@
 #include "mf/mf_turn_slip.hpp"
 #include "mf/mf_types.hpp"
 
+#include <type_traits>
+
 namespace tread::mf {
 
 /// Whether a tyre measured as `tyre_side` and mounted on `side` is mirrored (y → −y).
@@ -78,7 +80,13 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
   const MfInput<T> in_raw = mirror ? mirror_input(input, true) : input;
 
   const Prepared<T> in = prepare(p, in_raw, options);
-  const Basic<T> b = basic(p, in, options);
+  // MF 6.2's (and MF 5.2's, PAC2002's) loaded radius (below). Where two tangents cost about one
+  // (four lanes on x86-64, kTwoForOne), its curve takes tan γ computed beside basic's tan α and is
+  // built before the forces are known (kCurveFirst, after the cores).
+  const bool solve62 = options.extras && p.fit_type != FitType::mf61;
+  constexpr bool kCurveFirst = is_lanes<T> && kTwoForOne<T>;
+  T tan_gamma = T(0);
+  const Basic<T> b = basic(p, in, options, kCurveFirst && solve62 ? &tan_gamma : nullptr);
 
   MfOutput<T> out;
 
@@ -144,6 +152,20 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
 
   T core_out[kMaxCores];
   mf_cores(cores, core_out);
+  // Four lanes: the solve's curve but for what the forces set, here rather than after the forces,
+  // off the solve's chain (it has three divisions and, for the power's approximant, about a
+  // hundred scalar operations). AVX2 VM, four code placements of evaluate_four each, three
+  // alternating runs: MF 6.2 / MF 6.1 1.305 → 1.254 (means) together with tan γ beside tan α and
+  // contact_load once, the bits unchanged; built before the cores instead 1.266, after basic()
+  // 1.287. The 8-lane batch measured slower with it (paired 1.319 → 1.335) and builds the curve
+  // after the forces.
+  struct NoCurve {};
+  std::conditional_t<kCurveFirst, Fz62Curve<T, P>, NoCurve> curve62;
+  if constexpr (kCurveFirst) {
+    if (solve62) {
+      curve62 = fz62_curve_without_forces(p, in.gamma, in.omega, in.romega, b.dpi, &tan_gamma);
+    }
+  }
   const T fx_pure = fx0_finish(in, x0, core_out[lane_fx0]);
   fy0_finish(in, options, core_out[lane_fy0], y0);
   if (with_gyk) gyk = combined_finish(gyk_a, core_out[lane_gyk], core_out[lane_gyk + 1]);
@@ -157,22 +179,31 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
   // alternating runs: the 8-lane batch's MF 6.2 / MF 6.1 1.31–1.35 → 1.27–1.28, medians; four
   // lanes unchanged); in float and double after everything else, as before (there it measured
   // about 1 % slower here, 13 ns in float on the AVX-512 VM).
-  const bool solve62 = options.extras && p.fit_type != FitType::mf61;
   LoadedRadius62<T> solved{T(0), T(0), 0, false};
   // MF 6.2's contact patch width takes a cube root (a power): where two powers cost about one
-  // (kTwoForOne), beside the solve's seeded power.
+  // (kTwoForOne), beside the solve's seeded power; the contact load it is taken of is passed on
+  // to contact_patch.
   PowBeside<T> width_power;
+  ContactLoad<T> width_load{};
   const bool width_beside =
       kTwoForOne<T> && p.fit_type == FitType::mf62 && !options.extras_loaded_radius_only;
   if constexpr (is_lanes<T>) {
     if (solve62) {
       const auto lifted = !(in.ufz > T(0));
+      const T fx_solve = if_else(lifted, T(0), fx);
+      const T fy_solve = if_else(lifted, T(0), fy);
       if (width_beside) {
-        width_power.x = contact_load(p, in, b).relative;
+        width_load = contact_load(p, in, b);
+        width_power.x = width_load.relative;
         width_power.y = contact_width_power<T>();
       }
-      solved = solve_loaded_radius62(p, in, b, if_else(lifted, T(0), fx), if_else(lifted, T(0), fy),
-                                     width_beside ? &width_power : nullptr);
+      PowBeside<T>* const beside = width_beside ? &width_power : nullptr;
+      if constexpr (kCurveFirst) {
+        fz62_set_forces(curve62, p, fx_solve, fy_solve);
+        solved = loaded_radius62(curve62, fz62_target(p, in), beside);
+      } else {
+        solved = solve_loaded_radius62(p, in, b, fx_solve, fy_solve, beside);
+      }
     }
   }
 
@@ -221,7 +252,8 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
     }
     loaded_radius(p, in, b, solved, out);
     if (!options.extras_loaded_radius_only) {
-      contact_patch(p, in, b, out, width_power.done ? &width_power.value : nullptr);
+      contact_patch(p, in, b, out, width_power.done ? &width_power.value : nullptr,
+                    width_beside ? &width_load : nullptr);
       relaxation(p, in, b, kxk, y0.kya, out);
     }
   }

@@ -96,12 +96,23 @@ Prepared<T> prepare(const MfParameters<P>& p, const MfInput<T>& input, const MfO
   return in;
 }
 
-/// calculateBasic.
+/// calculateBasic. With `tan_gamma`, where two tangents cost about one (kTwoForOne), also tan γ
+/// beside tan α, for MF 6.2's loaded radius (its camber deflection).
 template <typename T, typename P>
-Basic<T> basic(const MfParameters<P>& p, const Prepared<T>& in, const MfOptions& options) {
+Basic<T> basic(const MfParameters<P>& p, const Prepared<T>& in, const MfOptions& options,
+               T* tan_gamma = nullptr) {
   Basic<T> b;
   const T vcx = in.vx;
-  const T tan_alpha = mf_tan(in.alpha);
+  const T tan_alpha = [&] {
+    if constexpr (kTwoForOne<T>) {
+      if (tan_gamma != nullptr) {
+        const TwoOf<T> both = mf_tan_two(in.alpha, in.gamma);
+        *tan_gamma = both.second;
+        return both.first;
+      }
+    }
+    return mf_tan(in.alpha);
+  }();
   const T vsy = tan_alpha * abs(vcx);
   const T vc = hypot_of(vcx, vsy);
   b.fz0_prime = p.lfzo * p.fnomin_n;

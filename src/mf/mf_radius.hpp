@@ -75,7 +75,8 @@ struct Fz62Curve {
   T free_share;              // 1 − Q_CAM3·|γ|: the free-rolling deflection's share of ρz
   T inv_free_share;          // 1 / max(free_share, 0.1): the start's use of it
   T fys1_g, fys2_g, fys3_g;  // Q_FYS1…3·γ
-  T base;                    // 1 + Q_V2·(R0/V0)·|ω| − (Q_FCX·Fx/Fz0)²
+  T speed_base;              // 1 + Q_V2·(R0/V0)·|ω|
+  T base;                    // speed_base − (Q_FCX·Fx/Fz0)² (fz62_set_forces)
   T pressure;                // 1 + PFZ1·dpi
   T stiffness_scale;         // (1 + PFZ1·dpi)·Fz0
   T fcy_per_force;           // Q_FCY / Fz0
@@ -94,9 +95,13 @@ struct Fz62Curve {
   T pow_floor = T(0);  // lanes: the least δ the approximant takes (see fz62_pow)
 };
 
+/// Fz62Curve but for what the forces Fx and Fy set (fz62_set_forces): four lanes build it before
+/// the forces are known, so that it is off the solve's chain. `tan_gamma`: tan γ where the caller
+/// has it (computed beside tan α), else null.
 template <typename T, typename P>
-Fz62Curve<T, P> fz62_curve(const MfParameters<P>& p, const T& gamma, const T& omega,
-                           const T& romega, const T& dpi, const T& fx, const T& fy) {
+Fz62Curve<T, P> fz62_curve_without_forces(const MfParameters<P>& p, const T& gamma, const T& omega,
+                                          const T& romega, const T& dpi,
+                                          const T* tan_gamma = nullptr) {
   // What depends on the parameters only is computed in their scalar type P (for the lanes: once,
   // not per lane) and broadcast.
   Fz62Curve<T, P> c;
@@ -123,19 +128,18 @@ Fz62Curve<T, P> fz62_curve(const MfParameters<P>& p, const T& gamma, const T& om
     const T inv = div_or(T(1), if_else(cambered, at_romega, T(1)), T(0));
     c.cam1 = if_else(cambered, p.q_cam1 * inv, T(0));
     c.cam2 = if_else(cambered, p.q_cam2 * inv, T(0));
-    c.camber_scale = if_else(cambered, T(rtw_8) * abs(mf_tan(gamma)), T(0));
+    c.camber_scale =
+        if_else(cambered, T(rtw_8) * abs(tan_gamma != nullptr ? *tan_gamma : mf_tan(gamma)), T(0));
   }
   c.free_share = T(1) - p.q_cam3 * abs(gamma);
   c.inv_free_share = T(1) / max_of(c.free_share, T(0.1));
   c.fys1_g = p.q_fys1 * gamma;
   c.fys2_g = p.q_fys2 * gamma;
   c.fys3_g = p.q_fys3 * gamma;
-  const T fcx = fx * T(p.q_fcx / fz0);
-  c.base = T(1) + T(p.q_v2 * (r0 / p.longvl_mps)) * abs(omega) - fcx * fcx;
+  c.speed_base = T(1) + T(p.q_v2 * (r0 / p.longvl_mps)) * abs(omega);
   c.pressure = T(1) + p.pfz1 * dpi;
   c.stiffness_scale = c.pressure * fz0;
   c.fcy_per_force = T(P(p.q_fcy) / fz0);
-  c.fy = fy;
   const P q = c.pow_q;
   if constexpr (kPowPade55<T>) {
     // N = ₂F₁(−5, −5 − q; −10; −δ), D = ₂F₁(−5, q − 5; −10; −δ): the term in δ^k is the one in
@@ -213,6 +217,23 @@ Fz62Curve<T, P> fz62_curve(const MfParameters<P>& p, const T& gamma, const T& om
       c.pow_remainder = T(max_of(bound, P(1e-3)));
     }
   }
+  return c;
+}
+
+/// Completes a curve with the forces Fx and Fy.
+template <typename T, typename P>
+[[gnu::always_inline]] inline void fz62_set_forces(Fz62Curve<T, P>& c, const MfParameters<P>& p,
+                                                   const T& fx, const T& fy) {
+  const T fcx = fx * T(p.q_fcx / p.fnomin_n);
+  c.base = c.speed_base - fcx * fcx;
+  c.fy = fy;
+}
+
+template <typename T, typename P>
+Fz62Curve<T, P> fz62_curve(const MfParameters<P>& p, const T& gamma, const T& omega,
+                           const T& romega, const T& dpi, const T& fx, const T& fy) {
+  Fz62Curve<T, P> c = fz62_curve_without_forces(p, gamma, omega, romega, dpi);
+  fz62_set_forces(c, p, fx, fy);
   return c;
 }
 
@@ -770,12 +791,15 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target,
 /// solves for the load as given (MFeval 4.x's calculateRhoRl62 takes uFz, not the Fz limited to
 /// FZMAX that the forces see); MF 5.2 / PAC2002 for the limited load.
 template <typename T, typename P>
+[[gnu::always_inline]] inline T fz62_target(const MfParameters<P>& p, const Prepared<T>& in) {
+  return p.fit_type == FitType::mf62 ? in.ufz : in.fz;
+}
+template <typename T, typename P>
 [[gnu::always_inline]] inline LoadedRadius62<T> solve_loaded_radius62(
     const MfParameters<P>& p, const Prepared<T>& in, const Basic<T>& b, const T& fx, const T& fy,
     PowBeside<T>* beside = nullptr) {
-  const T fz_target = p.fit_type == FitType::mf62 ? in.ufz : in.fz;
-  return loaded_radius62(fz62_curve(p, in.gamma, in.omega, in.romega, b.dpi, fx, fy), fz_target,
-                         beside);
+  return loaded_radius62(fz62_curve(p, in.gamma, in.omega, in.romega, b.dpi, fx, fy),
+                         fz62_target(p, in), beside);
 }
 
 /// doExtras: Re, ω, and the loaded radius Rl, deflection ρ and vertical stiffness Cz, from the
