@@ -85,8 +85,9 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
   // built before the forces are known (kCurveFirst, after the cores).
   const bool solve62 = options.extras && p.fit_type != FitType::mf61;
   constexpr bool kCurveFirst = is_lanes<T> && kTwoForOne<T>;
+  const bool tan_gamma_beside = kTwoForOne<T> && solve62;
   T tan_gamma = T(0);
-  const Basic<T> b = basic(p, in, options, kCurveFirst && solve62 ? &tan_gamma : nullptr);
+  const Basic<T> b = basic(p, in, options, tan_gamma_beside ? &tan_gamma : nullptr);
 
   MfOutput<T> out;
 
@@ -163,7 +164,8 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
   std::conditional_t<kCurveFirst, Fz62Curve<T, P>, NoCurve> curve62;
   if constexpr (kCurveFirst) {
     if (solve62) {
-      curve62 = fz62_curve_without_forces(p, in.gamma, in.omega, in.romega, b.dpi, &tan_gamma);
+      curve62 = fz62_curve_without_forces(p, in.gamma, in.omega, in.romega, b.dpi,
+                                          tan_gamma_beside ? &tan_gamma : nullptr);
     }
   }
   const T fx_pure = fx0_finish(in, x0, core_out[lane_fx0]);

@@ -103,7 +103,7 @@ Basic<T> basic(const MfParameters<P>& p, const Prepared<T>& in, const MfOptions&
                T* tan_gamma = nullptr) {
   Basic<T> b;
   const T vcx = in.vx;
-  const T tan_alpha = [&] {
+  const T tan_alpha = [&]() __attribute__((always_inline)) {
     if constexpr (kTwoForOne<T>) {
       if (tan_gamma != nullptr) {
         const TwoOf<T> both = mf_tan_two(in.alpha, in.gamma);
