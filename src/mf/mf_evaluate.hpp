@@ -158,8 +158,8 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
   // hundred scalar operations). AVX2 VM, four code placements of evaluate_four each, three
   // alternating runs: MF 6.2 / MF 6.1 1.305 → 1.254 (means) together with tan γ beside tan α and
   // contact_load once, the bits unchanged; built before the cores instead 1.266, after basic()
-  // 1.287. The 8-lane batch measured slower with it (paired 1.319 → 1.335) and builds the curve
-  // after the forces.
+  // 1.287. The 8-lane batch measured slower with it (1.3105 → 1.3215, the same method) and
+  // builds the curve after the forces.
   struct NoCurve {};
   std::conditional_t<kCurveFirst, Fz62Curve<T, P>, NoCurve> curve62;
   if constexpr (kCurveFirst) {
