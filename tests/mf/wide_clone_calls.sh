@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The wide-lane code (evaluate_four's and the batch's AVX2 / AVX-512 clones, evaluate_sixteen)
+# The wide-lane code (evaluate_four's AVX2 / AVX-512 clones, the batch's evaluate_eight_v3 and
+# evaluate_sixteen)
 # must call nothing of tread's own out of line but redo_lanes: any other function is compiled for
 # the baseline target, and a wide clone calling it passes its 8- or 16-lane vectors by the
 # baseline's ABI (GCC's -Wpsabi note): slow at best (an out-of-line atan_lanes made the 8-lane batch
@@ -12,7 +13,7 @@ binary=$1
 listing=$(objdump -d --no-show-raw-insn -C "$binary")
 report=$(awk '
   /^[0-9a-f]+ <.*>:$/ {
-    wide = ($0 ~ /\[clone \.arch_x86_64_v[34]\]/ || $0 ~ /evaluate_sixteen/) && $0 ~ /tread::mf::/
+    wide = ($0 ~ /\[clone \.arch_x86_64_v[34]\]/ || $0 ~ /evaluate_sixteen|evaluate_eight_v3/) && $0 ~ /tread::mf::/
     if (wide) { clones++; name = $0 }
     next
   }
@@ -29,7 +30,7 @@ summary=$(tail -n 1 <<<"$report")
 clones=$(sed -E 's/wide functions: ([0-9]+),.*/\1/' <<<"$summary")
 bad=$(sed -E 's/.*disallowed calls: ([0-9]+)/\1/' <<<"$summary")
 if ((clones < 3)); then
-  echo "FAIL: expected evaluate_four's and evaluate_eight's wide clones and evaluate_sixteen" >&2
+  echo "FAIL: expected evaluate_four's wide clones, evaluate_eight_v3 and evaluate_sixteen" >&2
   exit 1
 fi
 if ((bad > 0)); then
