@@ -4,7 +4,9 @@
 // first wheel. Everything here is always inlined into the function of one width and one
 // instruction set that runs the blocks: evaluate_sixteen and the baseline evaluate_eight in
 // mf_evaluate_batch.cpp, the AVX2 one (evaluate_eight_v3) in mf_evaluate_batch_v3.cpp, which is
-// compiled for x86-64-v3 as a whole (see there and src/mf/CMakeLists.txt why).
+// compiled for x86-64-v3 as a whole (see there and src/mf/CMakeLists.txt why). Internal linkage
+// (static) throughout: a copy left out of line stays in its file, compiled for that file's target,
+// and is never shared between the baseline and the x86-64-v3 code.
 #include <algorithm>
 #include <array>
 #include <cstddef>
@@ -36,8 +38,8 @@ static_assert(offsetof(MfOutput<float>, kxk_n) == (kOutputFields - 1) * sizeof(f
 /// inside its own shuffle intrinsics may be used uninitialized (a known false positive).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-__attribute__((target("arch=x86-64-v4"))) inline void store_rows16(const char* lanes,
-                                                                   MfOutput<float>* outputs) {
+__attribute__((target("arch=x86-64-v4"))) static inline void store_rows16(
+    const char* lanes, MfOutput<float>* outputs) {
   for (std::size_t first = 0; first < kOutputFields; first += 16) {
     const std::size_t fields = std::min<std::size_t>(16, kOutputFields - first);
     __m512 r[16];
@@ -84,7 +86,8 @@ static_assert(kOutputFields > 24 && kOutputFields <= 32);
 /// loops unrolled: with the group's size a variable, GCC -O2 compiled this as loops of 8-byte
 /// moves through memory, 17 % of the 8-lane batch's time.
 template <std::size_t kFirst, std::size_t kCount>
-[[gnu::always_inline]] inline void store_rows8(const char* lanes_bytes, MfOutput<float>* outputs) {
+[[gnu::always_inline]] static inline void store_rows8(const char* lanes_bytes,
+                                                      MfOutput<float>* outputs) {
   static_assert(kCount >= 1 && kCount <= 8 && kFirst + kCount <= kOutputFields);
   using W = lanes::FloatVec<8>;
   W group[8];
@@ -103,10 +106,10 @@ template <std::size_t kFirst, std::size_t kCount>
 
 /// N wheels: inputs packed field by field into lanes, evaluated, outputs unpacked.
 template <int N>
-[[gnu::always_inline]] inline void evaluate_block(const MfParameters<float>& params,
-                                                  const MfInput<float>* inputs,
-                                                  const MfOptions& options, bool mirror,
-                                                  MfOutput<float>* outputs) {
+[[gnu::always_inline]] static inline void evaluate_block(const MfParameters<float>& params,
+                                                         const MfInput<float>* inputs,
+                                                         const MfOptions& options, bool mirror,
+                                                         MfOutput<float>* outputs) {
   using L = lanes::Lanes<N>;
   static_assert(std::is_standard_layout_v<MfOutput<L>> &&
                 offsetof(MfOutput<L>, status) == kOutputFields * sizeof(L));
@@ -201,10 +204,10 @@ template <int N>
 /// local copy whose address does not escape, it keeps such values across blocks (callgrind, per
 /// 8-lane block: MF 6.1 4 407 → 4 300 instructions, MF 6.2 5 700 → 5 585).
 template <int N>
-[[gnu::always_inline]] inline void evaluate_blocks(const MfParameters<float>& caller_params,
-                                                   std::span<const MfInput<float>> inputs,
-                                                   const MfOptions& caller_options,
-                                                   std::span<MfOutput<float>> outputs) {
+[[gnu::always_inline]] static inline void evaluate_blocks(const MfParameters<float>& caller_params,
+                                                          std::span<const MfInput<float>> inputs,
+                                                          const MfOptions& caller_options,
+                                                          std::span<MfOutput<float>> outputs) {
   const MfParameters<float> params = caller_params;
   const MfOptions options = caller_options;
   const bool mirror = mirrored(options.side, params.tyre_side);

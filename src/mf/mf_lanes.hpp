@@ -272,11 +272,14 @@ template <int N>
 
 // The Magic Formula's elementary functions (found by ADL from mf_evaluate.hpp).
 /// r[i] = f(x[i]) where which[i]: the rare redo of trig_wide_lanes, out of line and given plain
-/// arrays, so that a wide clone's call to it (compiled for the baseline target) passes pointers
-/// only, never a vector by value.
+/// arrays, so that a wide clone's call to it (compiled for its file's target) passes pointers
+/// only, never a vector by value. Internal linkage (static): each file has its own copy, compiled
+/// for that file's target. As a shared (weak) definition, the linker kept one copy for every file,
+/// and the one of the file compiled for x86-64-v3 (mf_evaluate_batch_v3.cpp) could have been the
+/// one baseline code called (tests/mf/wide_object_symbols.sh).
 template <typename F>
-[[gnu::noinline, gnu::cold]] void redo_lanes(int n, const float* x, const std::int32_t* which,
-                                             float* r, F f) {
+[[gnu::noinline, gnu::cold]] static void redo_lanes(int n, const float* x,
+                                                    const std::int32_t* which, float* r, F f) {
   for (int i = 0; i < n; ++i)
     if (which[i] != 0) r[i] = f(x[i]);
 }
