@@ -8,10 +8,10 @@
 // code placements: 75.0 → 68.4 ns per wheel (−9 %), MF 6.2 97.3 → 91.0 ns; the same bits.
 //
 // Nothing compiled here may run on a CPU below x86-64-v3, so nothing here may be shared with
-// baseline code: the one function defined here inlines everything it calls (flatten;
-// tests/mf/wide_object_symbols.sh checks that this object defines no symbol another object could
-// bind to but evaluate_eight_v3), and mf_evaluate_batch.cpp calls it only where the CPU is
-// x86-64-v3.
+// baseline code: the one function defined here inlines everything it calls (flatten) but the rare
+// lanes::redo_lanes, which has internal linkage (this file's own copy); tests/mf/
+// wide_object_symbols.sh checks that this object defines no symbol another object could bind to
+// but evaluate_eight_v3. mf_evaluate_batch.cpp calls it only where the CPU is x86-64-v3.
 #include "mf/mf_evaluate_blocks.hpp"
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
