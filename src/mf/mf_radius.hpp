@@ -737,13 +737,15 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target,
     result.newton_steps = i + 1;
     return any_lane(active);
   };
-  // On 8 and 16 lanes (the batch) the first step is compiled on its own: every lane is active and
-  // no step came before it, so its selects on `active` and the settled estimate fold away (−46
-  // instructions per block of eight, the batch's MF 6.2 / MF 6.1 1.320 → 1.300 paired, four code
-  // placements). Four lanes are bound by the latency of the solve's chain rather than by
+  // On 8 lanes (the AVX2 and SSE2 batch) the first step is compiled on its own: every lane is
+  // active and no step came before it, so its selects on `active` and the settled estimate fold
+  // away (−46 instructions per block of eight, the batch's MF 6.2 / MF 6.1 1.320 → 1.300 paired,
+  // four code placements). Four lanes are bound by the latency of the solve's chain rather than by
   // instructions: there the same measured slower (+0.3 to +3 %), and it is not done, nor in the
-  // scalar paths.
-  constexpr bool kPeelFirst = is_lanes<T> && sizeof(T) > 4 * sizeof(float);
+  // scalar paths. Nor on 16 lanes (AVX-512) for now: neither its speed nor its bits against
+  // evaluate_four could be checked without an AVX-512 CPU (GCC's FMA contraction can change with
+  // the shape of the code around it).
+  constexpr bool kPeelFirst = is_lanes<T> && sizeof(T) == 8 * sizeof(float);
   if constexpr (kPeelFirst) {
     if (iterate(0)) {
       for (int i = 1; i < kNewtonSteps; ++i) {
