@@ -9,6 +9,7 @@ packages=(
   # libraries
   libgtest-dev libgmock-dev libbenchmark-dev libeigen3-dev libceres-dev libgpiod-dev libcli11-dev
   libfast-float-dev  # `tread mf eval` reads numbers with fast_float (header-only)
+  libdragonbox-dev   # ... and writes them with Dragonbox's shortest digits (header-only part)
   gnuplot-nox nlohmann-json3-dev  # plots: gnuplot directly (Debian's libsciplot-dev is the Motif widget, not C++ sciplot)
   # CAN, real-time tools and the independent DBC parser
   can-utils rt-tests gpiod python3-canmatrix canmatrix-utils python3-numpy

@@ -152,7 +152,9 @@ void check_range(const EvalSetup& setup, const InputRow& row, std::array<Tally, 
 
 // Makes room in `chunk` for its formatted rows and clears what the last use left.
 void start_chunk(const EvalSetup& setup, Chunk& chunk) {
-  const std::size_t needed = chunk.lines.lines * setup.row_bytes;
+  // write_shortest may write blocks of digits past a number's end, up to kShortestNumberRoom
+  // from its start: room for that after the last row.
+  const std::size_t needed = chunk.lines.lines * setup.row_bytes + host::kShortestNumberRoom;
   if (chunk.capacity < needed) {
     chunk.text = std::make_unique_for_overwrite<char[]>(needed);
     chunk.capacity = needed;
@@ -210,7 +212,7 @@ char* format_row(const EvalSetup& setup, const InputRow& row, const mf::MfOutput
     if (ok && !std::isfinite(v)) {
       // Never a NaN or Inf under status ok. The core already writes a non-finite output as 0
       // with Status::non_finite; this is the last check where numbers leave the program.
-      char number[host::kShortestNumberMaxChars];
+      char number[host::kShortestNumberRoom];
       char* end = host::write_shortest(number, v);
       throw tir::TirError(setup.in_name, row.line,
                           std::string(columns[c].name) + " = " + std::string(number, end) +
