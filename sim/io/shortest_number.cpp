@@ -43,7 +43,7 @@ int digit_count(std::uint64_t v) {
 }
 
 // The 8 digits of v < 10^8, zero-padded, at p.
-void put_eight_digits(char* p, std::uint32_t v) {
+[[gnu::always_inline]] inline void put_eight_digits(char* p, std::uint32_t v) {
   const std::uint32_t high = v / 10000;
   const std::uint32_t low = v % 10000;
   std::memcpy(p, kDigitPairs + 2 * (high / 100), 2);
