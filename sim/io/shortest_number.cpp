@@ -95,7 +95,7 @@ char* write_shortest(char* out, double value) noexcept {
       std::memcpy(out, digits, 16);
       out[first_exponent + 1] = '.';
       std::memcpy(out + first_exponent + 2, digits + first_exponent + 1, 16);
-    } else {  // fixed wins only for 0.0000d… at most: 2 + 4 zeros, then the digits
+    } else {  // fixed wins down to 0.000dd at most ("0." and 3 zeros); 8 bytes cover that
       std::memcpy(out, "0.000000", 8);
       std::memcpy(out + 1 - first_exponent, digits, 17);
     }

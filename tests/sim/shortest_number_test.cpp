@@ -72,7 +72,7 @@ class ToCharsComparison {
  private:
   void check_one(double v) {
     constexpr std::size_t kRoom = tread::host::kShortestNumberRoom;
-    std::array<char, kRoom + 8> ours{};
+    std::array<char, kRoom + 64> ours{};
     ours.fill('#');
     char* end = tread::host::write_shortest(ours.data(), v);
     char theirs[64];
