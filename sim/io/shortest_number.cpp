@@ -72,10 +72,11 @@ char* write_shortest(char* out, double value) noexcept {
   const int exponent = decimal.exponent;
   const int first_exponent = exponent + n - 1;
 
-  // The 17 digits of the significand, zero-padded, then zeros: its n digits at t + 17 − n, and
-  // whole blocks copied from there carry zeros, never stale bytes, past them.
-  char t[17 + 32];
-  std::memset(t + 16, '0', 33);
+  // The 17 digits of the significand, zero-padded, then 16 zeros: its n digits at t + 17 − n,
+  // and the blocks copied below (at most 16 bytes after its first digit, or 17 from it) carry
+  // zeros, never stale bytes, past them; none reads beyond t + 33.
+  char t[17 + 16];
+  std::memset(t + 16, '0', 17);
   const std::uint64_t high = significand / 100000000;
   put_eight_digits(t + 9, static_cast<std::uint32_t>(significand % 100000000));
   put_eight_digits(t + 1, static_cast<std::uint32_t>(high % 100000000));

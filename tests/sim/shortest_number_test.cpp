@@ -125,10 +125,11 @@ TEST(ShortestNumber, SameTextAsToChars) {
       up = std::nextafter(up, INFINITY);
     }
   }
-  for (double v = std::ldexp(1.0, 53), j = 0; j < 8; ++j) {
-    c.check(std::nextafter(v, 0.0));
-    c.check(v);
-    v = std::nextafter(v, INFINITY);
+  double v53 = std::ldexp(1.0, 53);
+  for (int j = 0; j < 8; ++j) {
+    c.check(std::nextafter(v53, 0.0));
+    c.check(v53);
+    v53 = std::nextafter(v53, INFINITY);
   }
   for (const double v : {0.0, 1.0, 0.1, 0.0001, 0.00001, 1e15, 1e16, 123456789012345.0,
                          1234567890123456.0, 9007199254740991.0, 4000.0, DBL_MIN, DBL_MAX,
