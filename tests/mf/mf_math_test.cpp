@@ -190,8 +190,13 @@ TEST(MfMath, DoubleCoresAreTheFormulaBitForBit) {
     state = state * 6364136223846793005ULL + 1442695040888963407ULL;
     return lo + (hi - lo) * static_cast<double>(state >> 11U) / 9007199254740992.0;
   };
-  const double specials[] = {0.0, -0.0, 1e300, -1e300, std::numeric_limits<double>::infinity(),
-                             std::numeric_limits<double>::quiet_NaN(), 5e-324};
+  const double specials[] = {0.0,
+                             -0.0,
+                             1e300,
+                             -1e300,
+                             std::numeric_limits<double>::infinity(),
+                             std::numeric_limits<double>::quiet_NaN(),
+                             5e-324};
   long compared = 0;
   for (int n = 0; n < 100000; ++n) {
     Cores<double> cores;
