@@ -27,6 +27,22 @@ using MaskOf = decltype(std::declval<const T&>() < std::declval<const T&>());
 template <typename T>
 constexpr bool is_lanes = !std::is_same_v<MaskOf<T>, bool>;
 
+/// The element of a lanes type (what its operator[] gives), void for the scalars.
+template <typename T>
+struct LaneElement {
+  using type = void;
+};
+template <typename T>
+requires(is_lanes<T>) struct LaneElement<T> {
+  using type = std::remove_cvref_t<decltype(std::declval<const T&>()[0])>;
+};
+
+/// Float lanes (lanes::Lanes<N>, mf_lanes.hpp): float's precision and tolerances, tread's float
+/// polynomials. Double lanes (dlanes::DLanes<N>, mf_double_lanes.hpp) take every choice double
+/// takes, so that each lane computes what evaluate<double> computes, bit for bit.
+template <typename T>
+constexpr bool is_float_lanes = std::is_same_v<typename LaneElement<T>::type, float>;
+
 /// Fixed-point scalars (fixed::Fixed64) mark themselves with a kIsFixedPoint member.
 template <typename T>
 constexpr bool is_fixed_point = requires {

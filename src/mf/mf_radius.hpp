@@ -32,7 +32,8 @@ void rolling_radius(const MfParameters<P>& p, Prepared<T>& in) {
   // MFeval: while |Re_old − Re| > 1e-9 (in float and fixed point: 1e-6, the 1e-9 step is at or
   // below their resolution of a radius). The cap only guards against a diverging file.
   // Lanes iterate until all have converged; a converged lane keeps its values.
-  const T tolerance = T(std::is_same_v<T, float> || is_lanes<T> || is_fixed_point<T> ? 1e-6 : 1e-9);
+  const T tolerance =
+      T(std::is_same_v<T, float> || is_float_lanes<T> || is_fixed_point<T> ? 1e-6 : 1e-9);
   for (int i = 0; i < 100; ++i) {
     const auto active = abs(re_old - re) > tolerance;
     if (!any_lane(active)) break;
@@ -50,11 +51,12 @@ void rolling_radius(const MfParameters<P>& p, Prepared<T>& in) {
 }
 
 /// How fz62_pow takes (1 + δ)^q near its memo: the [3/3] Padé approximant (kPowPade: float,
-/// double, Jets), the [5/5] one (kPowPade55: lanes) or the binomial series to δ⁶ (fixed point).
+/// double, double lanes, Jets), the [5/5] one (kPowPade55: float lanes) or the binomial series to
+/// δ⁶ (fixed point).
 template <typename T>
-inline constexpr bool kPowPade = !is_lanes<T> && !is_fixed_point<T>;
+inline constexpr bool kPowPade = !is_float_lanes<T> && !is_fixed_point<T>;
 template <typename T>
-inline constexpr bool kPowPade55 = is_lanes<T>;
+inline constexpr bool kPowPade55 = is_float_lanes<T>;
 
 /// MF 6.2's vertical force as a function of the loaded radius, Fz62(Rl) (calculateFz62), at a
 /// given γ, ω, Romega, Fx, Fy and pressure. What does not depend on Rl is computed once here
@@ -305,7 +307,7 @@ struct Fz62PowMemo {
 template <typename T, typename P>
 [[gnu::always_inline]] inline T fz62_pow(const Fz62Curve<T, P>& c, const T& x,
                                          Fz62PowMemo<T>& memo) {
-  constexpr bool coarse = std::is_same_v<T, float> || is_lanes<T> || is_fixed_point<T>;
+  constexpr bool coarse = std::is_same_v<T, float> || is_float_lanes<T> || is_fixed_point<T>;
   // Without a base in any lane, pow alone, without the approximation.
   auto near = memo.base > T(0);
   T approx = T(0);
@@ -466,7 +468,7 @@ template <bool kSecond, typename T, typename P>
 template <typename T, typename P>
 [[gnu::always_inline]] inline T quadratic_deflection(const Fz62Curve<T, P>& c, const T& fz,
                                                      const T& fcy) {
-  if constexpr (is_lanes<T> || std::is_same_v<T, float>) {
+  if constexpr (is_float_lanes<T> || std::is_same_v<T, float>) {
     // E = net·(1 + PFZ1·dpi)·Fz0.
     const T net = c.base - fcy * fcy;
     const T w = c.q_fz2 * fz;
@@ -565,7 +567,7 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target,
   constexpr int kNewtonSteps = 16;
   // Halley's step in double and on lanes, Newton's in float and fixed point (see above).
   constexpr bool kHalley = !std::is_same_v<T, float> && !is_fixed_point<T>;
-  constexpr bool coarse = std::is_same_v<T, float> || is_lanes<T> || is_fixed_point<T>;
+  constexpr bool coarse = std::is_same_v<T, float> || is_float_lanes<T> || is_fixed_point<T>;
   // ε^(3/4): float 6.4e-6, double 1.8e-12 (fixed point Q31.32 as float: its resolution of a
   // radius, 2.3e-10 m, is float's).
   const T tolerance = c.r0 * T(coarse ? 6.4e-6 : 1.8e-12);
@@ -745,7 +747,7 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target,
   // scalar paths. Nor on 16 lanes (AVX-512) for now: neither its speed nor its bits against
   // evaluate_four could be checked without an AVX-512 CPU (GCC's FMA contraction can change with
   // the shape of the code around it).
-  constexpr bool kPeelFirst = is_lanes<T> && sizeof(T) == 8 * sizeof(float);
+  constexpr bool kPeelFirst = is_float_lanes<T> && sizeof(T) == 8 * sizeof(float);
   if constexpr (kPeelFirst) {
     if (iterate(0)) {
       for (int i = 1; i < kNewtonSteps; ++i) {

@@ -1,0 +1,93 @@
+// evaluate_rows: evaluate<double> on two double lanes (mf_double_lanes.hpp) where that gives
+// evaluate<double>'s bits, else one point at a time. This file is compiled -ffp-contract=off (and,
+// like the other lane files, -O2 without sanitizer instrumentation: src/mf/CMakeLists.txt).
+//
+// Two lanes, not four: on the AVX2 VM (`tread mf eval --columns Fx_N,Fy_N,Mz_Nm`, 1 M rows, seven
+// alternating runs) two lanes took 6–11 % less CPU than evaluate<double> row by row, four lanes
+// 14 % more (the values of four lanes in two SSE registers each, spilled around every libm call).
+#include "mf/mf_evaluate_rows.hpp"
+
+#include <algorithm>
+#include <cstddef>
+#include <cstring>
+#include <type_traits>
+
+#include "mf/mf_double_lanes.hpp"
+
+namespace tread::mf {
+
+namespace {
+
+// Where evaluate<double> (mf_evaluate.cpp: the same flags but this file's -ffp-contract=off)
+// cannot contract a·b + c into an FMA either, so that the lanes give its bits: x86-64 built for a
+// CPU without FMA (the baseline the presets build for).
+#if defined(__x86_64__) && !defined(__FMA__)
+constexpr int kLanes = 2;
+#else
+constexpr int kLanes = 1;
+#endif
+
+// The block with everything inlined, and (GCC) a clone for x86-64-v3 that the loader picks where
+// the CPU has it: VEX encodings, no FMA here (-ffp-contract=off), the same bits; 5 % less CPU than
+// the baseline code in the measurement above.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define TREAD_ROWS_FUNCTION __attribute__((flatten, target_clones("arch=x86-64-v3", "default")))
+#else
+#define TREAD_ROWS_FUNCTION __attribute__((flatten))
+#endif
+
+template <int N>
+using DL = dlanes::DLanes<N>;
+
+constexpr std::size_t kInputFields = sizeof(MfInput<double>) / sizeof(double);
+constexpr std::size_t kOutputFields = offsetof(MfOutput<double>, status) / sizeof(double);
+static_assert(std::is_standard_layout_v<MfInput<double>> && kInputFields == 7);
+static_assert(offsetof(MfOutput<double>, kxk_n) == (kOutputFields - 1) * sizeof(double));
+static_assert(sizeof(MfInput<DL<2>>) == kInputFields * sizeof(DL<2>));
+static_assert(offsetof(MfOutput<DL<2>>, status) == kOutputFields * sizeof(DL<2>));
+
+// n (1 or 2) points: lane i takes point i, a lone point is evaluated in both lanes.
+TREAD_ROWS_FUNCTION void evaluate_two(const MfParameters<double>& params, const MfInput<double>* in,
+                                      std::size_t n, const MfOptions& options,
+                                      MfOutput<double>* out) noexcept {
+  MfInput<DL<2>> lanes_in;
+  auto* in_fields = reinterpret_cast<DL<2>*>(&lanes_in);
+  const MfInput<double>& second = in[n > 1 ? 1 : 0];
+  for (std::size_t f = 0; f < kInputFields; ++f) {
+    double a;
+    double b;
+    std::memcpy(&a, reinterpret_cast<const char*>(&in[0]) + f * sizeof(double), sizeof a);
+    std::memcpy(&b, reinterpret_cast<const char*>(&second) + f * sizeof(double), sizeof b);
+    in_fields[f].v = DL<2>::D{a, b};
+  }
+  const MfOutput<DL<2>> r = evaluate(params, lanes_in, options);
+  const auto* out_fields = reinterpret_cast<const DL<2>*>(&r);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t f = 0; f < kOutputFields; ++f) {
+      const double v = out_fields[f].v[i];
+      std::memcpy(reinterpret_cast<char*>(&out[i]) + f * sizeof(double), &v, sizeof v);
+    }
+    out[i].status = r.status[static_cast<int>(i)];
+  }
+}
+
+}  // namespace
+
+void evaluate_rows(const MfParameters<double>& params, std::span<const MfInput<double>> inputs,
+                   const MfOptions& options, std::span<MfOutput<double>> outputs) noexcept {
+  const std::size_t n = std::min(inputs.size(), outputs.size());
+  if constexpr (kLanes == 1) {
+    for (std::size_t i = 0; i < n; ++i) outputs[i] = evaluate(params, inputs[i], options);
+  } else {
+    for (std::size_t i = 0; i < n; i += 2) {
+      evaluate_two(params, inputs.data() + i, std::min<std::size_t>(2, n - i), options,
+                   outputs.data() + i);
+    }
+  }
+}
+
+int rows_lanes() noexcept {
+  return kLanes;
+}
+
+}  // namespace tread::mf

@@ -1,0 +1,163 @@
+// mf::evaluate_rows (src/mf/mf_evaluate_rows.hpp): many points in double, on double lanes where
+// that gives evaluate<double>'s bits.
+//   - Every point's outputs are evaluate<double>'s for it, bit for bit, with the same status:
+//     every .tir the MF core loads, all eight useModes, extras on/off/loaded radius only, the three
+//     mounted sides, physical and wild inputs (zero, huge, tiny, subnormal; NaN inputs), in double.
+//     A difference names the first field that differs.
+//   - A point's outputs do not depend on its neighbours, its place in its block or the span's
+//     length.
+#include <gtest/gtest.h>
+
+#include <cstddef>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <limits>
+#include <random>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "batch_inputs.hpp"
+#include "golden_path.hpp"
+#include "mf/mf_double_lanes.hpp"
+#include "mf/mf_evaluate.hpp"
+#include "mf/mf_evaluate_rows.hpp"
+#include "mf/mf_lanes.hpp"
+#include "tyre/mf_parameters_from_tir.hpp"
+#include "wild_value.hpp"
+
+namespace tread::mf {
+namespace {
+
+std::vector<MfParameters<double>> all_mf_tyres() {
+  std::vector<MfParameters<double>> tyres;
+  for (const auto& entry : std::filesystem::directory_iterator(testing::tyres_dir())) {
+    if (entry.path().extension() != ".tir") continue;
+    try {
+      tyres.push_back(tyre::load_mf_parameters(entry.path()).params);
+    } catch (const std::exception&) {
+      // PAC89/PAC94: not a Magic Formula file
+    }
+  }
+  return tyres;
+}
+
+/// n points in double: physical ones across the envelope with full double mantissas, every fifth
+/// wild (zero, huge, tiny, subnormal in double's range), point 1's κ NaN and point 2's Fz inf.
+std::vector<MfInput<double>> row_inputs(std::mt19937_64& rng, std::size_t n) {
+  std::uniform_real_distribution<double> fz(-500.0, 12000.0), kappa(-1.0, 1.0), alpha(-0.6, 0.6),
+      gamma(-0.2, 0.2), vx(-5.0, 60.0), phit(-2.0, 2.0), p(0.0, 4e5);
+  std::vector<MfInput<double>> in(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    MfInput<double>& x = in[i];
+    if (i % 5 == 4) {
+      x.fz_n = testing::wild<double>(rng, 5000.0);
+      x.kappa = testing::wild<double>(rng, 0.2);
+      x.alpha_rad = testing::wild<double>(rng, 0.2);
+      x.gamma_rad = testing::wild<double>(rng, 0.05);
+      x.vx_mps = testing::wild<double>(rng, 20.0);
+      x.phit_1pm = testing::wild<double>(rng, 0.5);
+      x.p_pa = testing::wild<double>(rng, 2e5);
+    } else {
+      x.fz_n = fz(rng);
+      x.kappa = kappa(rng);
+      x.alpha_rad = alpha(rng);
+      x.gamma_rad = gamma(rng);
+      x.vx_mps = i % 7 == 3 ? 0.0 : vx(rng);
+      x.phit_1pm = i % 3 == 0 ? phit(rng) : 0.0;
+      x.p_pa = p(rng);
+    }
+  }
+  if (n > 1) in[1].kappa = std::numeric_limits<double>::quiet_NaN();
+  if (n > 2) in[2].fz_n = std::numeric_limits<double>::infinity();
+  return in;
+}
+
+constexpr std::size_t kFields = offsetof(MfOutput<double>, status) / sizeof(double);
+
+/// The first field whose bits differ, or kFields.
+std::size_t first_difference(const MfOutput<double>& a, const MfOutput<double>& b) {
+  for (std::size_t k = 0; k < kFields; ++k) {
+    if (std::memcmp(reinterpret_cast<const char*>(&a) + k * sizeof(double),
+                    reinterpret_cast<const char*>(&b) + k * sizeof(double), sizeof(double)) != 0) {
+      return k;
+    }
+  }
+  return kFields;
+}
+
+double field(const MfOutput<double>& o, std::size_t k) {
+  double v = 0.0;
+  if (k < kFields)
+    std::memcpy(&v, reinterpret_cast<const char*>(&o) + k * sizeof(double), sizeof v);
+  return v;
+}
+
+std::string describe(const MfInput<double>& in) {
+  char text[256];
+  std::snprintf(text, sizeof text,
+                " (Fz %.17g, kappa %.17g, alpha %.17g, gamma %.17g, Vx %.17g, phit %.17g, P %.17g)",
+                in.fz_n, in.kappa, in.alpha_rad, in.gamma_rad, in.vx_mps, in.phit_1pm, in.p_pa);
+  return text;
+}
+
+// Double lanes take double's choices (tolerances, approximants) in the MF 6.2 solve, float lanes
+// float's.
+static_assert(!detail::is_float_lanes<dlanes::DLanes<2>> && !detail::is_float_lanes<double>);
+static_assert(detail::is_lanes<dlanes::DLanes<2>> && detail::is_lanes<dlanes::DLanes<4>>);
+static_assert(detail::is_float_lanes<lanes::F4> && detail::is_float_lanes<lanes::F8>);
+static_assert(!detail::is_float_lanes<float>);
+
+TEST(MfEvaluateRows, EqualsEvaluateDoubleBitForBit) {
+  const std::vector<MfParameters<double>> tyres = all_mf_tyres();
+  ASSERT_GE(tyres.size(), 8U);
+  std::mt19937_64 rng(23);
+  const std::size_t n = 301;
+  std::size_t compared = 0;
+  for (const MfParameters<double>& p : tyres) {
+    for (const testing::BatchOptionSet& set : testing::batch_option_sets()) {
+      const std::vector<MfInput<double>> in = row_inputs(rng, n);
+      std::vector<MfOutput<double>> got(n);
+      evaluate_rows(p, in, set.options, got);
+      for (std::size_t i = 0; i < n; ++i) {
+        const MfOutput<double> want = evaluate(p, in[i], set.options);
+        const std::string where = "fit " + std::to_string(static_cast<int>(p.fit_type)) + " " +
+                                  set.name + " point " + std::to_string(i);
+        ASSERT_EQ(got[i].status, want.status) << where;
+        const std::size_t k = first_difference(got[i], want);
+        ASSERT_EQ(k, kFields) << where << " field " << k << ": " << field(got[i], k) << " vs "
+                              << field(want, k) << describe(in[i]);
+        ++compared;
+      }
+    }
+  }
+  std::printf("[ compared ] %zu points on %d lane(s), all bit for bit\n", compared, rows_lanes());
+}
+
+TEST(MfEvaluateRows, EveryLengthAndPlaceInABlock) {
+  for (const char* tyre : {"MagicFormula61_Parameters.tir", "MagicFormula62_Parameters.tir",
+                           "chrono_Sedan_Pac02Tire.tir"}) {
+    const MfParameters<double> p = tyre::load_mf_parameters(testing::tyre_file(tyre)).params;
+    MfOptions o = options_from_use_mode(111).value;
+    o.extras = true;
+    std::mt19937_64 rng(5);
+    const std::size_t most = 13;
+    const std::vector<MfInput<double>> all = row_inputs(rng, most);
+    for (std::size_t length = 0; length <= most; ++length) {
+      for (std::size_t start = 0; start + length <= most; ++start) {
+        std::vector<MfOutput<double>> got(length);
+        evaluate_rows(p, std::span<const MfInput<double>>(all).subspan(start, length), o, got);
+        for (std::size_t i = 0; i < length; ++i) {
+          const MfOutput<double> want = evaluate(p, all[start + i], o);
+          ASSERT_EQ(got[i].status, want.status) << tyre << " " << length << " " << start;
+          ASSERT_EQ(first_difference(got[i], want), kFields)
+              << tyre << " length " << length << " start " << start << " point " << i;
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace tread::mf
