@@ -21,6 +21,7 @@
 #include "io/shortest_number.hpp"
 #include "mf/mf_evaluate.hpp"
 #include "mf/mf_evaluate_batch.hpp"
+#include "mf/mf_evaluate_rows.hpp"
 #include "mf/mf_fixed.hpp"
 #include "tir/tir_file.hpp"
 
@@ -102,10 +103,11 @@ struct Tally {
 constexpr std::size_t kBatchRows = 256;
 
 // A batch's rows as read, their inputs and their outputs.
+template <typename T>
 struct BatchScratch {
   std::vector<InputRow> rows;
-  std::vector<mf::MfInput<float>> inputs;
-  std::vector<mf::MfOutput<float>> outputs;
+  std::vector<mf::MfInput<T>> inputs;
+  std::vector<mf::MfOutput<T>> outputs;
 };
 
 // One chunk of the stream: its lines in, its formatted rows out. Reused from chunk to chunk.
@@ -116,7 +118,8 @@ struct Chunk {
   std::size_t used = 0;
   std::size_t rows = 0;
   std::array<Tally, kLimitCount> outside{};
-  BatchScratch batch;  ///< --batch only (allocated on the chunk's first use)
+  BatchScratch<float> batch;         ///< --batch only (allocated on the chunk's first use)
+  BatchScratch<double> double_rows;  ///< double on mf::evaluate_rows (the same)
 };
 
 // What every chunk of one evaluation shares (read only).
@@ -246,14 +249,15 @@ void evaluate_chunk(const EvalSetup& setup, const mf::MfParameters<T>& params, C
   chunk.used = static_cast<std::size_t>(p - chunk.text.get());
 }
 
-// The same in float on mf::evaluate_batch's lanes, kBatchRows rows at a time: the rows are parsed
-// and checked, evaluated together, then formatted. A row that cannot be read (or, with --strict,
-// is out of range) is an error only after the rows before it are evaluated and formatted, so
-// that an error among those (a non-finite output under status ok) comes first, as row by row.
-void evaluate_chunk_batch(const EvalSetup& setup, const mf::MfParameters<float>& params,
-                          Chunk& chunk) {
+// The same kBatchRows rows at a time: the rows are parsed and checked, evaluated together by
+// `evaluate_many` (mf::evaluate_batch: float on wide lanes, --batch; mf::evaluate_rows: double,
+// evaluate<double>'s bits), then formatted. A row that cannot be read (or, with --strict, is out
+// of range) is an error only after the rows before it are evaluated and formatted, so that an
+// error among those (a non-finite output under status ok) comes first, as row by row.
+template <typename T, typename EvaluateMany>
+void evaluate_chunk_batch(const EvalSetup& setup, const mf::MfParameters<T>& params, Chunk& chunk,
+                          BatchScratch<T>& batch, EvaluateMany evaluate_many) {
   start_chunk(setup, chunk);
-  BatchScratch& batch = chunk.batch;
   if (batch.rows.size() < kBatchRows) {
     batch.rows.resize(kBatchRows);
     batch.inputs.resize(kBatchRows);
@@ -262,8 +266,8 @@ void evaluate_chunk_batch(const EvalSetup& setup, const mf::MfParameters<float>&
   char* p = chunk.text.get();
   std::size_t pending = 0;
   const auto flush = [&] {
-    mf::evaluate_batch(params, std::span<const mf::MfInput<float>>(batch.inputs).first(pending),
-                       setup.options, std::span<mf::MfOutput<float>>(batch.outputs).first(pending));
+    evaluate_many(params, std::span<const mf::MfInput<T>>(batch.inputs).first(pending),
+                  setup.options, std::span<mf::MfOutput<T>>(batch.outputs).first(pending));
     for (std::size_t i = 0; i < pending; ++i) {
       p = format_row(setup, batch.rows[i], batch.outputs[i], p);
       ++chunk.rows;
@@ -279,7 +283,7 @@ void evaluate_chunk_batch(const EvalSetup& setup, const mf::MfParameters<float>&
       flush();  // may throw an earlier row's error instead
       throw;
     }
-    batch.inputs[pending] = input_of<float>(row);
+    batch.inputs[pending] = input_of<T>(row);
     if (++pending == kBatchRows) flush();
   });
   flush();
@@ -352,9 +356,11 @@ MfCsvReport evaluate_csv(const mf::MfParameters<double>& params, const mf::MfOpt
         if (csv.use_fixed) {
           evaluate_chunk(setup, params_q, chunk);
         } else if (csv.use_batch) {
-          evaluate_chunk_batch(setup, params_f, chunk);
+          evaluate_chunk_batch(setup, params_f, chunk, chunk.batch, mf::evaluate_batch);
         } else if (csv.use_float) {
           evaluate_chunk(setup, params_f, chunk);
+        } else if (mf::rows_lanes() > 1) {
+          evaluate_chunk_batch(setup, params, chunk, chunk.double_rows, mf::evaluate_rows);
         } else {
           evaluate_chunk(setup, params, chunk);
         }
