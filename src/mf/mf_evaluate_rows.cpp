@@ -12,20 +12,20 @@
 #include <cstring>
 #include <type_traits>
 
+// Where evaluate<double> (mf_evaluate.cpp: the same flags but this file's -ffp-contract=off)
+// cannot contract a·b + c into an FMA either, so that the lanes give its bits: x86-64 built for a
+// CPU without FMA (the baseline the presets build for). Elsewhere the lanes are not compiled.
+#if defined(__x86_64__) && !defined(__FMA__)
+#define TREAD_ROWS_IN_PAIRS 1
 #include "mf/mf_double_lanes.hpp"
+#endif
 
 namespace tread::mf {
 
 namespace {
 
-// Where evaluate<double> (mf_evaluate.cpp: the same flags but this file's -ffp-contract=off)
-// cannot contract a·b + c into an FMA either, so that the lanes give its bits: x86-64 built for a
-// CPU without FMA (the baseline the presets build for).
-#if defined(__x86_64__) && !defined(__FMA__)
+#if defined(TREAD_ROWS_IN_PAIRS)
 constexpr int kLanes = 2;
-#else
-constexpr int kLanes = 1;
-#endif
 
 // The block with everything inlined, and (GCC) a clone for x86-64-v3 that the loader picks where
 // the CPU has it: VEX encodings, no FMA here (-ffp-contract=off), the same bits; 5 % less CPU than
@@ -70,20 +70,23 @@ TREAD_ROWS_FUNCTION void evaluate_two(const MfParameters<double>& params, const 
     out[i].status = r.status[static_cast<int>(i)];
   }
 }
+#else
+constexpr int kLanes = 1;
+#endif
 
 }  // namespace
 
 void evaluate_rows(const MfParameters<double>& params, std::span<const MfInput<double>> inputs,
                    const MfOptions& options, std::span<MfOutput<double>> outputs) noexcept {
   const std::size_t n = std::min(inputs.size(), outputs.size());
-  if constexpr (kLanes == 1) {
-    for (std::size_t i = 0; i < n; ++i) outputs[i] = evaluate(params, inputs[i], options);
-  } else {
-    for (std::size_t i = 0; i < n; i += 2) {
-      evaluate_two(params, inputs.data() + i, std::min<std::size_t>(2, n - i), options,
-                   outputs.data() + i);
-    }
+#if defined(TREAD_ROWS_IN_PAIRS)
+  for (std::size_t i = 0; i < n; i += 2) {
+    evaluate_two(params, inputs.data() + i, std::min<std::size_t>(2, n - i), options,
+                 outputs.data() + i);
   }
+#else
+  for (std::size_t i = 0; i < n; ++i) outputs[i] = evaluate(params, inputs[i], options);
+#endif
 }
 
 int rows_lanes() noexcept {
