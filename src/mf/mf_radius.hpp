@@ -85,16 +85,17 @@ struct Fz62Curve {
   T fy;
   // Fcy² = (ρz/R0)^q·(Q_FCY·(Fy − Sfyg)/Fz0)², q = 2·Q_FCY2; near a point where the power is
   // known, (1 + δ)^q (see fz62_pow) by
-  //   - float, double, Jets: its [3/3] Padé approximant N(δ)/D(δ), N/D − (1 + δ)^q ≈ e7·δ⁷
+  //   - float, double, double lanes, Jets: its [3/3] Padé approximant N(δ)/D(δ),
+  //     N/D − (1 + δ)^q ≈ e7·δ⁷
   //     with e7 = (q − 3)(q − 2)(q − 1)q(q + 1)(q + 2)(q + 3)/100800;
-  //   - lanes: its [5/5] Padé approximant, N/D − (1 + δ)^q ≈ e11·δ¹¹ with
+  //   - float lanes: its [5/5] Padé approximant, N/D − (1 + δ)^q ≈ e11·δ¹¹ with
   //     e11 = q(q² − 1)(q² − 4)(q² − 9)(q² − 16)(q² − 25)·(5!)²/(10!·11!);
   //   - fixed point: its binomial series to δ⁶ (no division), remainder C(q, 7)·δ⁷.
   T pow_n1, pow_n2, pow_n3;  // N(δ) = 1 + n1·δ + n2·δ² + n3·δ³ (+ n4·δ⁴ + n5·δ⁵; series: C(q, 1…3))
   T pow_d1, pow_d2, pow_d3;  // D(δ) = 1 + d1·δ + d2·δ² + d3·δ³ (+ d4·δ⁴ + d5·δ⁵; series: C(q, 4…6))
-  T pow_n4 = T(0), pow_n5 = T(0), pow_d4 = T(0), pow_d5 = T(0);  // lanes only
-  T pow_remainder;     // the bound's factor on |δ|⁷ (lanes: on t¹¹; see fz62_pow)
-  T pow_floor = T(0);  // lanes: the least δ the approximant takes (see fz62_pow)
+  T pow_n4 = T(0), pow_n5 = T(0), pow_d4 = T(0), pow_d5 = T(0);  // float lanes only
+  T pow_remainder;     // the bound's factor on |δ|⁷ (float lanes: on t¹¹; see fz62_pow)
+  T pow_floor = T(0);  // float lanes: the least δ the approximant takes (see fz62_pow)
 };
 
 /// Fz62Curve but for what the forces Fx and Fy set (fz62_set_forces): four lanes build it before
@@ -289,7 +290,7 @@ struct Fz62PowMemo {
 ///     solve, those left where the second evaluation's deflection is 1.3 to 2.3 times the
 ///     start's (Fcy²'s power, which the start leaves out, matters most there). The [5/5] one in
 ///     float measured 10 ns slower per evaluation (the portable scalar build has no FMA).
-///   - lanes: the [5/5] Padé approximant where 8·|e11|·t¹¹ (t = δ/(1 + δ/2)) is below half of
+///   - float lanes: the [5/5] Padé approximant where 8·|e11|·t¹¹ (t = δ/(1 + δ/2)) is below half of
 ///     ε, tested without a division, for pow_floor < δ < 1.5: for the sample tyre's q = −0.95
 ///     −0.5 < δ < 1.34. The t form held as a bound wherever it accepts over q ∈ [−20, 20] and
 ///     δ ∈ (−0.9, 2] (a long double grid, step 0.01 in q and 0.001 in δ; the asymptotic e11·δ¹¹
@@ -304,9 +305,14 @@ struct Fz62PowMemo {
 ///     to overlap one with).
 /// Its derivatives are not needed: fz62 takes them as the power times q·x'/x (exact for x^q, and
 /// for the approximation to its accuracy).
+///
+/// `used`: the lanes whose result is used (for the scalars, true: they call it only then). Only
+/// those lanes take the exact power and update their memo, so that a lane's later steps do not
+/// depend on whether a neighbour made this call where its own result was not needed (an unloaded
+/// lane: the scalars do not call it there).
 template <typename T, typename P>
-[[gnu::always_inline]] inline T fz62_pow(const Fz62Curve<T, P>& c, const T& x,
-                                         Fz62PowMemo<T>& memo) {
+[[gnu::always_inline]] inline T fz62_pow(const Fz62Curve<T, P>& c, const T& x, Fz62PowMemo<T>& memo,
+                                         const MaskOf<T>& used) {
   constexpr bool coarse = std::is_same_v<T, float> || is_float_lanes<T> || is_fixed_point<T>;
   // Without a base in any lane, pow alone, without the approximation.
   auto near = memo.base > T(0);
@@ -349,13 +355,20 @@ template <typename T, typename P>
       }
     }
   }
-  const auto far = !near;
+  const auto far = used && !near;
   if (!any_lane(far)) return approx;
   const T exact = T(pow(x, T(c.pow_q)));
   memo.base = if_else(far, x, memo.base);
   memo.inv_base = if_else(far, T(1) / x, memo.inv_base);
   memo.value = if_else(far, exact, memo.value);
   return if_else(far, exact, approx);
+}
+
+/// fz62_pow with every lane's result used.
+template <typename T, typename P>
+[[gnu::always_inline]] inline T fz62_pow(const Fz62Curve<T, P>& c, const T& x,
+                                         Fz62PowMemo<T>& memo) {
+  return fz62_pow(c, x, memo, T(0) <= T(0));
 }
 
 /// Fz62 − Fz at a loaded radius with its first two derivatives, and the deflection ρz there with
@@ -398,7 +411,7 @@ template <bool kSecond, typename T, typename P>
   T power = zero_exponent ? T(1) : T(0);
   constexpr bool kScalarParameters = std::is_arithmetic_v<P> || is_fixed_point<P>;
   if (!(kScalarParameters && zero_exponent) && any_lane(loaded)) {
-    power = if_else(loaded, fz62_pow(c, if_else(loaded, x, T(1)), memo), power);
+    power = if_else(loaded, fz62_pow(c, if_else(loaded, x, T(1)), memo, loaded), power);
   }
   const T lateral = c.fcy_per_force * (c.fy - sfyg);
   const T dlateral = c.fcy_per_force * dsfyg;  // −dL/dRl
@@ -439,11 +452,11 @@ template <bool kSecond, typename T, typename P>
 
 /// x = ρ/R0 with q_fz2·x² + q_fz1·x = Fz / E, E = (base − Fcy²)·(1 + PFZ1·dpi)·Fz0, the start of
 /// loaded_radius62:
-/// - double (and Jets): the positive root written without cancellation,
+/// - double (and double lanes, Jets): the positive root written without cancellation,
 ///   2·Fz / (E·q_fz1 + √(E·(E·q_fz1² + 4·q_fz2·Fz))), one division where Fz / E first would take
 ///   two (the start heads the solve's dependent chain: measured −3 ns per solve). 0 where Fz or E
 ///   is not positive.
-/// - float and lanes: the root's continued fraction cut after its third convergent. With
+/// - float and float lanes: the root's continued fraction cut after its third convergent. With
 ///   u = q_fz2·Fz/(E·q_fz1²) the root is (Fz/(E·q_fz1))·f(u), f = 2/(1 + √(1 + 4u)), and f solves
 ///   f = 1/(1 + u·f); its third convergent (1 + 2u)/(1 + 3u + u²) is below f by at most u⁴·f
 ///   (4e-5 at u = 0.08, the sample MF 6.2 tyre at FNOMIN; 0.2 % at 0.3; 3 % at 1) and equal to it

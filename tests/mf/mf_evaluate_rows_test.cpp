@@ -8,6 +8,7 @@
 //     length.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstddef>
 #include <cstdio>
 #include <cstring>
@@ -157,6 +158,56 @@ TEST(MfEvaluateRows, EveryLengthAndPlaceInABlock) {
       }
     }
   }
+}
+
+// MF 6.2's loaded-radius solve where a point's deflection can fall to zero between steps and
+// rise again (the vertical stiffness reduced by camber, Q_CAM3·|γ| ≥ 1; a negative camber scale,
+// ASPECT_RATIO > 2.15; a pressure factor 1 + PFZ1·dpi ≤ 0 with the limits off), beside every
+// kind of neighbour: each point still gets evaluate<double>'s bits. The power's memo is updated
+// only in the lanes whose power is used (fz62_pow's `used`): an unloaded lane, where the scalar
+// does not call it, no longer has its memo set because its neighbour is loaded. (Counted once:
+// this test makes about 8 900 such calls with an unloaded lane; before that change they did not
+// change a bit here either, but a lane's later steps could depend on its neighbour.)
+TEST(MfEvaluateRows, LoadedRadiusWhereTheDeflectionVanishesMidSolve) {
+  const MfParameters<double> base =
+      tyre::load_mf_parameters(testing::tyre_file("MagicFormula62_Parameters.tir")).params;
+  std::mt19937_64 rng(41);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::size_t compared = 0;
+  for (int variant = 0; variant < 24; ++variant) {
+    MfParameters<double> p = base;
+    p.q_cam3 = std::array{base.q_cam3, 3.0, 30.0}[static_cast<std::size_t>(variant % 3)];
+    p.aspect_ratio = variant % 2 == 0 ? base.aspect_ratio : 3.0;
+    p.pfz1 = (variant / 2) % 2 == 0 ? base.pfz1 : 3.0;
+    p.q_fcy2 = (variant / 4) % 2 == 0 ? base.q_fcy2 : 0.6;
+    for (const int mode : {111, 211, 221}) {
+      MfOptions o = options_from_use_mode(mode).value;
+      o.extras = true;
+      const std::size_t n = 400;
+      std::vector<MfInput<double>> in(n);
+      for (MfInput<double>& x : in) {
+        x.fz_n = p.fnomin_n * 3.0 * unit(rng);
+        x.kappa = 0.4 * (unit(rng) - 0.5);
+        x.alpha_rad = 0.8 * (unit(rng) - 0.5);
+        x.gamma_rad = 2.0 * (unit(rng) - 0.5);
+        x.vx_mps = 1.0 + 40.0 * unit(rng);
+        x.p_pa = p.nompres_pa * (0.1 + 1.9 * unit(rng));
+      }
+      std::vector<MfOutput<double>> got(n);
+      evaluate_rows(p, in, o, got);
+      for (std::size_t i = 0; i < n; ++i) {
+        const MfOutput<double> want = evaluate(p, in[i], o);
+        const std::string where =
+            "variant " + std::to_string(variant) + " mode " + std::to_string(mode);
+        ASSERT_EQ(got[i].status, want.status) << where;
+        const std::size_t k = first_difference(got[i], want);
+        ASSERT_EQ(k, kFields) << where << " point " << i << " field " << k << ": "
+                              << field(got[i], k) << " vs " << field(want, k) << describe(in[i]);
+        ++compared;
+      }
+    }
+  }
+  std::printf("[ compared ] %zu points, all bit for bit\n", compared);
 }
 
 }  // namespace
