@@ -111,7 +111,7 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
 
   // Combined slip (or, with options.combined off, the pure-slip forces). The Magic Formula cores
   // of an evaluation are gathered first and evaluated together (mf_cores: float in passes of four
-  // lanes, double and Jet one by one): Fx0, Fy0, Gyk's two, and in combined slip the trail's,
+  // lanes, double stage by stage, Jet one by one): Fx0, Fy0, Gyk's two, and in combined slip the trail's,
   // Gxa's two and (MF 6.x) Fy0(γ = 0)'s.
   T svyk = T(0);
   T gyk = T(1);

@@ -12,9 +12,11 @@
 #include <cstring>
 #include <type_traits>
 
-// Where evaluate<double> (mf_evaluate.cpp: the same flags but this file's -ffp-contract=off)
-// cannot contract a·b + c into an FMA either, so that the lanes give its bits: x86-64 built for a
-// CPU without FMA (the baseline the presets build for). Elsewhere the lanes are not compiled.
+// Where evaluate<double> (mf_evaluate.cpp, built for the same CPU as this file) cannot contract
+// a·b + c into an FMA either, so that the lanes give its bits: x86-64 built for a CPU without FMA
+// (the baseline the presets build for). The optimisation and the sanitizers may differ between
+// the two files (the asan preset builds mf_evaluate.cpp -O1 and instrumented): IEEE double
+// arithmetic on SSE2 gives the same bits either way. Elsewhere the lanes are not compiled.
 #if defined(__x86_64__) && !defined(__FMA__)
 #define TREAD_ROWS_IN_PAIRS 1
 #include "mf/mf_double_lanes.hpp"
@@ -42,6 +44,8 @@ using DL = dlanes::DLanes<N>;
 constexpr std::size_t kInputFields = sizeof(MfInput<double>) / sizeof(double);
 constexpr std::size_t kOutputFields = offsetof(MfOutput<double>, status) / sizeof(double);
 static_assert(std::is_standard_layout_v<MfInput<double>> && kInputFields == 7);
+static_assert(std::is_trivially_copyable_v<MfInput<DL<2>>> &&
+              std::is_trivially_copyable_v<MfOutput<DL<2>>>);
 static_assert(offsetof(MfOutput<double>, kxk_n) == (kOutputFields - 1) * sizeof(double));
 static_assert(sizeof(MfInput<DL<2>>) == kInputFields * sizeof(DL<2>));
 static_assert(offsetof(MfOutput<DL<2>>, status) == kOutputFields * sizeof(DL<2>));
@@ -50,23 +54,22 @@ static_assert(offsetof(MfOutput<DL<2>>, status) == kOutputFields * sizeof(DL<2>)
 TREAD_ROWS_FUNCTION void evaluate_two(const MfParameters<double>& params, const MfInput<double>* in,
                                       std::size_t n, const MfOptions& options,
                                       MfOutput<double>* out) noexcept {
+  // MfInput and MfOutput are runs of their scalar (MfOutput: then its status), copied as such.
+  double first[kInputFields];
+  double second[kInputFields];
+  std::memcpy(first, &in[0], sizeof first);
+  std::memcpy(second, &in[n > 1 ? 1 : 0], sizeof second);
+  DL<2> in_fields[kInputFields];
+  for (std::size_t f = 0; f < kInputFields; ++f) in_fields[f].v = DL<2>::D{first[f], second[f]};
   MfInput<DL<2>> lanes_in;
-  auto* in_fields = reinterpret_cast<DL<2>*>(&lanes_in);
-  const MfInput<double>& second = in[n > 1 ? 1 : 0];
-  for (std::size_t f = 0; f < kInputFields; ++f) {
-    double a;
-    double b;
-    std::memcpy(&a, reinterpret_cast<const char*>(&in[0]) + f * sizeof(double), sizeof a);
-    std::memcpy(&b, reinterpret_cast<const char*>(&second) + f * sizeof(double), sizeof b);
-    in_fields[f].v = DL<2>::D{a, b};
-  }
+  std::memcpy(static_cast<void*>(&lanes_in), in_fields, sizeof in_fields);
   const MfOutput<DL<2>> r = evaluate(params, lanes_in, options);
-  const auto* out_fields = reinterpret_cast<const DL<2>*>(&r);
+  DL<2> out_fields[kOutputFields];
+  std::memcpy(out_fields, static_cast<const void*>(&r), sizeof out_fields);
   for (std::size_t i = 0; i < n; ++i) {
-    for (std::size_t f = 0; f < kOutputFields; ++f) {
-      const double v = out_fields[f].v[i];
-      std::memcpy(reinterpret_cast<char*>(&out[i]) + f * sizeof(double), &v, sizeof v);
-    }
+    double values[kOutputFields];
+    for (std::size_t f = 0; f < kOutputFields; ++f) values[f] = out_fields[f].v[i];
+    std::memcpy(static_cast<void*>(&out[i]), values, sizeof values);
     out[i].status = r.status[static_cast<int>(i)];
   }
 }

@@ -196,14 +196,15 @@ TEST(MfMath, DoubleCoresAreTheFormulaBitForBit) {
                              -1e300,
                              std::numeric_limits<double>::infinity(),
                              std::numeric_limits<double>::quiet_NaN(),
-                             5e-324};
+                             5e-324,
+                             -std::numeric_limits<double>::infinity()};
   long compared = 0;
   for (int n = 0; n < 100000; ++n) {
     Cores<double> cores;
     const int count = 1 + n % kMaxCores;
     for (int k = 0; k < count; ++k) {
       double x = uniform(-50.0, 50.0);
-      if ((n + k) % 97 == 0) x = specials[static_cast<std::size_t>(n / 97 + k) % 7];
+      if ((n + k) % 97 == 0) x = specials[static_cast<std::size_t>(n / 97 + k) % 8];
       cores.add(uniform(0.5, 2.5), x, uniform(-3.0, 1.0), uniform(0.0, 1.0) < 0.5);
     }
     double out[kMaxCores];
