@@ -144,7 +144,8 @@ void print_rig_report(std::ostream& out, const RigReport& r) {
       << " (frames the kernel dropped for the rig's full receive queue, SO_RXQ_OVFL; buffer "
       << r.receive_buffer_bytes << " bytes)\n";
   out << "answers checked      " << r.answers.answers_checked << " (stale "
-      << r.answers.stale_answers << ")\n";
+      << r.answers.stale_answers << "; " << r.answers.other_answers
+      << " answers of the node to no cycle the rig waited for, not taken)\n";
   out << "max |dF|             " << r.answers.max_force_error_n << " N, max |dMz| "
       << r.answers.max_moment_error_nm << " N m, max |d delta_r| " << r.answers.max_delta_r_error_mm
       << " mm (vs the reference in double; quantisation 0.5 N / 0.025 N m / 0.0005 mm)\n";

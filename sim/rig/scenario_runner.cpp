@@ -17,6 +17,7 @@ void AnswerCheck::add(const AnswerCheck& other) {
   answers_checked += other.answers_checked;
   stale_answers += other.stale_answers;
   unchecked_cycles += other.unchecked_cycles;
+  other_answers += other.other_answers;
   max_force_error_n = std::max(max_force_error_n, other.max_force_error_n);
   max_moment_error_nm = std::max(max_moment_error_nm, other.max_moment_error_nm);
   max_delta_r_error_mm = std::max(max_delta_r_error_mm, other.max_delta_r_error_mm);
@@ -65,7 +66,9 @@ std::span<const proto::CanFrame> ScenarioRunner::begin_cycle(double t_s, std::ui
   scenario_.inputs(t_s, d);
   d.rig_cycle = rig_cycle;
   frame_count_ = link_.encode_cycle(d, frames_);
+  rig_cycle_ = rig_cycle;
   received_mask_ = 0;
+  other_answer_ = false;
   // The inputs as the node decodes them (after quantisation): the reference is evaluated on these.
   for (std::size_t k = 0; k < frame_count_; ++k) {
     const proto::MessageSpec* m = proto::find_message(layout_, frames_[k].id);
@@ -80,15 +83,24 @@ bool ScenarioRunner::on_frame(const proto::CanFrame& frame) {
   if (frame.error || frame.extended) {
     return false;
   }
-  if (link_.receive(frame, answers_) != Status::ok) {
+  if (frame.id == proto::kNodeStatusId) {
+    // The node sends its status first: a status starts an answer, so frames of two computations
+    // are never merged. In sync mode it names the rig cycle it answers.
+    if (link_.receive(frame, other_) != Status::ok) {
+      return false;
+    }
+    received_mask_ = 0;
+    other_answer_ = !proto::answers_rig_cycle(other_.status, rig_cycle_);
+    if (other_answer_) {
+      ++check_.other_answers;
+      return false;
+    }
+    answers_.status = other_.status;
+  } else if (link_.receive(frame, other_answer_ ? other_ : answers_) != Status::ok ||
+             other_answer_) {
     return false;
   }
   const proto::MessageSpec* m = proto::find_message(layout_, frame.id);
-  if (frame.id == proto::kNodeStatusId) {
-    // The node sends its status first: a status starts an answer, so frames of two computations
-    // (e.g. one of the node's own input-timeout computations and the answer) are never merged.
-    received_mask_ = 0;
-  }
   received_mask_ |= std::uint64_t{1} << proto::message_index(layout_, *m);
   return (received_mask_ & expected_mask_) == expected_mask_;
 }
@@ -180,6 +192,9 @@ void print_scenario_outcome(std::ostream& out, const ScenarioOutcome& o) {
   if (o.check.stale_answers > 0) out << " (" << o.check.stale_answers << " stale)";
   if (o.check.unchecked_cycles > 0) {
     out << "; " << o.check.unchecked_cycles << " cycles without an answer in time (not checked)";
+  }
+  if (o.check.other_answers > 0) {
+    out << "; " << o.check.other_answers << " answers of the node to no cycle the rig waited for";
   }
   out << "\n";
   for (const ScenarioMetric& m : o.metrics) {

@@ -129,7 +129,11 @@ class Node {
       apply_command();
       return false;
     }
-    return m->id == proto::kRigCycleId || m->id == proto::kRigInputsFdId;
+    const bool cycle_frame = m->id == proto::kRigCycleId || m->id == proto::kRigInputsFdId;
+    if (cycle_frame) {
+      answered_rig_cycle_ = static_cast<std::uint16_t>(latest_.rig_cycle & 0xFFFFU);
+    }
+    return cycle_frame;
   }
 
   /// Computes every channel at `now_ns` and encodes the output frames into `tx`.
@@ -303,7 +307,12 @@ class Node {
                                   (config_.schedule == Schedule::sync ? proto::kNodeSyncMode : 0U) |
                                   (counters_.overruns > 0U ? proto::kNodeOverrun : 0U) |
                                   (config_.layout == proto::Layout::fd ? proto::kNodeFd : 0U));
-    st.cycle = static_cast<std::uint16_t>(counters_.cycles & 0xFFFFU);
+    // Sync mode: the rig cycle this answers, so that a rig in lockstep tells its answer from one of
+    // the node's input-timeout computations (those repeat the last rig cycle, kNoRigCycle before
+    // any), which can reach the rig while it waits for the answer to a cycle it has just sent.
+    st.cycle = config_.schedule == Schedule::sync
+                   ? answered_rig_cycle_
+                   : static_cast<std::uint16_t>(counters_.cycles & 0xFFFFU);
     st.overruns = saturate8(counters_.overruns);
     st.rejected = saturate8(counters_.rx_rejected());
     st.stale_mask = masks.stale;
@@ -438,6 +447,8 @@ class Node {
   proto::FieldMap<RigData> rx_fields_;
   proto::FieldMap<NodeData> tx_fields_;
   bool enabled_{true};
+  /// Sync mode: the low 16 bits of the last cycle frame's RigCycle (NodeStatus.Cycle echoes it).
+  std::uint16_t answered_rig_cycle_{proto::kNoRigCycle};
   RigData latest_{};
   NodeData outputs_{};
   NodeCounters counters_{};

@@ -138,6 +138,9 @@ inline constexpr std::uint8_t kNodeSyncMode = 1U << 1U;
 inline constexpr std::uint8_t kNodeOverrun = 1U << 2U;  ///< at least one overrun since start
 inline constexpr std::uint8_t kNodeFd = 1U << 3U;
 
+/// NodeStatus.Cycle of a node in sync mode before it has received any cycle frame.
+inline constexpr std::uint16_t kNoRigCycle = 0xFFFFU;
+
 struct NodeStatusData {
   std::uint8_t state{0};
   std::uint16_t cycle{0};
@@ -146,6 +149,15 @@ struct NodeStatusData {
   std::uint8_t stale_mask{0};  ///< bit i: wheel i (0..3), 4+j: wheelset j, 6+j: its forces
   std::uint8_t clamp_mask{0};
 };
+
+/// Whether a NodeStatus can be the answer to rig cycle `rig_cycle`. In sync mode NodeStatus.Cycle
+/// is the low 16 bits of the RigCycle the node answers (its input-timeout computations repeat the
+/// last one): only that cycle's. In periodic mode it is the node's own count: any.
+[[nodiscard]] constexpr bool answers_rig_cycle(const NodeStatusData& status,
+                                               std::uint32_t rig_cycle) noexcept {
+  return (status.state & kNodeSyncMode) == 0U ||
+         status.cycle == static_cast<std::uint16_t>(rig_cycle & 0xFFFFU);
+}
 
 template <typename S>
 struct BasicNodeData {

@@ -123,7 +123,10 @@ constexpr auto make_role_table() noexcept {
       role_row<wheelset>(Role::ws_status, &WheelsetOut::status, kStatusBits),
       role_row<node_status>(Role::node_state, &NodeStatusData::state,
                             "bit0 enabled, bit1 sync mode, bit2 overrun seen, bit3 FD layout"),
-      role_row<node_status>(Role::node_cycle, &NodeStatusData::cycle, "node cycle number (wraps)"),
+      role_row<node_status>(Role::node_cycle, &NodeStatusData::cycle,
+                            "periodic mode: node cycle number (wraps); sync mode: the RigCycle "
+                            "answered, low 16 bits (an input-timeout computation repeats the last; "
+                            "65535 before any)"),
       role_row<node_status>(Role::node_overruns, &NodeStatusData::overruns,
                             "missed deadlines since start (saturating)"),
       role_row<node_status>(Role::node_rejected, &NodeStatusData::rejected,

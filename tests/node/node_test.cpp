@@ -110,6 +110,41 @@ TEST_P(NodeLayout, StaleInputsGiveZeroOutputsAndRecover) {
   EXPECT_NE(out.wheels[3].fx_n, 0.0F);
 }
 
+TEST_P(NodeLayout, SyncModeStatusNamesTheRigCycleItAnswers) {
+  Harness h(GetParam(), 4, 2, Schedule::sync);
+  proto::RigData in = h.inputs();
+  // An input-timeout computation before any cycle frame answers no rig cycle.
+  proto::NodeData out = h.cycle(1 * kMs, in, false);
+  EXPECT_EQ(out.status.state & proto::kNodeSyncMode, proto::kNodeSyncMode);
+  EXPECT_EQ(out.status.cycle, proto::kNoRigCycle);
+  EXPECT_FALSE(proto::answers_rig_cycle(out.status, 0));
+  for (const std::uint32_t rig_cycle : {0U, 1U, 7U, 65'535U, 65'536U, 4'000'000'001U}) {
+    in.rig_cycle = rig_cycle;
+    out = h.cycle(2 * kMs, in);
+    EXPECT_TRUE(h.last_sync);
+    EXPECT_EQ(out.status.cycle, static_cast<std::uint16_t>(rig_cycle & 0xFFFFU)) << rig_cycle;
+    EXPECT_TRUE(proto::answers_rig_cycle(out.status, rig_cycle)) << rig_cycle;
+    // The node's own computation before the next cycle frame repeats the last cycle: the rig,
+    // waiting for rig_cycle + 1 by then, does not take it.
+    out = h.cycle(3 * kMs, in, false);
+    EXPECT_EQ(out.status.cycle, static_cast<std::uint16_t>(rig_cycle & 0xFFFFU)) << rig_cycle;
+    EXPECT_FALSE(proto::answers_rig_cycle(out.status, rig_cycle + 1U)) << rig_cycle;
+  }
+  EXPECT_EQ(h.node.counters().rx_rejected(), 0U);
+}
+
+TEST_P(NodeLayout, PeriodicModeStatusCountsTheNodesCycles) {
+  Harness h(GetParam());
+  proto::RigData in = h.inputs();
+  in.rig_cycle = 500;
+  for (std::uint16_t k = 1; k <= 3; ++k) {
+    const proto::NodeData out = h.cycle(k * kMs, in, k != 2);
+    EXPECT_EQ(out.status.state & proto::kNodeSyncMode, 0U);
+    EXPECT_EQ(out.status.cycle, k);
+    EXPECT_TRUE(proto::answers_rig_cycle(out.status, 12345U));  // periodic: cannot tell, any
+  }
+}
+
 TEST_P(NodeLayout, CorruptedRepeatedAndMisSizedFramesAreRejectedAndCounted) {
   Harness h(GetParam());
   const proto::RigData in = h.inputs();

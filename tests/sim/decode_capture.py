@@ -16,6 +16,10 @@ the counters or the cycles, and the check fails as the capture's, not as the nod
 rig's cycle frame), the values canmatrix decodes equal the rig's traces: the slips, loads and
 lateral displacements the rig sent (within half a quantisation step of the trace's unquantised
 value, plus float rounding) and the forces, moments and delta r the node answered (equal to what tread decoded).
+Every cycle has its answer: with a node in sync mode (NodeStatus State bit 1) the computation whose
+NodeStatus Cycle is the cycle's RigCycle (low 16 bits); the node's input-timeout computations,
+which repeat the last RigCycle, answer none and are counted apart. In periodic mode, the first
+computation after the cycle's frames.
 Prints 'decode_capture: ...' and exits non-zero on any mismatch.
 """
 import csv
@@ -82,6 +86,8 @@ def main():
     counters = {}
     cycles = []  # per rig cycle: {'rig': {...}, 'node': {...}}
     current = None
+    taking = False  # the node frames since the last NodeStatus are the current cycle's answer
+    other_answers = 0
     steps = {}
     for n, fid, fd, payload in frames:
         frame = db.frame_by_id(canmatrix.ArbitrationId(fid))
@@ -108,14 +114,19 @@ def main():
             current["rig"].update(decoded)
             if "RigCycle" in decoded:
                 current["closed"] = True  # the cycle frame comes last
-        elif current is not None and not current.get("answered"):
-            # One answer per cycle (NodeStatus first): a second NodeStatus before the next rig
-            # cycle is a computation of the node's own (its input timeout), not this cycle's answer.
-            if "Cycle" in decoded:
-                if current.get("status"):
-                    current["answered"] = True
-                    continue
-                current["status"] = True
+            continue
+        if "Cycle" in decoded:
+            # A NodeStatus starts a computation's frames. In sync mode (State bit 1) its Cycle is
+            # the RigCycle it answers: the input-timeout computations (repeating the last, 65535
+            # before any) answer no cycle. In periodic mode the first after the cycle frame is it.
+            sync = int(decoded["State"]) & 2 != 0
+            taking = (current is not None and not current.get("answered")
+                      and (not sync or int(decoded["Cycle"]) == int(current["rig"].get("RigCycle", -1)) % 65536))
+            if taking:
+                current["answered"] = True
+            else:
+                other_answers += 1
+        if taking:
             current["node"].update(decoded)  # answers before the rig's first cycle are skipped
     compared = 0
     if dropped:
@@ -141,6 +152,8 @@ def main():
         where = f"cycle {c} ({path} row {i + 1})"
         if int(cycle["rig"].get("RigCycle", -1)) != c:
             failures.append(f"{where}: RigCycle {cycle['rig'].get('RigCycle')} (a cycle missing?)")
+        if not cycle.get("answered"):
+            failures.append(f"{where}: no answer of the node to this cycle in the capture")
         node, sent = cycle["node"], cycle["rig"]
         for w in range(4):
             if f"Fx_N_{w}" in row:  # road-vehicle traces: inputs of this cycle, answers of this cycle
@@ -161,7 +174,8 @@ def main():
     for f in failures[:20]:
         print("FAIL:", f)
     print(f"decode_capture: {len(frames)} frames, {len(cycles)} rig cycles, {compared} values compared "
-          f"with the traces, capture drops {dropped}, {len(failures)} failures")
+          f"with the traces, {other_answers} answers of the node to no rig cycle, capture drops "
+          f"{dropped}, {len(failures)} failures")
     return 1 if failures else 0
 
 
