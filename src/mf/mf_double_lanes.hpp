@@ -27,17 +27,14 @@
 
 namespace tread::mf::dlanes {
 
+/// Two lanes (one SSE2 register): four measured slower on the AVX2 VM (two registers a value,
+/// spilled around each libm call), so only two are defined.
 template <int N>
 struct VectorOf;
 template <>
 struct VectorOf<2> {
   using D = double __attribute__((vector_size(16)));
   using I = std::int64_t __attribute__((vector_size(16)));
-};
-template <>
-struct VectorOf<4> {
-  using D = double __attribute__((vector_size(32)));
-  using I = std::int64_t __attribute__((vector_size(32)));
 };
 
 /// A per-lane truth value: all bits set where true.
@@ -149,22 +146,6 @@ inline DLanes<N> cos_atan(const DLanes<N>& x) {
   const DLanes<N> inv = DLanes<N>(1.0) / a;
   return if_else(a > DLanes<N>(1.0), inv / sqrt(DLanes<N>(1.0) + inv * inv),
                  DLanes<N>(1.0) / sqrt(DLanes<N>(1.0) + x * x));
-}
-
-/// The Magic Formula cores as double's mf_cores computes them (stage by stage over the cores), on
-/// every lane.
-template <int N>
-void mf_cores(const detail::Cores<DLanes<N>>& in, DLanes<N> (&out)[detail::kMaxCores]) {
-  DLanes<N> inner[detail::kMaxCores];
-  for (int i = 0; i < in.count; ++i) inner[i] = atan(in.x[i]);
-  DLanes<N> outer[detail::kMaxCores];
-  for (int i = 0; i < in.count; ++i) {
-    const DLanes<N>& x = in.x[i];
-    outer[i] = atan(x - in.e[i] * (x - inner[i]));
-  }
-  for (int i = 0; i < in.count; ++i) {
-    out[i] = in.cosine[i] ? cos(in.c[i] * outer[i]) : sin(in.c[i] * outer[i]);
-  }
 }
 
 /// MfOutput<DLanes<N>>::status: per lane, whether an input left the finite-arithmetic envelope and

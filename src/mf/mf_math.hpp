@@ -11,9 +11,9 @@
 //   FMA sinf/cosf/expf/logf in scalar code, also with -march=haswell, so they were removed.
 //   The Magic Formula's core trig(C·atan(x − E·(x − atan x))) goes through mf_cores, all (up to
 //   eight) cores of an evaluation at once: for float in passes of four vector lanes (tread's atan,
-//   sin and cos on GCC vector types), ~2x cheaper per core than scalar passes; for double the
-//   scalar formula stage by stage over the cores, for Jet core by core, so their results do not
-//   change by a bit (the four-lane scalar of mf_lanes.hpp has its own mf_cores).
+//   sin and cos on GCC vector types), ~2x cheaper per core than scalar passes; for double, the
+//   double lanes and Jet the formula as written, stage by stage over the cores, so their results
+//   do not change by a bit (the four-lane scalar of mf_lanes.hpp has its own mf_cores).
 //   Errors of the float functions: tests/mf/mf_math_test.cpp.
 // Identity used by the evaluation: cos(atan x) = 1/√(1+x²), written without overflow for huge x.
 
@@ -219,29 +219,22 @@ struct Cores {
   int slot_of(int group, int k) const { return group + k < count ? group + k : group; }
 };
 
-/// double: each core exactly as the formula is written, but stage by stage over all cores (every
-/// inner atan, then every outer atan, then every sin/cos), so that the calls next to each other do
-/// not wait for each other's results: the same operations on the same values, so the same bits.
-inline void mf_cores(const Cores<double>& in, double (&out)[kMaxCores]) {
-  double inner[kMaxCores];
-  for (int i = 0; i < in.count; ++i) inner[i] = std::atan(in.x[i]);
-  double outer[kMaxCores];
-  for (int i = 0; i < in.count; ++i) {
-    const double x = in.x[i];
-    outer[i] = std::atan(x - in.e[i] * (x - inner[i]));
-  }
-  for (int i = 0; i < in.count; ++i) {
-    out[i] = in.cosine[i] ? std::cos(in.c[i] * outer[i]) : std::sin(in.c[i] * outer[i]);
-  }
-}
-
-/// Generic scalars (ceres::Jet): each core exactly as the formula is written, one by one.
+/// double, double lanes (mf_double_lanes.hpp) and generic scalars (ceres::Jet): each core exactly
+/// as the formula is written, but stage by stage over all cores (every inner atan, then every outer
+/// atan, then every sin/cos), so that the library calls next to each other do not wait for each
+/// other's results: the same operations on the same values, so the same bits as core by core.
+/// (float and the float lanes have their own, with the fast approximants.)
 template <typename T>
 void mf_cores(const Cores<T>& in, T (&out)[kMaxCores]) {
+  T inner[kMaxCores];
+  for (int i = 0; i < in.count; ++i) inner[i] = mf_atan(in.x[i]);
+  T outer[kMaxCores];
   for (int i = 0; i < in.count; ++i) {
     const T& x = in.x[i];
-    out[i] = in.cosine[i] ? mf_cos(in.c[i] * mf_atan(x - in.e[i] * (x - mf_atan(x))))
-                          : mf_sin(in.c[i] * mf_atan(x - in.e[i] * (x - mf_atan(x))));
+    outer[i] = mf_atan(x - in.e[i] * (x - inner[i]));
+  }
+  for (int i = 0; i < in.count; ++i) {
+    out[i] = in.cosine[i] ? mf_cos(in.c[i] * outer[i]) : mf_sin(in.c[i] * outer[i]);
   }
 }
 
