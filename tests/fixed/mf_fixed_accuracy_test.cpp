@@ -25,6 +25,7 @@
 #include "mf/mf_fixed.hpp"
 #include "mf_fixed_input.hpp"
 #include "mf_output_columns.hpp"
+#include "shipped_mf_tyres.hpp"
 #include "tyre/mf_parameters_from_tir.hpp"
 
 namespace tread::mf {
@@ -121,14 +122,8 @@ TEST(MfFixedAccuracy, EveryMfTirEveryUseModeWithinOneThousandthOfEachPeak) {
   std::vector<FileResult> results;
   int files = 0;
   int status_differences = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(testing::tyres_dir())) {
-    if (entry.path().extension() != ".tir") continue;
-    tyre::MfTirParameters loaded;
-    try {
-      loaded = tyre::load_mf_parameters(entry.path());
-    } catch (const std::exception&) {
-      continue;  // PAC89/PAC94: not a Magic Formula file for mf::evaluate
-    }
+  for (const std::filesystem::path& file : testing::shipped_mf_tyre_files()) {
+    const tyre::MfTirParameters loaded = tyre::load_mf_parameters(file);
     ++files;
     const MfParameters<double>& p = loaded.params;
     const MfParameters<Fixed64> pf = to_fixed_parameters(p);
@@ -142,7 +137,7 @@ TEST(MfFixedAccuracy, EveryMfTirEveryUseModeWithinOneThousandthOfEachPeak) {
         want.push_back(evaluate(p, in, options));
         got.push_back(evaluate(pf, to_fixed(in), options));
         if (got.back().status != want.back().status && ++status_differences <= 5) {
-          ADD_FAILURE() << entry.path().filename() << " mode " << mode << ": status "
+          ADD_FAILURE() << file.filename() << " mode " << mode << ": status "
                         << static_cast<int>(got.back().status) << " (double "
                         << static_cast<int>(want.back().status) << ") at Fz " << in.fz_n
                         << " kappa " << in.kappa << " alpha " << in.alpha_rad << " gamma "
@@ -154,7 +149,7 @@ TEST(MfFixedAccuracy, EveryMfTirEveryUseModeWithinOneThousandthOfEachPeak) {
           }
         }
       }
-      FileResult r{entry.path().filename().string(), mode, 0.0, ""};
+      FileResult r{file.filename().string(), mode, 0.0, ""};
       for (std::size_t c = 0; c < columns.size(); ++c) {
         double peak = 0.0;
         for (const auto& o : want) peak = std::max(peak, std::fabs(o.*columns[c].member));

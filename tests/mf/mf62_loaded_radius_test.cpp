@@ -28,6 +28,7 @@
 #include "mf/mf_fixed.hpp"
 #include "mf/mf_lanes.hpp"
 #include "mf_fixed_input.hpp"
+#include "shipped_mf_tyres.hpp"
 #include "tyre/mf_parameters_from_tir.hpp"
 
 namespace tread::mf {
@@ -595,16 +596,11 @@ TEST(Mf62LoadedRadius, LateralHumpRootOrTheBranchsEnd) {
 
 std::vector<std::string> fz62_path_tyres() {
   std::vector<std::string> names;
-  for (const auto& entry : std::filesystem::directory_iterator(testing::tyres_dir())) {
-    if (entry.path().extension() != ".tir") continue;
-    try {
-      if (tyre::load_mf_parameters(entry.path()).params.fit_type == FitType::mf61) continue;
-    } catch (const std::exception&) {
-      continue;  // PAC89/PAC94: not a Magic Formula file
+  for (const std::filesystem::path& file : testing::shipped_mf_tyre_files()) {
+    if (tyre::load_mf_parameters(file).params.fit_type != FitType::mf61) {
+      names.push_back(file.filename().string());
     }
-    names.push_back(entry.path().filename().string());
   }
-  std::sort(names.begin(), names.end());
   return names;
 }
 

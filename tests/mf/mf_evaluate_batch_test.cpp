@@ -28,6 +28,7 @@
 #include "mf/mf_evaluate.hpp"
 #include "mf/mf_evaluate_batch.hpp"
 #include "mf/mf_evaluate_four.hpp"
+#include "shipped_mf_tyres.hpp"
 #include "tyre/mf_parameters_from_tir.hpp"
 
 namespace tread::mf {
@@ -35,13 +36,8 @@ namespace {
 
 std::vector<MfParameters<float>> all_mf_tyres() {
   std::vector<MfParameters<float>> tyres;
-  for (const auto& entry : std::filesystem::directory_iterator(testing::tyres_dir())) {
-    if (entry.path().extension() != ".tir") continue;
-    try {
-      tyres.push_back(convert_parameters<float>(tyre::load_mf_parameters(entry.path()).params));
-    } catch (const std::exception&) {
-      // PAC89/PAC94: not a Magic Formula file
-    }
+  for (const MfParameters<double>& p : testing::shipped_mf_tyres()) {
+    tyres.push_back(convert_parameters<float>(p));
   }
   return tyres;
 }
