@@ -129,6 +129,7 @@ RigReport run_rig(const RigSettings& s) {
   r.node_overruns = status_view.status.overruns;
   r.node_rejected = status_view.status.rejected;
   r.node_cycle = status_view.status.cycle;
+  r.node_state = status_view.status.state;
   return r;
 }
 
@@ -149,8 +150,10 @@ void print_rig_report(std::ostream& out, const RigReport& r) {
   out << "max |dF|             " << r.answers.max_force_error_n << " N, max |dMz| "
       << r.answers.max_moment_error_nm << " N m, max |d delta_r| " << r.answers.max_delta_r_error_mm
       << " mm (vs the reference in double; quantisation 0.5 N / 0.025 N m / 0.0005 mm)\n";
-  out << "node status          cycle " << r.node_cycle << ", overruns " << r.node_overruns
-      << ", rejected " << r.node_rejected << "\n";
+  out << "node status          cycle " << r.node_cycle
+      << ((r.node_state & proto::kNodeSyncMode) != 0U ? " (sync mode: the last rig cycle answered)"
+                                                      : "")
+      << ", overruns " << r.node_overruns << ", rejected " << r.node_rejected << "\n";
   for (const ScenarioOutcome& o : r.scenarios) {
     print_scenario_outcome(out, o);
   }

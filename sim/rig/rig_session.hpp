@@ -64,6 +64,7 @@ struct RigReport {
   std::uint32_t node_overruns{0};  ///< from the last NodeStatus
   std::uint32_t node_rejected{0};
   std::uint32_t node_cycle{0};
+  std::uint8_t node_state{0};  ///< NodeStatus.State of the last status
   std::vector<ScenarioOutcome> scenarios;
 };
 

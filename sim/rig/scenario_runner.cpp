@@ -67,8 +67,10 @@ std::span<const proto::CanFrame> ScenarioRunner::begin_cycle(double t_s, std::ui
   d.rig_cycle = rig_cycle;
   frame_count_ = link_.encode_cycle(d, frames_);
   rig_cycle_ = rig_cycle;
+  cycle_open_ = true;
   received_mask_ = 0;
-  other_answer_ = false;
+  // Until a NodeStatus starts this cycle's answer, frames are the rest of another computation's.
+  other_answer_ = true;
   // The inputs as the node decodes them (after quantisation): the reference is evaluated on these.
   for (std::size_t k = 0; k < frame_count_; ++k) {
     const proto::MessageSpec* m = proto::find_message(layout_, frames_[k].id);
@@ -85,12 +87,13 @@ bool ScenarioRunner::on_frame(const proto::CanFrame& frame) {
   }
   if (frame.id == proto::kNodeStatusId) {
     // The node sends its status first: a status starts an answer, so frames of two computations
-    // are never merged. In sync mode it names the rig cycle it answers.
+    // are never merged. In sync mode it names the rig cycle it answers. Between cycles (after
+    // end_cycle, before begin_cycle) nothing is an answer.
     if (link_.receive(frame, other_) != Status::ok) {
       return false;
     }
     received_mask_ = 0;
-    other_answer_ = !proto::answers_rig_cycle(other_.status, rig_cycle_);
+    other_answer_ = !cycle_open_ || !proto::answers_rig_cycle(other_.status, rig_cycle_);
     if (other_answer_) {
       ++check_.other_answers;
       return false;
@@ -106,6 +109,8 @@ bool ScenarioRunner::on_frame(const proto::CanFrame& frame) {
 }
 
 void ScenarioRunner::end_cycle(double dt_s, bool answered) {
+  cycle_open_ = false;
+  other_answer_ = true;
   check_.unchecked_cycles += answered ? 0U : 1U;
   for (std::size_t i = 0; i < wheels_ && answered && reference_.tyre != nullptr; ++i) {
     const proto::WheelOutput& w = answers_.wheels[i];

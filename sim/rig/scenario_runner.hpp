@@ -32,8 +32,9 @@ struct AnswerCheck {
   /// Cycles without this cycle's answer (none came in time, or the inputs reached the node after
   /// its deadline, so that its answer is of older inputs): not compared.
   std::uint64_t unchecked_cycles{0};
-  /// Answers (NodeStatus and the frames after it) of a sync-mode node to no cycle the rig was
-  /// waiting for: its input-timeout computations, told apart by NodeStatus.Cycle. Not taken.
+  /// The node's answers (NodeStatus and the frames after it) to no cycle the rig was waiting for:
+  /// those arriving between cycles (late ones), and in sync mode those whose NodeStatus.Cycle names
+  /// another rig cycle (the node's input-timeout computations). Decoded aside, not taken.
   std::uint64_t other_answers{0};
   double max_force_error_n{0.0};
   double max_moment_error_nm{0.0};
@@ -57,8 +58,9 @@ class ScenarioRunner {
   /// One frame from the node (others are ignored). True when it completed this cycle's answer:
   /// every output message the node sends for the configured channels has arrived since the last
   /// NodeStatus (which the node sends first) after begin_cycle(). A sync-mode node's NodeStatus
-  /// names the rig cycle it answers: an answer to another (the node's input-timeout computation)
-  /// is decoded aside (its E2E counters still count) and never taken as this cycle's.
+  /// names the rig cycle it answers: an answer to another (the node's input-timeout computation),
+  /// and any frame between end_cycle() and the next begin_cycle(), is decoded aside (its E2E
+  /// counters still count) and never taken as this cycle's.
   bool on_frame(const proto::CanFrame& frame);
   /// Checks the answers (when `answered`: this cycle's answer came, computed on this cycle's
   /// inputs; else the cycle is counted as unchecked), advances the scenario by `dt_s` with the
@@ -89,7 +91,8 @@ class ScenarioRunner {
   std::uint64_t expected_mask_{0};  ///< node output messages of a cycle (by message index)
   std::uint64_t received_mask_{0};
   std::uint32_t rig_cycle_{0};  ///< the cycle begin_cycle() sent
-  bool other_answer_{false};    ///< the frames since the last NodeStatus answer another cycle
+  bool cycle_open_{false};      ///< between begin_cycle() and end_cycle()
+  bool other_answer_{true};  ///< the frames since the last NodeStatus are not this cycle's answer
   proto::RigData seen_{};
   proto::NodeData answers_{};
   proto::NodeData other_{};  ///< where another cycle's answer is decoded

@@ -133,6 +133,27 @@ TEST_P(NodeLayout, SyncModeStatusNamesTheRigCycleItAnswers) {
   EXPECT_EQ(h.node.counters().rx_rejected(), 0U);
 }
 
+TEST_P(NodeLayout, SyncModeEchoIgnoresARejectedCycleFrame) {
+  Harness h(GetParam(), 4, 2, Schedule::sync);
+  proto::RigData in = h.inputs();
+  in.rig_cycle = 41;
+  proto::NodeData out = h.cycle(1 * kMs, in);
+  ASSERT_EQ(out.status.cycle, 41U);
+  // The next cycle's frames with the cycle frame's CRC broken: rejected, so its RigCycle is not
+  // what the node answers.
+  in.rig_cycle = 42;
+  std::array<proto::CanFrame, proto::RigLink::kMaxRigFrames> frames{};
+  const std::size_t n = h.rig.encode_cycle(in, frames);
+  frames[n - 1].data[0] = static_cast<std::uint8_t>(frames[n - 1].data[0] ^ 0x5AU);
+  for (std::size_t k = 0; k < n; ++k) {
+    EXPECT_FALSE(h.node.receive(frames[k], 2 * kMs));
+  }
+  EXPECT_EQ(h.node.counters().rx_bad_crc, 1U);
+  out = h.cycle(3 * kMs, in, false);
+  EXPECT_EQ(out.status.cycle, 41U);
+  EXPECT_FALSE(proto::answers_rig_cycle(out.status, 42));
+}
+
 TEST_P(NodeLayout, PeriodicModeStatusCountsTheNodesCycles) {
   Harness h(GetParam());
   proto::RigData in = h.inputs();

@@ -112,6 +112,31 @@ TEST_P(ScenarioRunnerLayout, TheNodesTimeoutComputationIsNotTakenAsTheCyclesAnsw
   EXPECT_EQ(s.link.rejected(), 0U);  // the answers set aside still kept the E2E counters in step
 }
 
+TEST_P(ScenarioRunnerLayout, AComputationStraddlingTheCyclesStartIsNotTaken) {
+  Lockstep s(GetParam(), node::Schedule::sync);
+  const std::span<const proto::CanFrame> cycle0 = s.runner.begin_cycle(0.0, 0);
+  EXPECT_TRUE(s.node_answers(cycle0, 1 * kMs));
+  s.runner.end_cycle(0.001, true);
+  // The node's timeout computation after cycle 0: its NodeStatus is drained between the cycles,
+  // its other frames come after the rig has begun cycle 1 and the rig gives up on cycle 1 (no
+  // answer): the scenario advances on cycle 0's answer, not on the timeout computation's frames.
+  std::array<proto::CanFrame, node::kMaxTxFrames> tx{};
+  const std::size_t n = s.node.compute(50 * kMs, tx);  // 50 ms later: every channel stale
+  ASSERT_GE(n, 2U);
+  EXPECT_FALSE(s.runner.on_frame(tx[0]));  // between cycles: nothing is an answer
+  EXPECT_EQ(s.runner.check().other_answers, 1U);
+  static_cast<void>(s.runner.begin_cycle(0.001, 1));
+  for (std::size_t k = 1; k < n; ++k) {
+    EXPECT_FALSE(s.runner.on_frame(tx[k]));
+  }
+  s.runner.end_cycle(0.001, false);
+  ASSERT_EQ(s.scenario.taken.size(), 2U);
+  EXPECT_EQ(s.scenario.taken[1].status, 0U);  // cycle 0's answer, not the stale frames
+  EXPECT_NEAR(s.scenario.taken[1].fx_n, 80.0F, 0.5F);
+  EXPECT_EQ(s.runner.check().unchecked_cycles, 1U);
+  EXPECT_EQ(s.link.rejected(), 0U);
+}
+
 TEST_P(ScenarioRunnerLayout, APeriodicNodesFirstComputationAfterTheCycleIsTheAnswer) {
   // In periodic mode NodeStatus.Cycle is the node's own count: the rig cannot tell and takes the
   // first complete computation (the demo's threaded rig orders them by time).

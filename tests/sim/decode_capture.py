@@ -16,10 +16,10 @@ the counters or the cycles, and the check fails as the capture's, not as the nod
 rig's cycle frame), the values canmatrix decodes equal the rig's traces: the slips, loads and
 lateral displacements the rig sent (within half a quantisation step of the trace's unquantised
 value, plus float rounding) and the forces, moments and delta r the node answered (equal to what tread decoded).
-Every cycle has its answer: with a node in sync mode (NodeStatus State bit 1) the computation whose
-NodeStatus Cycle is the cycle's RigCycle (low 16 bits); the node's input-timeout computations,
-which repeat the last RigCycle, answer none and are counted apart. In periodic mode, the first
-computation after the cycle's frames.
+Every cycle has its answer (group_cycles): with a node in sync mode (NodeStatus State bit 1) the
+computation whose NodeStatus Cycle is the cycle's RigCycle (low 16 bits), after the cycle frame;
+the node's input-timeout computations, which repeat the last RigCycle, answer none and are counted
+apart. In periodic mode, the first computation after the cycle's first frame.
 Prints 'decode_capture: ...' and exits non-zero on any mismatch.
 """
 import csv
@@ -72,6 +72,49 @@ def read_trace(path):
     return [{k: float(v) for k, v in r.items()} for r in rows]
 
 
+def group_cycles(events):
+    """Groups a session's decoded frames into rig cycles and gives each the node's answer.
+
+    events: (is_rig, decoded signals) in capture order. A rig cycle is the rig's frames up to and
+    including its cycle frame (the one with RigCycle, sent last). A NodeStatus (the signal Cycle)
+    starts a computation of the node, whose frames follow it. With the node in sync mode (State
+    bit 1) the computation answering a cycle is the one whose Cycle is that cycle's RigCycle (low
+    16 bits), after the cycle frame: the node's input-timeout computations repeat the last RigCycle
+    (65535 before any) and answer none. In periodic mode it is the first computation after the
+    cycle's first frame. Returns (cycles, other_answers): per cycle {'rig': signals, 'node':
+    signals of its answer, 'answered': bool}; other_answers counts the computations that answered
+    no cycle.
+    """
+    cycles = []
+    current = None
+    taking = False  # the node frames since the last NodeStatus are the current cycle's answer
+    other_answers = 0
+    for rig, decoded in events:
+        if rig:
+            if current is None or current["closed"]:
+                current = {"rig": {}, "node": {}, "closed": False, "answered": False}
+                cycles.append(current)
+            current["rig"].update(decoded)
+            if "RigCycle" in decoded:
+                current["closed"] = True
+            continue
+        if "Cycle" in decoded:
+            if current is None or current["answered"]:
+                taking = False
+            elif int(decoded["State"]) & 2:
+                taking = (current["closed"]
+                          and int(decoded["Cycle"]) == int(current["rig"]["RigCycle"]) % 65536)
+            else:
+                taking = True
+            if taking:
+                current["answered"] = True
+            else:
+                other_answers += 1
+        if taking:
+            current["node"].update(decoded)
+    return cycles, other_answers
+
+
 def main():
     if len(sys.argv) < 4:
         print(__doc__)
@@ -84,10 +127,7 @@ def main():
     traces = [(p, read_trace(p)) for p in sys.argv[3:]]
     failures = []
     counters = {}
-    cycles = []  # per rig cycle: {'rig': {...}, 'node': {...}}
-    current = None
-    taking = False  # the node frames since the last NodeStatus are the current cycle's answer
-    other_answers = 0
+    events = []  # (from the rig, decoded signals) in capture order
     steps = {}
     for n, fid, fd, payload in frames:
         frame = db.frame_by_id(canmatrix.ArbitrationId(fid))
@@ -106,28 +146,8 @@ def main():
         if not dropped and fid in counters and counter != (counters[fid] + 1) % 15:
             failures.append(f"line {n}: {frame.name}: counter {counter} after {counters[fid]} (frame lost?)")
         counters[fid] = counter
-        rig = "Rig" in frame.transmitters
-        if rig:
-            if current is None or current["closed"]:
-                current = {"rig": {}, "node": {}, "closed": False, "line": n}
-                cycles.append(current)
-            current["rig"].update(decoded)
-            if "RigCycle" in decoded:
-                current["closed"] = True  # the cycle frame comes last
-            continue
-        if "Cycle" in decoded:
-            # A NodeStatus starts a computation's frames. In sync mode (State bit 1) its Cycle is
-            # the RigCycle it answers: the input-timeout computations (repeating the last, 65535
-            # before any) answer no cycle. In periodic mode the first after the cycle frame is it.
-            sync = int(decoded["State"]) & 2 != 0
-            taking = (current is not None and not current.get("answered")
-                      and (not sync or int(decoded["Cycle"]) == int(current["rig"].get("RigCycle", -1)) % 65536))
-            if taking:
-                current["answered"] = True
-            else:
-                other_answers += 1
-        if taking:
-            current["node"].update(decoded)  # answers before the rig's first cycle are skipped
+        events.append(("Rig" in frame.transmitters, decoded))
+    cycles, other_answers = group_cycles(events)
     compared = 0
     if dropped:
         # Not the node's loss (its own counters say that), but the check against the traces could
