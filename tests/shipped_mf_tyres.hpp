@@ -1,7 +1,7 @@
 #pragma once
-// Every Magic Formula tyre the project ships (data/tyres/*.tir), in file-name order. The PAC89 and
-// PAC94 files there are other models: left out by their detected model, so that a Magic Formula
-// file that fails to load fails the test instead of being skipped.
+// Every Magic Formula tyre the project ships (data/tyres/*.tir), in file-name order, each file read
+// once. The PAC89 and PAC94 files there are other models: left out by their detected model, so
+// that a Magic Formula file that fails to load fails the test instead of being skipped.
 
 #include <algorithm>
 #include <filesystem>
@@ -15,24 +15,31 @@
 
 namespace tread::testing {
 
-inline std::vector<std::filesystem::path> shipped_mf_tyre_files() {
+struct ShippedMfTyre {
+  std::filesystem::path file;
+  tyre::MfTirParameters loaded;
+};
+
+inline std::vector<ShippedMfTyre> shipped_mf_tyre_files() {
   std::vector<std::filesystem::path> files;
   for (const auto& entry : std::filesystem::directory_iterator(tyres_dir())) {
-    if (entry.path().extension() == ".tir" &&
-        tir::detect_model(tir::read_tir(entry.path())).is_magic_formula()) {
-      files.push_back(entry.path());
-    }
+    if (entry.path().extension() == ".tir") files.push_back(entry.path());
   }
   std::sort(files.begin(), files.end());
-  return files;
+  std::vector<ShippedMfTyre> tyres;
+  for (const std::filesystem::path& file : files) {
+    const tir::TirFile tir = tir::read_tyre_property_file(file);
+    if (tir::detect_model(tir).is_magic_formula()) {
+      tyres.push_back({file, tyre::mf_parameters_from_tir(tir)});
+    }
+  }
+  return tyres;
 }
 
 inline std::vector<mf::MfParameters<double>> shipped_mf_tyres() {
-  std::vector<mf::MfParameters<double>> tyres;
-  for (const std::filesystem::path& file : shipped_mf_tyre_files()) {
-    tyres.push_back(tyre::load_mf_parameters(file).params);
-  }
-  return tyres;
+  std::vector<mf::MfParameters<double>> params;
+  for (const ShippedMfTyre& t : shipped_mf_tyre_files()) params.push_back(t.loaded.params);
+  return params;
 }
 
 }  // namespace tread::testing

@@ -122,8 +122,9 @@ TEST(MfFixedAccuracy, EveryMfTirEveryUseModeWithinOneThousandthOfEachPeak) {
   std::vector<FileResult> results;
   int files = 0;
   int status_differences = 0;
-  for (const std::filesystem::path& file : testing::shipped_mf_tyre_files()) {
-    const tyre::MfTirParameters loaded = tyre::load_mf_parameters(file);
+  for (const testing::ShippedMfTyre& shipped : testing::shipped_mf_tyre_files()) {
+    const std::filesystem::path& file = shipped.file;
+    const tyre::MfTirParameters& loaded = shipped.loaded;
     ++files;
     const MfParameters<double>& p = loaded.params;
     const MfParameters<Fixed64> pf = to_fixed_parameters(p);

@@ -596,9 +596,9 @@ TEST(Mf62LoadedRadius, LateralHumpRootOrTheBranchsEnd) {
 
 std::vector<std::string> fz62_path_tyres() {
   std::vector<std::string> names;
-  for (const std::filesystem::path& file : testing::shipped_mf_tyre_files()) {
-    if (tyre::load_mf_parameters(file).params.fit_type != FitType::mf61) {
-      names.push_back(file.filename().string());
+  for (const testing::ShippedMfTyre& shipped : testing::shipped_mf_tyre_files()) {
+    if (shipped.loaded.params.fit_type != FitType::mf61) {
+      names.push_back(shipped.file.filename().string());
     }
   }
   return names;
