@@ -2,11 +2,12 @@
 // The blocks of an evaluate_batch (mf_evaluate_batch.hpp): N wheels packed into
 // MfInput<Lanes<N>>, evaluated once, unpacked; the last, partial block padded with copies of its
 // first wheel. Everything here is always inlined into the function of one width and one
-// instruction set that runs the blocks: evaluate_sixteen and the baseline evaluate_eight in
-// mf_evaluate_batch.cpp, the AVX2 one (evaluate_eight_v3) in mf_evaluate_batch_v3.cpp, which is
-// compiled for x86-64-v3 as a whole (see there and src/mf/CMakeLists.txt why). Internal linkage
-// (static) throughout: a copy left out of line stays in its file, compiled for that file's target,
-// and is never shared between the baseline and the x86-64-v3 code.
+// instruction set that runs the blocks: the baseline evaluate_eight in mf_evaluate_batch.cpp, the
+// AVX2 one (evaluate_eight_v3) in mf_evaluate_batch_v3.cpp and the AVX-512 one
+// (evaluate_sixteen_v4) in mf_evaluate_batch_v4.cpp, each compiled for its level as a whole (see
+// there and src/mf/CMakeLists.txt why). Internal linkage (static) throughout: a copy left out of
+// line stays in its file, compiled for that file's target, and is never shared between the
+// baseline, the x86-64-v3 and the x86-64-v4 code.
 #include <algorithm>
 #include <array>
 #include <cstddef>
@@ -231,6 +232,10 @@ template <int N>
 /// the CPU is x86-64-v3.
 void evaluate_eight_v3(const MfParameters<float>& params, std::span<const MfInput<float>> inputs,
                        const MfOptions& options, std::span<MfOutput<float>> outputs) noexcept;
+/// The 16-lane batch compiled for x86-64-v4 (AVX-512): mf_evaluate_batch_v4.cpp. Call only where
+/// the CPU is x86-64-v4.
+void evaluate_sixteen_v4(const MfParameters<float>& params, std::span<const MfInput<float>> inputs,
+                         const MfOptions& options, std::span<MfOutput<float>> outputs) noexcept;
 #endif
 
 }  // namespace tread::mf::batch

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The wide-lane code (evaluate_four's AVX2 / AVX-512 clones, the batch's evaluate_eight_v3 and
-# evaluate_sixteen)
+# evaluate_sixteen_v4)
 # must call nothing of tread's own out of line but redo_lanes: any other function is compiled for
 # the baseline target, and a wide clone calling it passes its 8- or 16-lane vectors by the
 # baseline's ABI (GCC's -Wpsabi note): slow at best (an out-of-line atan_lanes made the 8-lane batch
@@ -30,7 +30,7 @@ summary=$(tail -n 1 <<<"$report")
 clones=$(sed -E 's/wide functions: ([0-9]+),.*/\1/' <<<"$summary")
 bad=$(sed -E 's/.*disallowed calls: ([0-9]+)/\1/' <<<"$summary")
 if ((clones < 3)); then
-  echo "FAIL: expected evaluate_four's wide clones, evaluate_eight_v3 and evaluate_sixteen" >&2
+  echo "FAIL: expected evaluate_four's wide clones, evaluate_eight_v3 and evaluate_sixteen_v4" >&2
   exit 1
 fi
 if ((bad > 0)); then

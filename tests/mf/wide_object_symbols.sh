@@ -1,51 +1,59 @@
 #!/usr/bin/env bash
-# The code compiled for x86-64-v3 as a whole (src/mf/mf_evaluate_batch_v3.cpp) must define nothing
-# another object could bind to but its entry point: an inline function or template instantiation it
-# left out of line would be a weak (or global, or unique) definition that the linker may pick for
-# baseline code too, which then runs AVX2 instructions on any CPU (an illegal instruction below
-# x86-64-v3). Nor may it run code at load time (.init_array, .ctors), on any CPU.
+# The code compiled for x86-64-v3 or x86-64-v4 as a whole (src/mf/mf_evaluate_batch_v3.cpp,
+# src/mf/mf_evaluate_batch_v4.cpp) must define nothing another object could bind to but its entry
+# point: an inline function or template instantiation it left out of line would be a weak (or
+# global, or unique) definition that the linker may pick for baseline code too, which then runs
+# AVX2 or AVX-512 instructions on any CPU (an illegal instruction below that level). Nor may it run
+# code at load time (.init_array, .ctors), on any CPU.
 # Usage: wide_object_symbols.sh LIBRARY (the static tread_core).
 set -euo pipefail
 library=$(realpath "$1")
-member=mf_evaluate_batch_v3.cpp.o
-entry_prefix=_ZN5tread2mf5batch17evaluate_eight_v3E # tread::mf::batch::evaluate_eight_v3(...)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-if ! (cd "$work" && ar x "$library" "$member" 2>/dev/null) || [[ ! -s $work/$member ]]; then
-  echo "FAIL: no $member in $library" >&2
-  exit 1
-fi
-object=$work/$member
-
-# readelf -sW: Num: Value Size Type Bind Vis Ndx Name. A definition (Ndx not UND) whose binding is
-# not LOCAL (GLOBAL, WEAK, GNU_UNIQUE) other than the entry point.
-symbols=$(readelf -sW "$object")
-bad=$(awk -v entry="$entry_prefix" '$1 ~ /^[0-9]+:$/ && $7 != "UND" && $5 != "LOCAL" &&
-  index($8, entry) != 1 { print "  " $5 " " $4 " " $8 }' <<<"$symbols")
-entries=$(awk -v entry="$entry_prefix" '$1 ~ /^[0-9]+:$/ && $7 != "UND" && $5 == "GLOBAL" &&
-  index($8, entry) == 1' <<<"$symbols" | wc -l)
-echo "$member: $(grep -c '^ *[0-9]*:' <<<"$symbols") symbols, entry points: $entries"
 status=0
-if [[ -n $bad ]]; then
-  echo "FAIL: $member defines symbols other objects could bind to:" >&2
-  c++filt <<<"$bad" >&2
-  status=1
-fi
-if ((entries != 1)); then
-  echo "FAIL: $member does not define evaluate_eight_v3 (once)" >&2
-  status=1
-fi
-if readelf -SW "$object" | grep -qE '\.(init_array|ctors|preinit_array)\b'; then
-  echo "FAIL: $member has load-time initialisers (.init_array / .ctors)" >&2
-  status=1
-fi
-# Its code is AVX2 (the -march flag reached the compiler). grep -c reads to the end (grep -q would
-# stop early and fail the pipeline).
-ymm=$(objdump -d --no-show-raw-insn "$object" | grep -c 'ymm' || true)
-echo "$member: $ymm instructions on 256-bit (ymm) registers"
-if ((ymm == 0)); then
-  echo "FAIL: $member has no 256-bit instructions: not compiled for x86-64-v3?" >&2
-  status=1
-fi
+
+# check MEMBER ENTRY_PREFIX ENTRY_NAME REGISTER: one object of the library.
+check() {
+  local member=$1 entry_prefix=$2 entry_name=$3 register=$4
+  if ! (cd "$work" && ar x "$library" "$member" 2>/dev/null) || [[ ! -s $work/$member ]]; then
+    echo "FAIL: no $member in $library" >&2
+    status=1
+    return
+  fi
+  local object=$work/$member symbols bad entries count
+  # readelf -sW: Num: Value Size Type Bind Vis Ndx Name. A definition (Ndx not UND) whose binding
+  # is not LOCAL (GLOBAL, WEAK, GNU_UNIQUE) other than the entry point.
+  symbols=$(readelf -sW "$object")
+  bad=$(awk -v entry="$entry_prefix" '$1 ~ /^[0-9]+:$/ && $7 != "UND" && $5 != "LOCAL" &&
+    index($8, entry) != 1 { print "  " $5 " " $4 " " $8 }' <<<"$symbols")
+  entries=$(awk -v entry="$entry_prefix" '$1 ~ /^[0-9]+:$/ && $7 != "UND" && $5 == "GLOBAL" &&
+    index($8, entry) == 1' <<<"$symbols" | wc -l)
+  echo "$member: $(grep -c '^ *[0-9]*:' <<<"$symbols") symbols, entry points: $entries"
+  if [[ -n $bad ]]; then
+    echo "FAIL: $member defines symbols other objects could bind to:" >&2
+    c++filt <<<"$bad" >&2
+    status=1
+  fi
+  if ((entries != 1)); then
+    echo "FAIL: $member does not define $entry_name (once)" >&2
+    status=1
+  fi
+  if readelf -SW "$object" | grep -qE '\.(init_array|ctors|preinit_array)\b'; then
+    echo "FAIL: $member has load-time initialisers (.init_array / .ctors)" >&2
+    status=1
+  fi
+  # Its code is on the level's widest registers (the -march flag reached the compiler). grep -c
+  # reads to the end (grep -q would stop early and fail the pipeline).
+  count=$(objdump -d --no-show-raw-insn "$object" | grep -c "$register" || true)
+  echo "$member: $count instructions on $register registers"
+  if ((count == 0)); then
+    echo "FAIL: $member has no $register instructions: not compiled for its level?" >&2
+    status=1
+  fi
+}
+
+# tread::mf::batch::evaluate_eight_v3(...) and tread::mf::batch::evaluate_sixteen_v4(...)
+check mf_evaluate_batch_v3.cpp.o _ZN5tread2mf5batch17evaluate_eight_v3E evaluate_eight_v3 ymm
+check mf_evaluate_batch_v4.cpp.o _ZN5tread2mf5batch19evaluate_sixteen_v4E evaluate_sixteen_v4 zmm
 ((status == 0)) && echo "ok"
 exit "$status"
