@@ -12,8 +12,8 @@
 #include "mf/mf_evaluate_blocks.hpp"
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#if !defined(__AVX512F__) || !defined(__AVX512BW__) || !defined(__AVX512DQ__) || \
-    !defined(__AVX512VL__) || !defined(__FMA__)
+#if !defined(__AVX512F__) || !defined(__AVX512BW__) || !defined(__AVX512CD__) || \
+    !defined(__AVX512DQ__) || !defined(__AVX512VL__) || !defined(__FMA__)
 #error "mf_evaluate_batch_v4.cpp must be compiled with -march=x86-64-v4 (src/mf/CMakeLists.txt)"
 #endif
 
