@@ -2,8 +2,9 @@
 // are compiled for x86-64-v4 (AVX-512: evaluate_sixteen_v4, mf_evaluate_batch_v4.cpp) and the
 // 8-lane blocks twice, for x86-64-v3 (AVX2, FMA: evaluate_eight_v3, mf_evaluate_batch_v3.cpp) and
 // for the SSE2 baseline (evaluate_eight, here); each wide file is compiled for its level as a whole.
-// The CPU's features choose at run time. As in mf_evaluate_four.cpp, the v3/v4 code contracts a·b + c into
-// FMAs the same way at every width, so a wheel's results do not depend on the width or its lane.
+// The CPU's features choose at run time. As in mf_evaluate_four.cpp, the v3/v4 code contracts
+// a·b + c into FMAs the same way at every width, so a wheel's results do not depend on the width or
+// its lane.
 // Elsewhere (4 lanes: NEON, or a clang build) a block is evaluate_four.
 #include "mf/mf_evaluate_batch.hpp"
 

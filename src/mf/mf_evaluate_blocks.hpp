@@ -34,9 +34,10 @@ static_assert(offsetof(MfOutput<float>, kxk_n) == (kOutputFields - 1) * sizeof(f
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 /// The 16-lane outputs into 16 wheels' rows, 16 fields at a time: a 16 × 16 transpose in AVX-512
 /// registers (unpack, in-lane shuffle, two 128-bit-lane shuffles: 64 instructions) and one
-/// (masked for the last 13 fields) store per wheel and group, instead of 29 × 16 scalar moves. Inlined
-/// into evaluate_sixteen_v4 only (mf_evaluate_batch_v4.cpp, the same target). GCC 12 warns that the _mm512_undefined_ps()
-/// inside its own shuffle intrinsics may be used uninitialized (a known false positive).
+/// (masked for the last 13 fields) store per wheel and group, instead of 29 × 16 scalar moves.
+/// Inlined into evaluate_sixteen_v4 only (mf_evaluate_batch_v4.cpp, the same target). GCC 12 warns
+/// that the _mm512_undefined_ps() inside its own shuffle intrinsics may be used uninitialized (a
+/// known false positive).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 __attribute__((target("arch=x86-64-v4"))) static inline void store_rows16(
