@@ -96,6 +96,16 @@ template <typename T>
 T sgn_nz(const T& x) {
   return if_else(x < T(0), T(-1), T(1));
 }
+/// c·sign(x) with sign(0) = 1, written as the select of −c or c rather than as a product: the same
+/// value (a product with ±1 is exact). On lanes the product left GCC a choice: as its vector
+/// conditional GCC folds c·(m ? −1 : 1) into m ? −c : c, but a select taken bit by bit
+/// (lanes::if_else with AVX-512VL) it cannot see through, and then fused that product, not its
+/// neighbour, into an FMA (in a·b + c·sign(x): the x86-64-v4 code's Fx and Fy then differed from
+/// the x86-64-v3 code's in the last bits). As a select both compute fma(a, b, ±c).
+template <typename T>
+T sgn_nz_times(const T& x, const T& c) {
+  return if_else(x < T(0), -c, c);
+}
 template <typename T>
 T max_of(const T& a, const T& b) {
   return if_else(a < b, b, a);

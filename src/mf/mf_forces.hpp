@@ -50,7 +50,7 @@ Fx0Args<T> fx0_args(const MfParameters<P>& p, const Prepared<T>& in, const Basic
   const T dx = mux * fz * zeta1;
   kxk = fz * (p.pkx1 + p.pkx2 * dfz) * mf_exp(p.pkx3 * dfz) *
         (T(1) + p.ppx1 * dpi + p.ppx2 * dpi * dpi) * p.lkx;
-  const T bx = div_or(kxk, cx * dx + T(1e-6) * sgn_nz(dx), T(0));
+  const T bx = div_or(kxk, cx * dx + sgn_nz_times(dx, T(1e-6)), T(0));
   T shx = (p.phx1 + p.phx2 * dfz) * p.lhx;
   T svx = fz * (p.pvx1 + p.pvx2 * dfz) * p.lvx * b.lmux_prime * zeta1;
   svx = if_else(in.is_low_speed, svx * in.reduction_smooth, svx);
@@ -124,8 +124,8 @@ Fy0Result<T> fy0_args(const MfParameters<P>& p, const Prepared<T>& in, const Bas
     const T kya0 = p.pky1 * fz0_prime * (T(1) + p.ppy1 * dpi) *
                    mf_sin(p.pky4 * mf_atan((fz / fz0_prime) / (p.pky2 * (T(1) + p.ppy2 * dpi)))) *
                    zeta3 * p.lky;
-    const T kya_prime = r.kya + eps * sgn_nz(r.kya);
-    const T kyao_prime = kya0 + eps * sgn_nz(kya0);
+    const T kya_prime = r.kya + sgn_nz_times(r.kya, eps);
+    const T kyao_prime = kya0 + sgn_nz_times(kya0, eps);
     const T chyp = p.phyp1;
     const T dhyp = (p.phyp2 + p.phyp3 * dfz) * sgn(vcx);
     T ehyp = p.phyp4;
@@ -142,7 +142,8 @@ Fy0Result<T> fy0_args(const MfParameters<P>& p, const Prepared<T>& in, const Bas
     r.shy = (p.phy1 + p.phy2 * dfz) * p.lhy + p.phy3 * gamma_star * p.lkyc;
   } else {
     r.shy = (p.phy1 + p.phy2 * dfz) * p.lhy +
-            ((r.kyg0 * gamma_star - svyg) / (r.kya + eps * sgn_nz(r.kya))) * zeta0 + zeta4 - T(1);
+            ((r.kyg0 * gamma_star - svyg) / (r.kya + sgn_nz_times(r.kya, eps))) * zeta0 + zeta4 -
+            T(1);
   }
   r.svy = fz * (p.pvy1 + p.pvy2 * dfz) * p.lvy * b.lmuy_prime * zeta2 + svyg;
   r.svy = if_else(in.is_low_speed, r.svy * in.reduction_smooth, r.svy);
@@ -155,7 +156,7 @@ Fy0Result<T> fy0_args(const MfParameters<P>& p, const Prepared<T>& in, const Bas
   T ey = (p.pey1 + p.pey2 * dfz) *
          (T(1) + p.pey5 * gs2 - (p.pey3 + p.pey4 * gamma_star) * sgn_nz(alphay)) * p.ley;
   if (options.use_limits) ey = min_of(ey, T(1));
-  r.by = div_or(r.kya, r.cy * dy + eps * sgn_nz(dy), T(0));
+  r.by = div_or(r.kya, r.cy * dy + sgn_nz_times(dy, eps), T(0));
   r.dy = dy;
   r.ba = r.by * alphay;
   r.ey = ey;

@@ -140,7 +140,7 @@ Basic<T> basic(const MfParameters<P>& p, const Prepared<T>& in, const MfOptions&
     b.gamma_star_z = b.gamma_star * p.lgaz;
     b.gamma_star = b.gamma_star * p.lgay;
   }
-  const T vc_prime = vc + T(1e-6) * sgn_nz(vc);
+  const T vc_prime = vc + sgn_nz_times(vc, T(1e-6));
   // |Vcx/Vc'| < 1 mathematically; the clamp only absorbs rounding. α' itself is only used as cos
   // α'.
   b.cos_alpha_prime = max_of(T(-1), min_of(T(1), vcx / vc_prime));

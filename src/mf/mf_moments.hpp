@@ -95,7 +95,7 @@ MzTrail<T> mz_trail(const MfParameters<P>& p, const Prepared<T>& in, const Basic
   const T gs = b.gamma_star_z;
   const T g = b.gamma_z;
   const T sht = p.qhz1 + p.qhz2 * dfz + (p.qhz3 + p.qhz4 * dfz) * gs;
-  const T kya_prime = y0.kya + eps * sgn_nz(y0.kya);
+  const T kya_prime = y0.kya + sgn_nz_times(y0.kya, eps);
   const T shf = y0.shy + y0.svy / kya_prime;
   const T alphar = b.alpha_star + shf;
   const T alphat = b.alpha_star + sht;
