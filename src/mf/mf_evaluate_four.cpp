@@ -1,16 +1,17 @@
 // The Magic Formula on four float lanes: packs four wheels' inputs, evaluates once, unpacks.
-// On x86-64 the evaluation is compiled three times (x86-64-v4 with AVX-512 broadcasts, v3 with
-// AVX2/FMA, the SSE2 baseline) and the loader picks the best the CPU has (GCC target_clones).
-// The v3 and v4 clones contract a·b + c into FMA instructions (as any aarch64 build does) and
-// agree bit for bit (checked under qemu -cpu Haswell against this AVX-512 machine); the baseline
-// clone's results differ from theirs in the last bits.
+// On x86-64 the evaluation is compiled three times and the best the CPU has runs: x86-64-v4
+// (AVX-512) in a file of its own (mf_evaluate_four_v4.cpp, where the selects differ), x86-64-v3
+// (AVX2/FMA) and the SSE2 baseline here as GCC target_clones, which the loader picks between.
+// The v3 and v4 code contract a·b + c into FMA instructions (as any aarch64 build does) and agree
+// bit for bit (checked under qemu -cpu Haswell against an AVX-512 machine); the baseline clone's
+// results differ from theirs in the last bits.
 #include "mf/mf_evaluate_four.hpp"
 
 #include <cstddef>
 #include <cstring>
-#include <new>
 #include <type_traits>
 
+#include "mf/mf_evaluate_four_lanes.hpp"
 #include "mf/mf_lane_transpose.hpp"
 #include "mf/mf_lanes.hpp"
 
@@ -21,78 +22,49 @@ namespace {
 using lanes::F4;
 using lanes::V;
 
-// MfInput and MfOutput are runs of floats (MfOutput: then its status): packing and unpacking
-// transpose four of them at a time.
-constexpr std::size_t kInputFields = sizeof(MfInput<float>) / sizeof(float);
+// MfOutput is a run of floats, then its status: unpacking transposes four of them at a time.
 constexpr std::size_t kOutputFields = offsetof(MfOutput<float>, status) / sizeof(float);
-static_assert(std::is_standard_layout_v<MfInput<float>> && kInputFields == 7);
-static_assert(offsetof(MfInput<float>, fz_n) == 0 * sizeof(float) &&
-              offsetof(MfInput<float>, kappa) == 1 * sizeof(float) &&
-              offsetof(MfInput<float>, alpha_rad) == 2 * sizeof(float) &&
-              offsetof(MfInput<float>, gamma_rad) == 3 * sizeof(float) &&
-              offsetof(MfInput<float>, vx_mps) == 4 * sizeof(float) &&
-              offsetof(MfInput<float>, phit_1pm) == 5 * sizeof(float) &&
-              offsetof(MfInput<float>, p_pa) == 6 * sizeof(float));
 static_assert(std::is_standard_layout_v<MfOutput<float>> &&
               std::is_standard_layout_v<MfOutput<F4>>);
 static_assert(offsetof(MfOutput<F4>, status) == kOutputFields * sizeof(F4));
 static_assert(offsetof(MfOutput<float>, kxk_n) == (kOutputFields - 1) * sizeof(float));
 
-/// Four consecutive floats of each wheel's struct, from float `field` on.
-template <typename S>
-void load_rows(const std::array<S, 4>& wheels, std::size_t field, V (&rows)[4]) {
-  for (std::size_t i = 0; i < 4; ++i) {
-    std::memcpy(&rows[i], reinterpret_cast<const char*>(&wheels[i]) + field * sizeof(float),
-                sizeof(V));
-  }
-}
-
 // One function with everything inlined (the scheduler interleaves the independent chains), cloned
 // per x86-64 level where GCC can.
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define TREAD_LANES_FUNCTION \
-  __attribute__((flatten, target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+#define TREAD_LANES_FUNCTION __attribute__((flatten, target_clones("arch=x86-64-v3", "default")))
 #else
 #define TREAD_LANES_FUNCTION __attribute__((flatten))
 #endif
 
+TREAD_LANES_FUNCTION void evaluate_four_cloned(const MfParameters<float>& params,
+                                               const std::array<MfInput<float>, 4>& inputs,
+                                               const MfOptions& options,
+                                               const std::array<MountedSide, 4>& sides,
+                                               MfOutput<F4>& out) noexcept {
+  TREAD_EVALUATE_FOUR_BODY(params, inputs, options, sides, out);
+}
+
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+/// Everything evaluate_four_v4 is compiled for (x86-64-v4: AVX-512 F/BW/CD/DQ/VL and all of v3).
+bool four_lanes_v4() noexcept {
+  static const bool v4 = __builtin_cpu_supports("x86-64-v4");
+  return v4;
+}
+#endif
+
 }  // namespace
 
-TREAD_LANES_FUNCTION void evaluate_four(const MfParameters<float>& params,
-                                        const std::array<MfInput<float>, 4>& inputs,
-                                        const MfOptions& options,
-                                        const std::array<MountedSide, 4>& sides,
-                                        MfOutput<F4>& out) noexcept {
-  // Mirroring per wheel: y → −y on the way in and out of its lane.
-  lanes::Mask4 mirror;
-  for (std::size_t i = 0; i < 4; ++i) {
-    mirror.m[i] = mirrored(sides[i], params.tyre_side) ? -1 : 0;
+void evaluate_four(const MfParameters<float>& params, const std::array<MfInput<float>, 4>& inputs,
+                   const MfOptions& options, const std::array<MountedSide, 4>& sides,
+                   MfOutput<F4>& out) noexcept {
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+  if (four_lanes_v4()) {
+    four::evaluate_four_v4(params, inputs, options, sides, out);
+    return;
   }
-  // Inputs: floats 0–3 and 3–6 of each wheel, transposed.
-  V rows[4];
-  V columns[4];
-  MfInput<F4> in;
-  load_rows(inputs, 0, rows);
-  lanes::transpose<4>(rows, columns);
-  in.fz_n = F4(columns[0]);
-  in.kappa = F4(columns[1]);
-  in.alpha_rad = F4(columns[2]);
-  load_rows(inputs, 3, rows);
-  lanes::transpose<4>(rows, columns);
-  in.gamma_rad = F4(columns[0]);
-  in.vx_mps = F4(columns[1]);
-  in.phit_1pm = F4(columns[2]);
-  in.p_pa = F4(columns[3]);
-
-  MfOptions lane_options = options;
-  lane_options.side = MountedSide::as_measured;
-  // Built in place (a prvalue initializing `out` directly), not assigned: assignment copied the
-  // 480-byte result from evaluate's return slot, about 2 % of an evaluation. MfOutput<F4> is
-  // trivially destructible, so ending the old object's lifetime this way needs no destructor call.
-  static_assert(std::is_trivially_destructible_v<MfOutput<F4>>);
-  ::new (static_cast<void*>(&out))
-      MfOutput<F4>(evaluate(params, detail::mirror_input(in, mirror), lane_options));
-  detail::mirror_output(out, mirror);
+#endif
+  evaluate_four_cloned(params, inputs, options, sides, out);
 }
 
 void evaluate_four(const MfParameters<float>& params, const std::array<MfInput<float>, 4>& inputs,

@@ -146,9 +146,27 @@ using F16 = Lanes<16>;
 /// with SSE4.1 and AVX, where `m ? a : b` tested each lane against zero first (a compare with a
 /// zeroed register and its inversion: 2–3 more instructions per select, about 50 per block of eight
 /// in MF 6.2's solve alone).
+/// Where AVX-512VL is there (code compiled for x86-64-v4 as a whole: mf_evaluate_four_v4.cpp),
+/// four and eight lanes take it bit by bit, (a & m) | (b & ~m): one vpternlogd. GCC 12 emits
+/// vblendvps otherwise, which an Intel Golden Cove core (the Intel VM's Sapphire Rapids Xeon) runs
+/// as 3 µops on all three vector ports: measured there, one vblendvps per cycle against three
+/// vpternlogd or vblendmps. AVX2 code keeps vblendvps (one µop on the AVX2 VM's AMD Zen 3, where
+/// and, andn and or are three), sixteen lanes the mask registers GCC gives them. A select is
+/// exact: the bits are the same either way (the v4 and v3 code still agree bit for bit, checked
+/// under qemu-x86_64 -cpu Haswell; the 16-lane batch still equals four lanes). The elementary
+/// functions' own selects (atan_lanes, log, sin_cos_lanes in mf_math.hpp and below) keep GCC's
+/// vector conditional: taken bit by bit too, four lanes' results changed in the last bits (the
+/// batch no longer equalled them), and MF 6.1 on four lanes measured 370 → 388 ns slower.
 template <int N>
 [[gnu::always_inline]] inline Lanes<N> if_else(const Mask<N>& m, const Lanes<N>& a,
                                                const Lanes<N>& b) {
+#if defined(__AVX512VL__)
+  if constexpr (N <= 8) {
+    using I = IntVec<N>;
+    return Lanes<N>(std::bit_cast<FloatVec<N>>(
+        I((std::bit_cast<I>(a.v) & m.m) | (std::bit_cast<I>(b.v) & ~m.m))));
+  }
+#endif
   return Lanes<N>(m.m < 0 ? a.v : b.v);
 }
 
