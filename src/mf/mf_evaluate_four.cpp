@@ -47,8 +47,9 @@ TREAD_LANES_FUNCTION void evaluate_four_cloned(const MfParameters<float>& params
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 /// Everything evaluate_four_v4 is compiled for (x86-64-v4: AVX-512 F/BW/CD/DQ/VL and all of v3).
+/// __builtin_cpu_init first: a call from a static initializer may come before libgcc's own.
 bool four_lanes_v4() noexcept {
-  static const bool v4 = __builtin_cpu_supports("x86-64-v4");
+  static const bool v4 = (__builtin_cpu_init(), __builtin_cpu_supports("x86-64-v4"));
   return v4;
 }
 #endif
@@ -64,6 +65,14 @@ void evaluate_four(const MfParameters<float>& params, const std::array<MfInput<f
     return;
   }
 #endif
+  evaluate_four_cloned(params, inputs, options, sides, out);
+}
+
+void detail::evaluate_four_without_v4(const MfParameters<float>& params,
+                                      const std::array<MfInput<float>, 4>& inputs,
+                                      const MfOptions& options,
+                                      const std::array<MountedSide, 4>& sides,
+                                      MfOutput<F4>& out) noexcept {
   evaluate_four_cloned(params, inputs, options, sides, out);
 }
 

@@ -36,4 +36,14 @@ void evaluate_four(const MfParameters<float>& params, const std::array<MfInput<f
                    const MfOptions& options, const std::array<MountedSide, 4>& sides,
                    MfOutput<lanes::F4>& outputs) noexcept;
 
+namespace detail {
+/// evaluate_four without its x86-64-v4 code: on x86-64 with GCC the x86-64-v3 clone (the baseline
+/// clone on a CPU without AVX2 and FMA), elsewhere evaluate_four itself. For the test that the v4
+/// code's bits are the v3 clone's (MfEvaluateFour.X8664V4EqualsV3BitForBit).
+void evaluate_four_without_v4(const MfParameters<float>& params,
+                              const std::array<MfInput<float>, 4>& inputs, const MfOptions& options,
+                              const std::array<MountedSide, 4>& sides,
+                              MfOutput<lanes::F4>& outputs) noexcept;
+}  // namespace detail
+
 }  // namespace tread::mf

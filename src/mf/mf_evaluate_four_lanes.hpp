@@ -81,13 +81,14 @@ static_assert(offsetof(MfInput<float>, fz_n) == 0 * sizeof(float) &&
 // evaluation. MfOutput<F4> is trivially destructible, so ending the old object's lifetime this way
 // needs no destructor call.
 static_assert(std::is_trivially_destructible_v<MfOutput<lanes::F4>>);
-#define TREAD_EVALUATE_FOUR_BODY(params, inputs, options, sides, out)               \
-  do {                                                                              \
-    lanes::Mask4 mirror;                                                            \
-    const MfInput<lanes::F4> in = four::pack_inputs(params, inputs, sides, mirror); \
-    ::new (static_cast<void*>(&(out)))                                              \
-        MfOutput<lanes::F4>(evaluate(params, in, four::lane_options(options)));     \
-    detail::mirror_output(out, mirror);                                             \
+#define TREAD_EVALUATE_FOUR_BODY(params, inputs, options, sides, out)                      \
+  do {                                                                                     \
+    ::tread::mf::lanes::Mask4 four_mirror;                                                 \
+    const ::tread::mf::MfInput<::tread::mf::lanes::F4> four_in =                           \
+        ::tread::mf::four::pack_inputs(params, inputs, sides, four_mirror);                \
+    ::new (static_cast<void*>(&(out)))::tread::mf::MfOutput<::tread::mf::lanes::F4>(       \
+        ::tread::mf::evaluate(params, four_in, ::tread::mf::four::lane_options(options))); \
+    ::tread::mf::detail::mirror_output(out, four_mirror);                                  \
   } while (false)
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)

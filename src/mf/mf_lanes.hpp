@@ -152,11 +152,15 @@ using F16 = Lanes<16>;
 /// as 3 µops on all three vector ports: measured there, one vblendvps per cycle against three
 /// vpternlogd or vblendmps. AVX2 code keeps vblendvps (one µop on the AVX2 VM's AMD Zen 3, where
 /// and, andn and or are three), sixteen lanes the mask registers GCC gives them. A select is
-/// exact: the bits are the same either way (the v4 and v3 code still agree bit for bit, checked
-/// under qemu-x86_64 -cpu Haswell; the 16-lane batch still equals four lanes). The elementary
+/// exact, but its form changes what GCC may fold and so which products it fuses into FMAs
+/// (sgn_nz_times in mf_detail_common.hpp): that the v4 code's bits equal the v3 clone's is
+/// checked (MfEvaluateFour.X8664V4EqualsV3BitForBit), not given by construction. The elementary
 /// functions' own selects (atan_lanes, log, sin_cos_lanes in mf_math.hpp and below) keep GCC's
 /// vector conditional: taken bit by bit too, four lanes' results changed in the last bits (the
 /// batch no longer equalled them), and MF 6.1 on four lanes measured 370 → 388 ns slower.
+/// This is the one inline function of these headers whose body depends on the ISA macros: it
+/// must stay inlined into code of one level (always_inline; the wide files are compiled without
+/// LTO, src/mf/CMakeLists.txt, and export nothing else, tests/mf/wide_object_symbols.sh).
 template <int N>
 [[gnu::always_inline]] inline Lanes<N> if_else(const Mask<N>& m, const Lanes<N>& a,
                                                const Lanes<N>& b) {
@@ -349,7 +353,7 @@ template <int N>
   return t;
 }
 // Two independent evaluations of a function (mf_math.hpp's *_two): on x86-64, four lanes of each
-// side by side in one eight-lane vector (one ymm in evaluate_four's AVX2 and AVX-512 clones), each
+// side by side in one eight-lane vector (one ymm in evaluate_four's AVX2 and AVX-512 code), each
 // lane computing what the eight-lane batch computes for it; elsewhere the two calls.
 #if defined(__x86_64__)
 inline constexpr bool kTwoInOne = true;
@@ -440,7 +444,7 @@ template <int N>
 
 /// Four-lane cores two at a time: cores 2i and 2i+1 side by side in eight lanes, `Pairs` such
 /// eight-lane chains interleaved (a slot past `count` repeats core 0). In the four-wheel path's
-/// AVX2 and AVX-512 clones an eight-lane vector is one ymm register, so the cores (a fifth of
+/// AVX2 and AVX-512 code an eight-lane vector is one ymm register, so the cores (a fifth of
 /// evaluate_four's instructions) take half the instructions; every lane computes what the
 /// eight-lane batch computes for its wheel (the same templated atan and sin/cos on the same vector
 /// type), so the batch and evaluate_four still agree bit for bit.

@@ -302,7 +302,9 @@ struct Fz62PowMemo {
 ///     benchmark's points took a pow inside the loop, with the [5/5] approximant 133. The
 ///     instructions per evaluate_four stay about the same (5 757 → 5 747 under callgrind), but pow
 ///     was on the second evaluation's chain: evaluate_four on MF 6.2 measured 18 ns per group of
-///     four faster (p10 of 400 passes, 10 alternating runs: 806–825 → 788–805 ns).
+///     four faster (p10 of 400 passes, 10 alternating runs: 806–825 → 788–805 ns). In the bound
+///     |δ| is taken as at least 1/32 (which rejects no δ it accepted for |q| up to about 46) and
+///     8·|e11| as at least 1e-20, so that its product stays a normal float (see below).
 ///   - fixed point: b^q·(1 + C(q,1)δ + … + C(q,6)δ⁶) for |δ| < ¼, without a division (no FPU
 ///     to overlap one with).
 /// Its derivatives are not needed: fz62 takes them as the power times q·x'/x (exact for x^q, and
@@ -323,22 +325,22 @@ template <typename T, typename P>
     const T delta = x * memo.inv_base - T(1);
     const T delta2 = delta * delta;
     if constexpr (kPowPade55<T>) {
-      // pow_remainder·|δ|¹¹ ≤ (ε/2)·(1 + δ/2)¹¹, the bound in t without its division (off the
-      // chain: it only feeds the branch to pow). N and D by Estrin's scheme, side by side.
+      // pow_remainder·|δ|¹¹ ≤ (ε/2)·(1 + δ/2)¹¹, the bound in t = δ/(1 + δ/2) without its
+      // division (off the chain: it only feeds the branch to pow). N and D side by side.
       const T h = T(1) + T(0.5) * delta;
       const T h2 = h * h;
       const T h4 = h2 * h2;
-      // |δ| taken as at least 1/32 in the bound, where it holds for |q| up to about 46 (there
-      // pow_remainder·(1/32)¹¹ ≤ 6e-8·(1 − 1/64)¹¹): |δ|¹¹ of a δ near 0 underflows into
-      // denormals, which cost an Intel core a microcode assist of about 150 cycles per operation
-      // (on an Intel Xeon the bound's products took four lanes' approximant from 13 to 59 ns where
-      // δ was 1e-3, as near a converging root). pow_remainder is at least 1e-20 (see the curve):
-      // the product stays a normal float.
-      const T t = max_of(abs(delta), T(0.03125));
-      const T t2 = t * t;
-      const T t4 = t2 * t2;
+      // |δ| taken as at least 1/32 here, which rejects no δ it accepted for |q| up to about 46
+      // (there pow_remainder·(1/32)¹¹ ≤ 6e-8·(1 − 1/64)¹¹): near a converging root
+      // pow_remainder·|δ|¹¹ underflowed into denormals (7e-40 at δ = 1e-3 for the sample tyre),
+      // and on the Intel VM's Xeon such an operation takes a microcode assist: four lanes'
+      // approximant took 59 ns there against 13 ns where δ was 0.1. With pow_remainder at least
+      // 1e-20 (see the curve) the product is at least 2.8e-37, a normal float.
+      const T d = max_of(abs(delta), T(0.03125));
+      const T d2 = d * d;
+      const T d4 = d2 * d2;
       near = near && delta > c.pow_floor && delta < T(1.5) &&
-             c.pow_remainder * (t4 * t4 * t2 * t) <= T(6e-8) * (h4 * h4 * h2 * h);
+             c.pow_remainder * (d4 * d4 * d2 * d) <= T(6e-8) * (h4 * h4 * h2 * h);
       // N and D with δ² nested (Estrin's pairs, no δ⁴ formed): the smallest product is of order
       // δ²·n4, normal for the smallest δ a rounding leaves (about 2⁻⁴⁸).
       const T num = (T(1) + c.pow_n1 * delta) + delta2 * ((c.pow_n2 + c.pow_n3 * delta) +
@@ -730,8 +732,8 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target,
     const auto no_root = (above && !(rl < hi_end)) || (!deep && !(rl > lo_end));
     const T step_abs = abs(step);
     // The estimate's powers of the steps taken as at least the tolerance, so that they do not
-    // underflow into denormals (an Intel core's microcode assist, about 150 cycles each: a step
-    // of 1e-11 m, as after a cubic step, has a fourth power of 1e-44). The outcome is the same:
+    // underflow into denormals (a microcode assist on the Intel VM's Xeon: a step of 1e-11 m, as
+    // after a cubic step, has a fourth power of 1e-44). The outcome is the same:
     // a falling step at or below the tolerance has converged anyway, and `settled` needs a
     // falling step below the previous one, so below the tolerance wherever the previous is.
     const T step_c = max_of(step_abs, tolerance);

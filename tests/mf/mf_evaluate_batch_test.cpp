@@ -92,6 +92,55 @@ TEST(MfEvaluateBatch, EqualsEvaluateFour) {
   }
 }
 
+// evaluate_four's x86-64-v4 code (mf_evaluate_four_v4.cpp: its selects one vpternlogd) gives the
+// x86-64-v3 clone's bits, so that four lanes are reproducible on every x86-64 CPU with AVX2 and FMA.
+// A select is exact, but its form changes which products GCC fuses into FMAs (sgn_nz_times): this
+// is what keeps the two equal. Runs where the CPU is x86-64-v4 (both run there).
+TEST(MfEvaluateFour, X8664V4EqualsV3BitForBit) {
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+  __builtin_cpu_init();
+  if (!__builtin_cpu_supports("x86-64-v4")) GTEST_SKIP() << "needs an x86-64-v4 CPU";
+  const std::vector<MfParameters<float>> tyres = all_mf_tyres();
+  std::mt19937_64 rng(29);
+  std::size_t compared = 0;
+  for (const MfParameters<float>& p : tyres) {
+    for (const testing::BatchOptionSet& set : testing::batch_option_sets()) {
+      const std::vector<MfInput<float>> in = testing::batch_inputs(rng, 4 * 64);
+      const std::array<MountedSide, 4> sides = {MountedSide::left, MountedSide::right,
+                                                set.options.side, MountedSide::as_measured};
+      for (std::size_t g = 0; g < in.size(); g += 4) {
+        const std::array<MfInput<float>, 4> four = {in[g], in[g + 1], in[g + 2], in[g + 3]};
+        MfOutput<lanes::F4> v4;
+        MfOutput<lanes::F4> v3;
+        evaluate_four(p, four, set.options, sides, v4);
+        detail::evaluate_four_without_v4(p, four, set.options, sides, v3);
+        // The outputs' float fields in order (MfOutput<F4>: kFields lanes, then the status).
+        std::array<lanes::F4, kFields> a;
+        std::array<lanes::F4, kFields> b;
+        std::memcpy(a.data(), &v4, sizeof(a));
+        std::memcpy(b.data(), &v3, sizeof(b));
+        for (int k = 0; k < 4; ++k) {
+          const std::string where = "fit " + std::to_string(static_cast<int>(p.fit_type)) + " " +
+                                    set.name + " wheel " +
+                                    std::to_string(g + static_cast<std::size_t>(k));
+          ASSERT_EQ(v4.status[k], v3.status[k]) << where;
+          for (std::size_t f = 0; f < kFields; ++f) {
+            const float x = a[f][k];
+            const float y = b[f][k];
+            ASSERT_EQ(std::memcmp(&x, &y, sizeof(float)), 0)
+                << where << " field " << f << ": " << x << " vs " << y;
+          }
+          ++compared;
+        }
+      }
+    }
+  }
+  std::printf("[ compared ] %zu wheels, x86-64-v4 against x86-64-v3, all bit for bit\n", compared);
+#else
+  GTEST_SKIP() << "the x86-64-v4 code exists only in GCC builds for x86-64";
+#endif
+}
+
 TEST(MfEvaluateBatch, EveryLengthAndPlaceInABlock) {
   for (const int lanes : widths()) {
     for (const char* tyre : {"MagicFormula61_Parameters.tir", "MagicFormula62_Parameters.tir",

@@ -263,7 +263,7 @@ MfOptions make_options(int mode, const OptionVariant& v) {
 /// where a term is near 0: ρ at small loads (ρ = Romega − Rl, a difference of two radii, carries
 /// ulp(R0) ≈ 3e-8 m), and C beyond FZMAX with the limits off, where the .tir's quadratic
 /// Cx(dFz) = Cx0·(1 + PCFX1·dFz + PCFX2·dFz²) can cross zero (MagicFormula61: at Fz ≈
-/// 1.49·FZMAX) and one rounding more or less (the x86-64-v3/v4 clones of evaluate_four contract
+/// 1.49·FZMAX) and one rounding more or less (evaluate_four's x86-64-v3 and v4 code contract
 /// a·b + c into FMAs, the scalar build does not) moves σ by far more than float rounding. A ratio
 /// may differ by |ratio|·(sum of its terms' relative differences) on top of the tolerance; the
 /// terms are held to the tolerance like every column. The worst error reported is the part beyond
@@ -355,7 +355,7 @@ struct ScalarCompare {
 };
 
 // Four lanes against the scalar float path, relative to the column's scale (see ScalarCompare).
-// Measured on this x86-64 host (the x86-64-v4 clone: FMAs) and with the default clone (SSE, no
+// Measured on this x86-64 host (the x86-64-v4 code: FMAs) and with the default clone (SSE, no
 // FMA): see the printed worst errors; a quarter of the float tolerance against MFeval (2e-4).
 constexpr double kScalarTolerance = 5e-5;
 

@@ -36,7 +36,8 @@ if ((clones < 4)); then
 fi
 # Each of the four wide functions by name (the count alone would not notice one missing: GCC's
 # .cold parts are counted too).
-for expected in 'tread::mf::\(anonymous namespace\)::evaluate_four_cloned\(.*\[clone \.arch_x86_64_v3\]' \
+for expected in \
+  'tread::mf::\(anonymous namespace\)::evaluate_four_cloned\(.*\[clone \.arch_x86_64_v3\]' \
   'tread::mf::four::evaluate_four_v4\(' 'tread::mf::batch::evaluate_eight_v3\(' \
   'tread::mf::batch::evaluate_sixteen_v4\('; do
   if ! grep -qE "^[0-9a-f]+ <$expected" <<<"$listing"; then

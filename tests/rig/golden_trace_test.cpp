@@ -11,7 +11,7 @@
 // cycle is stored, to keep the files reviewable.
 //
 // The traces are recorded on x86-64 with AVX2 and FMA: there the node's four-lane tyre evaluation
-// (src/mf/mf_evaluate_four.cpp) runs its x86-64-v3/v4 clone, which contracts a·b + c into FMA
+// (src/mf/mf_evaluate_four.cpp) runs its x86-64-v3 clone or v4 code, which contract a·b + c into FMA
 // instructions (in every build type: that file is always compiled -O2). A CPU without them runs
 // the baseline clone, whose float results differ in the last bits; the closed loop carries that
 // to whole 1 N answer steps (under qemu -cpu Nehalem: up to 21 % of the step steer's small Fx
