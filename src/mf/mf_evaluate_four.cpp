@@ -3,7 +3,7 @@
 // (AVX-512) in a file of its own (mf_evaluate_four_v4.cpp, where the selects differ), x86-64-v3
 // (AVX2/FMA) and the SSE2 baseline here as GCC target_clones, which the loader picks between.
 // The v3 and v4 code contract a·b + c into FMA instructions (as any aarch64 build does) and agree
-// bit for bit (checked under qemu -cpu Haswell against an AVX-512 machine); the baseline clone's
+// bit for bit (MfEvaluateFour.X8664V4EqualsV3BitForBit, on an AVX-512 CPU); the baseline clone's
 // results differ from theirs in the last bits.
 #include "mf/mf_evaluate_four.hpp"
 
