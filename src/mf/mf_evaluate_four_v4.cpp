@@ -4,8 +4,8 @@
 // which a GCC target_clones clone of the baseline file cannot tell apart. On the Intel VM (a
 // Sapphire Rapids Xeon), two alternating mf_bench runs: four lanes' MF 6.1 414–419 → 373–374 ns
 // and MF 6.2 559–567 → 499 ns per group of four. The bits are those of the x86-64-v3 clone
-// (checked under qemu-x86_64 -cpu Haswell over 128 000 wheels of four tyres and four useModes) and
-// of the 16-lane batch (MfEvaluateBatch.EqualsEvaluateFour).
+// (MfEvaluateFour.X8664V4EqualsV3BitForBit) and of the 16-lane batch
+// (MfEvaluateBatch.EqualsEvaluateFour).
 //
 // Nothing compiled here may run on a CPU below x86-64-v4, so nothing here may be shared with
 // baseline code: the one function defined here inlines everything it calls (flatten) but the rare

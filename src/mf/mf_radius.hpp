@@ -733,9 +733,9 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target,
     const T step_abs = abs(step);
     // The estimate's powers of the steps taken as at least the tolerance, so that they do not
     // underflow into denormals (a microcode assist on the Intel VM's Xeon: a step of 1e-11 m, as
-    // after a cubic step, has a fourth power of 1e-44). The outcome is the same:
-    // a falling step at or below the tolerance has converged anyway, and `settled` needs a
-    // falling step below the previous one, so below the tolerance wherever the previous is.
+    // after a cubic step, has a fourth power of 1e-44). The outcome is the same: a falling step
+    // at or below the tolerance has converged anyway, and `settled` needs a falling step below
+    // the previous one, so below the tolerance wherever the previous one is.
     const T step_c = max_of(step_abs, tolerance);
     const T previous_c = max_of(previous_step, tolerance);
     const T previous2 = previous_c * previous_c;
