@@ -325,7 +325,12 @@ template <typename V>
   const V r = reduce_by(y, k);
   const V s = sin_poly(r);
   const V c = cos_poly(r);
-  return (__builtin_convertvector(k, IntOf<V>) & 1) != 0 ? -c / s : s / c;
+  // One division of the selected operands, the same quotients as −c/s or s/c: GCC 12 compiled
+  // the select of the two quotients to a division and a second one merged into its result under
+  // a mask (AVX-512), which waits for the first. Four lanes on the Intel VM: MF 6.1 383 → 378 ns
+  // and MF 6.2 505 → 498 ns per group of four (medians of three alternating runs).
+  const auto odd = (__builtin_convertvector(k, IntOf<V>) & 1) != 0;
+  return (odd ? -c : s) / (odd ? s : c);
 }
 
 /// The four-lane forms (the scalar float path's mf_cores and the tests use them).
