@@ -282,6 +282,16 @@ struct Fz62PowMemo {
   T value = T(0);
 };
 
+/// x^q as fz62_pow_ratio gives it: num/den, den the Padé approximant's denominator D(δ) or 1
+/// (pow's value, the fixed-point series), so that the quotient need not be formed on the solve's
+/// chain (see fz62). D is positive wherever the approximant is taken: D(0) = 1, and D has no zero
+/// on the interval of δ about 0 where the approximant stays within its bound of (1 + δ)^q.
+template <typename T>
+struct Fz62Power {
+  T num;
+  T den;
+};
+
 /// x^q from the memo's base b, (b·(1 + δ))^q = b^q·(1 + δ)^q, where a bound on the
 /// approximation's relative error (Fz62Curve's pow_remainder) is below half of ε, else pow, which
 /// becomes the new base:
@@ -315,12 +325,14 @@ struct Fz62PowMemo {
 /// depend on whether a neighbour made this call where its own result was not needed (an unloaded
 /// lane: the scalars do not call it there).
 template <typename T, typename P>
-[[gnu::always_inline]] inline T fz62_pow(const Fz62Curve<T, P>& c, const T& x, Fz62PowMemo<T>& memo,
-                                         const MaskOf<T>& used) {
+[[gnu::always_inline]] inline Fz62Power<T> fz62_pow_ratio(const Fz62Curve<T, P>& c, const T& x,
+                                                          Fz62PowMemo<T>& memo,
+                                                          const MaskOf<T>& used) {
   constexpr bool coarse = std::is_same_v<T, float> || is_float_lanes<T> || is_fixed_point<T>;
   // Without a base in any lane, pow alone, without the approximation.
   auto near = memo.base > T(0);
   T approx = T(0);
+  T approx_den = T(1);
   if (any_lane(near)) {
     const T delta = x * memo.inv_base - T(1);
     const T delta2 = delta * delta;
@@ -347,7 +359,8 @@ template <typename T, typename P>
                                                           delta2 * (c.pow_n4 + c.pow_n5 * delta));
       const T den = (T(1) + c.pow_d1 * delta) + delta2 * ((c.pow_d2 + c.pow_d3 * delta) +
                                                           delta2 * (c.pow_d4 + c.pow_d5 * delta));
-      approx = (memo.value * num) / den;
+      approx = memo.value * num;
+      approx_den = den;
     } else {
       const T d = abs(delta);
       const T d3 = d * d * d;
@@ -365,31 +378,35 @@ template <typename T, typename P>
         // computed, so one division follows.
         const T num = (T(1) + c.pow_n1 * delta) + delta2 * (c.pow_n2 + c.pow_n3 * delta);
         const T den = (T(1) + c.pow_d1 * delta) + delta2 * (c.pow_d2 + c.pow_d3 * delta);
-        approx = (memo.value * num) / den;
+        approx = memo.value * num;
+        approx_den = den;
       }
     }
   }
   const auto far = used && !near;
-  if (!any_lane(far)) return approx;
+  if (!any_lane(far)) return {approx, approx_den};
   const T exact = T(pow(x, T(c.pow_q)));
   memo.base = if_else(far, x, memo.base);
   memo.inv_base = if_else(far, T(1) / x, memo.inv_base);
   memo.value = if_else(far, exact, memo.value);
-  return if_else(far, exact, approx);
+  return {if_else(far, exact, approx), if_else(far, T(1), approx_den)};
 }
 
-/// fz62_pow with every lane's result used.
+/// x^q as fz62_pow_ratio takes it, the quotient formed, every lane's result used.
 template <typename T, typename P>
 [[gnu::always_inline]] inline T fz62_pow(const Fz62Curve<T, P>& c, const T& x,
                                          Fz62PowMemo<T>& memo) {
-  return fz62_pow(c, x, memo, T(0) <= T(0));
+  const Fz62Power<T> r = fz62_pow_ratio(c, x, memo, T(0) <= T(0));
+  return r.num / r.den;
 }
 
 /// Fz62 − Fz at a loaded radius with its first two derivatives, and the deflection ρz there with
 /// its.
 template <typename T>
 struct Fz62Value {
-  T excess, slope, curvature;  // Fz62(Rl) − Fz, dFz62/dRl, d²Fz62/dRl²
+  // Fz62(Rl) − Fz, dFz62/dRl, d²Fz62/dRl², each times `scale` (> 0; see fz62).
+  T excess, slope, curvature;
+  T scale;
   T rho_z, drho_z, d2rho_z;
 };
 
@@ -399,7 +416,12 @@ struct Fz62Value {
 /// Fcy² = p·L² with the power p = x^(2·Q_FCY2), L = Q_FCY·(Fy − Sfyg)/Fz0. Each of Fz62 − Fz and
 /// its derivatives is written as a − p·b, with a and b computed while the power is (p' = p·g with
 /// g = q·x'/x, p'' = p·g2): what waits for the power is one product and one subtraction, then the
-/// step's division.
+/// step's division. Where fz62_pow_ratio gives the power as N/D (its Padé approximant), each is
+/// returned times D (`scale`, 1 where pow was taken), as a·D − N·b: every use of them is a sign or
+/// a step, −F/F' or Halley's −F·F'/(F'² − ½·F·F''), whose value D cancels from (up to rounding),
+/// so the approximant's division is off the solve's chain. Four lanes on the Intel VM: MF 6.2 /
+/// MF 6.1 1.334 → 1.320 paired, float 1.281 → 1.262; the 16-lane batch, bound by throughput
+/// rather than latency, 1.240 → 1.247, double unchanged (1.305).
 template <bool kSecond, typename T, typename P>
 [[gnu::always_inline]] inline Fz62Value<T> fz62(const Fz62Curve<T, P>& c, const T& rl,
                                                 const T& fz_target, Fz62PowMemo<T>& memo) {
@@ -423,10 +445,21 @@ template <bool kSecond, typename T, typename P>
   // (MF 5.2, PAC2002 and many MF 6.x files) unless Q_FCY2 is a fit's Jet (d(x^q)/dq = ln x at 0).
   const bool zero_exponent = is_zero(c.q_fcy2);
   T power = zero_exponent ? T(1) : T(0);
+  T scale = T(1);
   constexpr bool kScalarParameters = std::is_arithmetic_v<P> || is_fixed_point<P>;
   if (!(kScalarParameters && zero_exponent) && any_lane(loaded)) {
-    power = if_else(loaded, fz62_pow(c, if_else(loaded, x, T(1)), memo, loaded), power);
+    const Fz62Power<T> r = fz62_pow_ratio(c, if_else(loaded, x, T(1)), memo, loaded);
+    power = if_else(loaded, r.num, power);
+    if constexpr (!is_fixed_point<T>) scale = if_else(loaded, r.den, T(1));
   }
+  // The terms without the power, times the power's denominator (fixed point's is 1: no product).
+  const auto scaled = [&](const T& v) -> T {
+    if constexpr (is_fixed_point<T>) {
+      return v;
+    } else {
+      return v * scale;
+    }
+  };
   const T lateral = c.fcy_per_force * (c.fy - sfyg);
   const T dlateral = c.fcy_per_force * dsfyg;  // −dL/dRl
   const T lateral2 = lateral * lateral;
@@ -434,7 +467,7 @@ template <bool kSecond, typename T, typename P>
   const T stiffness = (c.q_fz1 + c.q_fz2 * x) * x * c.stiffness_scale;
   const T rate = (c.q_fz1 + T(2) * c.q_fz2 * x) * c.stiffness_scale;  // dS/dx
   const T dstiffness = rate * dx;
-  const T excess = (c.base * stiffness - fz_target) - power * (lateral2 * stiffness);
+  const T excess = scaled(c.base * stiffness - fz_target) - power * (lateral2 * stiffness);
   T slope = T(0);
   T curvature = T(0);
   if constexpr (kSecond) {
@@ -446,11 +479,12 @@ template <bool kSecond, typename T, typename P>
     const T growth = T(c.pow_q) * ux;
     const T growth2 = T(c.pow_q) * (T(c.pow_q - P(1)) * ux * ux + d2x * inv_x);
     const T dfcy2_per_power = growth * lateral2 + dlateral2;
-    slope = c.base * dstiffness - power * (lateral2 * dstiffness + dfcy2_per_power * stiffness);
+    slope =
+        scaled(c.base * dstiffness) - power * (lateral2 * dstiffness + dfcy2_per_power * stiffness);
     const T d2stiffness = T(2) * c.q_fz2 * c.stiffness_scale * dx * dx + rate * d2x;
     const T d2lateral2 = T(2) * (dlateral * dlateral - lateral * c.fcy_per_force * d2sfyg);
     const T d2fcy2_per_power = growth2 * lateral2 + T(2) * growth * dlateral2 + d2lateral2;
-    curvature = c.base * d2stiffness -
+    curvature = scaled(c.base * d2stiffness) -
                 power * (lateral2 * d2stiffness + T(2) * dfcy2_per_power * dstiffness +
                          d2fcy2_per_power * stiffness);
   } else {
@@ -458,10 +492,10 @@ template <bool kSecond, typename T, typename P>
     // Romega and bisection): (Fcy²)'·S = p·(g·S·L² + (L²)'·S) with g·S = q·x'·(S/x), no division by
     // x (x'/x overflows Q31.32 at the lightest loads).
     const T growth_s = T(c.pow_q) * dx * ((c.q_fz1 + c.q_fz2 * x) * c.stiffness_scale);
-    slope = c.base * dstiffness -
+    slope = scaled(c.base * dstiffness) -
             power * (lateral2 * dstiffness + growth_s * lateral2 + dlateral2 * stiffness);
   }
-  return {excess, slope, curvature, rho_z, drho_z, d2rho_z};
+  return {excess, slope, curvature, scale, rho_z, drho_z, d2rho_z};
 }
 
 /// x = ρ/R0 with q_fz2·x² + q_fz1·x = Fz / E, E = (base − Fcy²)·(1 + PFZ1·dpi)·Fz0, the start of
@@ -594,6 +628,10 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target,
   constexpr int kNewtonSteps = 16;
   // Halley's step in double and on lanes, Newton's in float and fixed point (see above).
   constexpr bool kHalley = !std::is_same_v<T, float> && !is_fixed_point<T>;
+  // Four lanes, where the solve's chain of dependent steps sets the time rather than the
+  // instructions (the 8- and 16-lane batch), divide by both of Halley's denominators and select
+  // the quotient (see the step; double measured no faster with it).
+  constexpr bool kBothQuotients = is_float_lanes<T> && sizeof(T) == 4 * sizeof(float);
   constexpr bool coarse = std::is_same_v<T, float> || is_float_lanes<T> || is_fixed_point<T>;
   // ε^(3/4): float 6.4e-6, double 1.8e-12 (fixed point Q31.32 as float: its resolution of a
   // radius, 2.3e-10 m, is float's).
@@ -641,9 +679,10 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target,
   auto collapsed = T(0) > T(0);  // no lane yet: lanes whose hump stays below Fz
   // The side of the root an evaluated point bounds: the deep side (lo) where Fz62 > Fz, or past a
   // hump's peak; else the Romega side (hi).
-  const auto deep_side = [&](const auto& above, const T& excess, const T& slope, const T& drho_z) {
+  const auto deep_side = [&](const auto& above, const T& excess, const T& scale, const T& slope,
+                             const T& drho_z) {
     if (!hump_possible) return above;
-    return above || (hump && (excess < -fz_target || (slope > T(0) && drho_z < T(0))));
+    return above || (hump && (excess < -fz_target * scale || (slope > T(0) && drho_z < T(0))));
   };
   // Start: q_fz2·x² + q_fz1·x = Fz / ((1 + speed − Fx² − Fcy²)(1 + PFZ1·dpi)·Fz0), x = ρ/R0.
   const T x0 = quadratic_deflection(c, fz_target, c.fcy_per_force * c.fy);
@@ -687,20 +726,21 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target,
   T drho_at = T(0);
   T d2rho_at = T(0);
   T last_move = T(0);  // from the last point evaluated to the root, where converged
+  T point = rl;        // where the next evaluation is (rl: the answer, where converged)
   LoadedRadius62<T> result{T(0), T(0), 0, false};
   // One step of the iteration; false when no lane is left active.
   const auto iterate = [&](int i) __attribute__((always_inline))->bool {
-    const Fz62Value<T> at = fz62<kHalley>(c, rl, fz_target, memo);
-    rl_at = if_else(active, rl, rl_at);
+    const Fz62Value<T> at = fz62<kHalley>(c, point, fz_target, memo);
+    rl_at = if_else(active, point, rl_at);
     rho_at = if_else(active, at.rho_z, rho_at);
     drho_at = if_else(active, at.drho_z, drho_at);
     d2rho_at = if_else(active, at.d2rho_z, d2rho_at);
     const T resid = at.excess;
     const T slope = at.slope;
     const auto above = resid > T(0);
-    const auto deep = deep_side(above, resid, slope, at.drho_z);
-    lo = if_else(active && deep, rl, lo);
-    hi = if_else(active && !deep, rl, hi);
+    const auto deep = deep_side(above, resid, at.scale, slope, at.drho_z);
+    lo = if_else(active && deep, point, lo);
+    hi = if_else(active && !deep, point, hi);
     lo_known = lo_known || (active && deep);
     hi_known = hi_known || (active && !deep);
     T step = T(0);
@@ -713,7 +753,18 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target,
       const T slope2 = slope * slope;
       const T halley_den = slope2 - T(0.5) * resid * at.curvature;
       const auto cubic = halley_den > T(0.5) * slope2 && halley_den < T(1.5) * slope2;
-      step = -div_or(resid * slope, if_else(cubic, halley_den, slope2), T(0));
+      if constexpr (kBothQuotients) {
+        // Both quotients, then the select: the comparison is off the chain (slope² is known
+        // before the Halley denominator, so Newton's quotient is done before Halley's starts).
+        // The same values as the select of the divisor. Four lanes, Intel VM: MF 6.2 / MF 6.1
+        // 1.306 → 1.297 paired (three alternating runs).
+        const T num = resid * slope;
+        const T quotient = if_else(cubic, num / halley_den, num / slope2);
+        const auto zero = (cubic && is_zero(halley_den)) || (!cubic && is_zero(slope2));
+        step = -if_else(zero, T(0), quotient);
+      } else {
+        step = -div_or(resid * slope, if_else(cubic, halley_den, slope2), T(0));
+      }
       falling = falling && slope2 > T(0);
       // Near the root the factor is near 1; within 10 % of it is the cubic regime the estimate
       // assumes (a long step whose factor is merely within [2/3, 2] left it 475× low).
@@ -721,7 +772,7 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target,
     } else {
       step = -div_or(resid, slope, T(0));
     }
-    const T newton = rl + step;
+    const T newton = point + step;
     // Converged: a step at most the tolerance (it may round onto the bracket's end it came
     // from; a NaN step is not), or a step inside the bracket after one of the same kind whose
     // remaining error is at most ε·R0 (this saves the confirming step): Newton's C·step² with
@@ -729,7 +780,7 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target,
     // with K ≈ step / previous³ (cubic), step⁴ ≤ ε·R0·previous³/20 (see above).
     // At an end with Fz62 on the far side of Fz, the branch has no root: that end. Nor where the
     // bracket has closed on a hump's peak below Fz (lo past the peak, never above Fz): its end.
-    const auto no_root = (above && !(rl < hi_end)) || (!deep && !(rl > lo_end));
+    const auto no_root = (above && !(point < hi_end)) || (!deep && !(point > lo_end));
     const T step_abs = abs(step);
     // The estimate's powers of the steps taken as at least the tolerance, so that they do not
     // underflow into denormals (a microcode assist on the Intel VM's Xeon: a step of 1e-11 m, as
@@ -755,17 +806,24 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target,
       landed_or_end = if_else(peak_below, lo_end, landed);
       collapsed = collapsed || (active && peak_below && !no_root);
     }
-    T next = if_else(inside, newton, T(0.5) * (lo + hi));
-    next = if_else(!inside && deep && !hi_known, hi_end, next);
-    next = if_else(!inside && !deep && !lo_known, lo_end, next);
-    next = if_else(converged, if_else(no_root, rl, landed_or_end), next);
+    // Where Newton's (Halley's) step leaves the bracket: its midpoint, or its far end where not
+    // yet evaluated. Chosen before the step is known, so that one select follows it.
+    T outside = T(0.5) * (lo + hi);
+    outside = if_else(deep && !hi_known, hi_end, outside);
+    outside = if_else(!deep && !lo_known, lo_end, outside);
+    const T next = if_else(inside, newton, outside);
     // The converged step as computed, not as Rl's rounding leaves it: ρz below takes it (a light
     // load's ρz, ~1e-7 m, is only a few of float's Rl steps, 6e-8 m at 0.5 m; a step below half
     // of one rounds back onto Rl, the bracket's end).
     const auto within = !(newton < lo) && !(newton > hi);
     last_move = if_else(active && converged,
-                        if_else(no_root, T(0), if_else(within, step, landed - rl)), last_move);
-    rl = if_else(active, next, rl);
+                        if_else(no_root, T(0), if_else(within, step, landed - point)), last_move);
+    // The answer where converged; the next point, which an unconverged lane evaluates next, does
+    // not wait for the convergence test (in a converged lane the next evaluation is not used):
+    // four lanes' MF 6.2 / MF 6.1 1.321 → 1.306 paired on the Intel VM (three alternating runs;
+    // the 16-lane batch 1.247 → 1.243, double and float within their noise).
+    rl = if_else(active, if_else(converged, if_else(no_root, point, landed_or_end), next), rl);
+    point = next;
     previous_settles = inside && settles;
     previous_step = step_abs;
     active = active && !converged;
@@ -798,7 +856,7 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target,
       const T mid = T(0.5) * (lo + hi);
       const Fz62Value<T> at = fz62<false>(c, mid, fz_target, memo);
       const auto above = at.excess > T(0);
-      const auto deep = deep_side(above, at.excess, at.slope, at.drho_z);
+      const auto deep = deep_side(above, at.excess, at.scale, at.slope, at.drho_z);
       lo = if_else(active && deep, mid, lo);
       hi = if_else(active && !deep, mid, hi);
       if (hump_possible) lo_crossed = lo_crossed || (active && above);

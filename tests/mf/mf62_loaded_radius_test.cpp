@@ -217,7 +217,9 @@ double lane_value(const T& v, int k) {
 //     lanes, 1.1e-16 in double;
 //   - each result is within that plus the arithmetic's rounding of x^q (from long double): the
 //     rounding of δ = x·(1/b) − 1, amplified by |q|, and of b^q·N/D, within (8 + |q|) ε;
-//   - where pow was taken the result is pow's and the memo moved to x (only in that lane).
+//   - where pow was taken the result is pow's and the memo moved to x (only in that lane);
+//   - where the approximant was taken its denominator D (fz62_pow_ratio's den) is positive: fz62
+//     returns Fz62 − Fz and its derivatives times D and the solve reads their signs.
 // For MagicFormula62's q = −0.9502 the approximant (not pow) serves every |δ| < 0.3 in float and
 // −0.49 ≤ δ ≤ 1.3 on lanes (the bound's reach there is −0.57 … 1.34); the binomial series to δ⁶
 // they replaced served only |δ| < 0.095.
@@ -268,6 +270,8 @@ void check_pow_near_memo(const MfParameters<P>& base_params, double half_epsilon
         memo.inv_base = T(1) / base;
         memo.value = T(std::pow(static_cast<P>(b), static_cast<P>(q_t)));
         const T delta = x * memo.inv_base - T(1);  // as fz62_pow computes it
+        detail::Fz62PowMemo<T> memo_ratio = memo;
+        const detail::Fz62Power<T> ratio = detail::fz62_pow_ratio(c, x, memo_ratio, T(0) <= T(0));
         const T got = detail::fz62_pow(c, x, memo);
         using std::pow;  // the type's own pow (on lanes found by argument-dependent lookup)
         const T computed_pow = T(pow(x, T(static_cast<P>(q_t))));
@@ -292,6 +296,8 @@ void check_pow_near_memo(const MfParameters<P>& base_params, double half_epsilon
                           1.0L);
             EXPECT_LE(static_cast<double>(truncation), half_epsilon);
             EXPECT_LE(static_cast<double>(rel), tolerance);
+            // fz62 scales Fz62 − Fz and its derivatives by D and reads their signs: D > 0.
+            EXPECT_GT(lane_value(ratio.den, k), 0.0);
           } else {
             ++computed;
             EXPECT_EQ(moved_to, static_cast<double>(xk));
