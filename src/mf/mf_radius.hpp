@@ -50,7 +50,7 @@ void rolling_radius(const MfParameters<P>& p, Prepared<T>& in) {
   in.romega = romega;
 }
 
-/// How fz62_pow takes (1 + δ)^q near its memo: the [3/3] Padé approximant (kPowPade: float,
+/// How fz62_pow_ratio takes (1 + δ)^q near its memo: the [3/3] Padé approximant (kPowPade: float,
 /// double, double lanes, Jets), the [5/5] one (kPowPade55: float lanes) or the binomial series to
 /// δ⁶ (fixed point).
 template <typename T>
@@ -84,7 +84,7 @@ struct Fz62Curve {
   T fcy_per_force;           // Q_FCY / Fz0
   T fy;
   // Fcy² = (ρz/R0)^q·(Q_FCY·(Fy − Sfyg)/Fz0)², q = 2·Q_FCY2; near a point where the power is
-  // known, (1 + δ)^q (see fz62_pow) by
+  // known, (1 + δ)^q (see fz62_pow_ratio) by
   //   - float, double, double lanes, Jets: its [3/3] Padé approximant N(δ)/D(δ),
   //     N/D − (1 + δ)^q ≈ e7·δ⁷
   //     with e7 = (q − 3)(q − 2)(q − 1)q(q + 1)(q + 2)(q + 3)/100800;
@@ -94,8 +94,8 @@ struct Fz62Curve {
   T pow_n1, pow_n2, pow_n3;  // N(δ) = 1 + n1·δ + n2·δ² + n3·δ³ (+ n4·δ⁴ + n5·δ⁵; series: C(q, 1…3))
   T pow_d1, pow_d2, pow_d3;  // D(δ) = 1 + d1·δ + d2·δ² + d3·δ³ (+ d4·δ⁴ + d5·δ⁵; series: C(q, 4…6))
   T pow_n4 = T(0), pow_n5 = T(0), pow_d4 = T(0), pow_d5 = T(0);  // float lanes only
-  T pow_remainder;     // the bound's factor on |δ|⁷ (float lanes: on t¹¹; see fz62_pow)
-  T pow_floor = T(0);  // float lanes: the least δ the approximant takes (see fz62_pow)
+  T pow_remainder;     // the bound's factor on |δ|⁷ (float lanes: on t¹¹; see fz62_pow_ratio)
+  T pow_floor = T(0);  // float lanes: the least δ the approximant takes (see fz62_pow_ratio)
 };
 
 /// Fz62Curve but for what the forces Fx and Fy set (fz62_set_forces): four lanes build it before
@@ -169,7 +169,7 @@ Fz62Curve<T, P> fz62_curve_without_forces(const MfParameters<P>& p, const T& gam
     // e11 = (5!)²/(10!·11!)·q(q² − 1)(q² − 4)(q² − 9)(q² − 16)(q² − 25).
     const P e11 = (q2 - P(1)) * (q2 - P(4)) * (q2 - P(9)) * (q2 - P(16)) * (q2 - P(25)) * q *
                   P(9.941312851e-11);
-    // At least 1e-20 (fz62_pow's bound accepts the same δ: 1e-20·1.5¹¹ is far below 6e-8), so
+    // At least 1e-20 (fz62_pow_ratio's bound accepts the same δ: 1e-20·1.5¹¹ is far below 6e-8), so
     // that the bound's product never underflows.
     c.pow_remainder = T(max_of(P(8) * (e11 < P(0) ? -e11 : e11), P(1e-20)));
     // Below δ = −0.5/(1 + (|q| − 1)/2) (−0.5 for |q| ≤ 1) N's or D's terms cancel enough for
@@ -206,15 +206,15 @@ Fz62Curve<T, P> fz62_curve_without_forces(const MfParameters<P>& p, const T& gam
     c.pow_d2 = down2;
     c.pow_d3 = down2 * (P(1) - q) * P(1.0 / 12.0);
     const P e7 = (q * q - P(9)) * (q * q - P(4)) * (q * q - P(1)) * q * P(1.0 / 100800.0);
-    // 4·|e7|: wherever fz62_pow accepts the approximant (4·|e7|·|δ|⁷ below half of ε, |δ| < 0.3)
-    // its error relative to (1 + δ)^q is at most 3.4·|e7|·|δ|⁷ over q ∈ [−10, 10] (a grid of
-    // q and δ; a helper's review found the accepted results within 0.86·ε/2 of x^q in float and
-    // 0.28·ε/2 in double, also near every whole q and for |q| up to 1e10). The asymptotic form
-    // alone is no bound where it is not accepted: at δ = −0.3 the error is 4.6·|e7|·|δ|⁷ for
-    // q = −0.95 and 206× for q = −10. Where Q_FCY2 is a fit's Jet, at least 1e-3: at a whole q
-    // in [−3, 3] e7 is 0 and the approximant exact in value, but not in its derivative with
-    // respect to Q_FCY2 (|de7/dq| ≤ 1.2e-3 for |q| ≤ 2, 7.1e-3 at ±3, where that derivative's
-    // truncation can reach 7–9× the bound, as it could with the series).
+    // 4·|e7|: wherever fz62_pow_ratio accepts the approximant (4·|e7|·|δ|⁷ below half of ε,
+    // |δ| < 0.3) its error relative to (1 + δ)^q is at most 3.4·|e7|·|δ|⁷ over q ∈ [−10, 10]
+    // (a grid of q and δ; a helper's review found the accepted results within 0.86·ε/2 of x^q
+    // in float and 0.28·ε/2 in double, also near every whole q and for |q| up to 1e10). The
+    // asymptotic form alone is no bound where it is not accepted: at δ = −0.3 the error is
+    // 4.6·|e7|·|δ|⁷ for q = −0.95 and 206× for q = −10. Where Q_FCY2 is a fit's Jet, at least
+    // 1e-3: at a whole q in [−3, 3] e7 is 0 and the approximant exact in value, but not in its
+    // derivative with respect to Q_FCY2 (|de7/dq| ≤ 1.2e-3 for |q| ≤ 2, 7.1e-3 at ±3, where that
+    // derivative's truncation can reach 7–9× the bound, as it could with the series).
     const P bound = P(4) * (e7 < P(0) ? -e7 : e7);
     if constexpr (std::is_arithmetic_v<P>) {
       c.pow_remainder = T(bound);
@@ -375,7 +375,7 @@ template <typename T, typename P>
         approx = memo.value * (T(1) + delta * (s12 + delta2 * (s34 + delta2 * s56)));
       } else {
         // N and D side by side, each as two independent pairs; the value multiplies N while D is
-        // computed, so one division follows.
+        // computed (the caller takes N/D without forming it: see fz62).
         const T num = (T(1) + c.pow_n1 * delta) + delta2 * (c.pow_n2 + c.pow_n3 * delta);
         const T den = (T(1) + c.pow_d1 * delta) + delta2 * (c.pow_d2 + c.pow_d3 * delta);
         approx = memo.value * num;
@@ -417,11 +417,15 @@ struct Fz62Value {
 /// its derivatives is written as a − p·b, with a and b computed while the power is (p' = p·g with
 /// g = q·x'/x, p'' = p·g2): what waits for the power is one product and one subtraction, then the
 /// step's division. Where fz62_pow_ratio gives the power as N/D (its Padé approximant), each is
-/// returned times D (`scale`, 1 where pow was taken), as a·D − N·b: every use of them is a sign or
-/// a step, −F/F' or Halley's −F·F'/(F'² − ½·F·F''), whose value D cancels from (up to rounding),
-/// so the approximant's division is off the solve's chain. Four lanes on the Intel VM: MF 6.2 /
-/// MF 6.1 1.334 → 1.320 paired, float 1.281 → 1.262; the 16-lane batch, bound by throughput
-/// rather than latency, 1.240 → 1.247, double unchanged (1.305).
+/// returned times D (`scale`; 1 where pow was taken, in unloaded lanes and in fixed point), as
+/// a·D − N·b (a·D waits for D as N·b for N): the approximant's division is off the solve's chain.
+/// Every use of them is a sign (Fz62 − Fz at a point, the slope's), a quantity of degree 0 in D
+/// (−F/F', Halley's −F·F'/(F'² − ½·F·F''), the Halley factor's tests against F'²) or a test with
+/// D on both sides (the hump's Fz62 < 0); only the underflow guards (F'² > 0, a zero Halley
+/// denominator) move, by a factor D² of order 1 where the approximant is taken. Four lanes on the
+/// Intel VM: MF 6.2 / MF 6.1 1.334 → 1.320 paired, float 1.281 → 1.262; the 16-lane batch, bound
+/// by throughput rather than latency, 1.240 → 1.247 (it keeps the scaling: its bits are four
+/// lanes'), double unchanged (1.305).
 template <bool kSecond, typename T, typename P>
 [[gnu::always_inline]] inline Fz62Value<T> fz62(const Fz62Curve<T, P>& c, const T& rl,
                                                 const T& fz_target, Fz62PowMemo<T>& memo) {
@@ -584,8 +588,8 @@ struct LoadedRadius62 {
 ///   camber's deflection at Romega. It leaves out Fcy's factor
 ///   (ρz/R0)^Q_FCY2 and is a few mm off (1 cm where that factor matters most). Where the start lies
 ///   below Romega on that branch and Q_FCY2 ≠ 0, the power at the start's deflection is computed
-///   alongside its Rl (it seeds the memo of fz62_pow), so that the first evaluation, at nearly that
-///   deflection, need not wait for pow; not in fixed point (no FPU to overlap it with).
+///   alongside its Rl (it seeds the memo of fz62_pow_ratio), so that the first evaluation, at
+///   nearly that deflection, need not wait for pow; not in fixed point (no FPU to overlap it with).
 /// - The step: in double (and a fit's Jets) and on lanes Halley's, −F·F'/(F'² − ½·F·F''), cubic,
 ///   where its factor on Newton's step, 1/(1 − F·F''/(2·F'²)), is within [2/3, 2] (else, far from
 ///   the root, Newton's). On the benchmark's points this takes double from 3.4 evaluations per
@@ -690,10 +694,10 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target,
   // (negative where the camber's alone is more: the start is then Romega, below).
   const T rho_zfr0 = (x0 * c.r0 - rho_romega) * c.inv_free_share;
   // The power at the start's deflection, computed while its Rl and ρz are: the first evaluation
-  // (at ρz ≈ x0·R0 where the free-rolling part is positive) then takes it from the memo (fz62_pow)
-  // instead of waiting for pow. Not in fixed point (no FPU to overlap it with: it would only add a
-  // division and the series), nor where Q_FCY2 = 0 (no power is computed), nor where the root lies
-  // above Romega (the start is Romega, where the memo is exact already).
+  // (at ρz ≈ x0·R0 where the free-rolling part is positive) then takes it from the memo
+  // (fz62_pow_ratio) instead of waiting for pow. Not in fixed point (no FPU to overlap it with:
+  // it would only add a division and the series), nor where Q_FCY2 = 0 (no power is computed),
+  // nor where the root lies above Romega (the start is Romega, where the memo is exact already).
   if constexpr (!is_fixed_point<T>) {
     const auto seeded = rho_zfr0 > T(0) && !beyond;
     if (!is_zero(c.q_fcy2) && any_lane(seeded)) {
@@ -726,7 +730,7 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target,
   T drho_at = T(0);
   T d2rho_at = T(0);
   T last_move = T(0);  // from the last point evaluated to the root, where converged
-  T point = rl;        // where the next evaluation is (rl: the answer, where converged)
+  T point = rl;        // where the next evaluation is (rl holds a converged lane's answer)
   LoadedRadius62<T> result{T(0), T(0), 0, false};
   // One step of the iteration; false when no lane is left active.
   const auto iterate = [&](int i) __attribute__((always_inline))->bool {
@@ -755,7 +759,7 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target,
       const auto cubic = halley_den > T(0.5) * slope2 && halley_den < T(1.5) * slope2;
       if constexpr (kBothQuotients) {
         // Both quotients, then the select: the comparison is off the chain (slope² is known
-        // before the Halley denominator, so Newton's quotient is done before Halley's starts).
+        // before the Halley denominator, so Newton's division starts first).
         // The same values as the select of the divisor. Four lanes, Intel VM: MF 6.2 / MF 6.1
         // 1.306 → 1.297 paired (three alternating runs).
         const T num = resid * slope;

@@ -218,8 +218,9 @@ double lane_value(const T& v, int k) {
 //   - each result is within that plus the arithmetic's rounding of x^q (from long double): the
 //     rounding of δ = x·(1/b) − 1, amplified by |q|, and of b^q·N/D, within (8 + |q|) ε;
 //   - where pow was taken the result is pow's and the memo moved to x (only in that lane);
-//   - where the approximant was taken its denominator D (fz62_pow_ratio's den) is positive: fz62
-//     returns Fz62 − Fz and its derivatives times D and the solve reads their signs.
+//   - where the approximant was taken its denominator D (fz62_pow_ratio's den) is positive (fz62
+//     returns Fz62 − Fz and its derivatives times D and the solve reads their signs), and where
+//     pow was taken it is 1.
 // For MagicFormula62's q = −0.9502 the approximant (not pow) serves every |δ| < 0.3 in float and
 // −0.49 ≤ δ ≤ 1.3 on lanes (the bound's reach there is −0.57 … 1.34); the binomial series to δ⁶
 // they replaced served only |δ| < 0.095.
@@ -269,7 +270,7 @@ void check_pow_near_memo(const MfParameters<P>& base_params, double half_epsilon
         memo.base = base;
         memo.inv_base = T(1) / base;
         memo.value = T(std::pow(static_cast<P>(b), static_cast<P>(q_t)));
-        const T delta = x * memo.inv_base - T(1);  // as fz62_pow computes it
+        const T delta = x * memo.inv_base - T(1);  // as fz62_pow_ratio computes it
         detail::Fz62PowMemo<T> memo_ratio = memo;
         const detail::Fz62Power<T> ratio = detail::fz62_pow_ratio(c, x, memo_ratio, T(0) <= T(0));
         const T got = detail::fz62_pow(c, x, memo);
@@ -302,6 +303,7 @@ void check_pow_near_memo(const MfParameters<P>& base_params, double half_epsilon
             ++computed;
             EXPECT_EQ(moved_to, static_cast<double>(xk));
             EXPECT_EQ(lane_value(got, k), lane_value(computed_pow, k));
+            EXPECT_EQ(lane_value(ratio.den, k), 1.0);  // pow's value, as it is
           }
           if (qi == 0 && step >= reach_below - 1e-9 && step <= reach_above + 1e-9) {
             EXPECT_TRUE(kept) << "pow taken within the approximation's reach";

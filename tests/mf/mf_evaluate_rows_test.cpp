@@ -152,10 +152,10 @@ TEST(MfEvaluateRows, EveryLengthAndPlaceInABlock) {
 // rise again (the vertical stiffness reduced by camber, Q_CAM3·|γ| ≥ 1; a negative camber scale,
 // ASPECT_RATIO > 2.15; a pressure factor 1 + PFZ1·dpi ≤ 0 with the limits off), beside every
 // kind of neighbour: each point still gets evaluate<double>'s bits. The power's memo is updated
-// only in the lanes whose power is used (fz62_pow's `used`): an unloaded lane, where the scalar
-// does not call it, no longer has its memo set because its neighbour is loaded. (Counted once:
-// this test makes about 8 900 such calls with an unloaded lane; before that change they did not
-// change a bit here either, but a lane's later steps could depend on its neighbour.)
+// only in the lanes whose power is used (fz62_pow_ratio's `used`): an unloaded lane, where the
+// scalar does not call it, no longer has its memo set because its neighbour is loaded. (Counted
+// once: this test makes about 8 900 such calls with an unloaded lane; before that change they did
+// not change a bit here either, but a lane's later steps could depend on its neighbour.)
 TEST(MfEvaluateRows, LoadedRadiusWhereTheDeflectionVanishesMidSolve) {
   const MfParameters<double> base =
       tyre::load_mf_parameters(testing::tyre_file("MagicFormula62_Parameters.tir")).params;
