@@ -764,8 +764,7 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target,
         // 1.306 → 1.297 paired (three alternating runs).
         const T num = resid * slope;
         const T quotient = if_else(cubic, num / halley_den, num / slope2);
-        const auto zero = (cubic && is_zero(halley_den)) || (!cubic && is_zero(slope2));
-        step = -if_else(zero, T(0), quotient);
+        step = -if_else(is_zero(if_else(cubic, halley_den, slope2)), T(0), quotient);
       } else {
         step = -div_or(resid * slope, if_else(cubic, halley_den, slope2), T(0));
       }
