@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # The code compiled for x86-64-v3 or x86-64-v4 as a whole (src/mf/mf_evaluate_batch_v3.cpp,
 # src/mf/mf_evaluate_batch_v4.cpp, src/mf/mf_evaluate_four_v4.cpp) must define nothing another
-# object could bind to but its entry point: an inline function or template instantiation it left out of line would be a weak (or
-# global, or unique) definition that the linker may pick for baseline code too, which then runs
-# AVX2 or AVX-512 instructions on any CPU (an illegal instruction below that level). Nor may it run
-# code at load time (.init_array, .ctors), on any CPU.
+# object could bind to but its entry point: an inline function or template instantiation it left
+# out of line would be a weak (or global, or unique) definition that the linker may pick for
+# baseline code too, which then runs AVX2 or AVX-512 instructions on any CPU (an illegal
+# instruction below that level). Nor may it run code at load time (.init_array, .ctors), on any CPU.
 # Usage: wide_object_symbols.sh LIBRARY (the static tread_core).
 set -euo pipefail
 library=$(realpath "$1")
