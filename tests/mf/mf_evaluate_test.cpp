@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "mf/mf_options.hpp"
 
@@ -237,6 +238,47 @@ TEST(MfEvaluate, FloatFollowsDouble) {
   EXPECT_NEAR(static_cast<double>(of.fx_n), od.fx_n, 1e-4 * 3000.0);
   EXPECT_NEAR(static_cast<double>(of.fy_n), od.fy_n, 1e-4 * 3000.0);
   EXPECT_NEAR(static_cast<double>(of.mz_nm), od.mz_nm, 1e-3);
+}
+
+// calculateRe in float starts at the map's fixed point (a series in ε = B/A³, where |ε| < 0.02)
+// instead of at MFeval's 0.965·R0, so that its first step is its last; double keeps MFeval's
+// iterates. Both must land on the same fixed point within float's tolerance (1e-6 m), on both sides
+// of |ε| = 0.02 (here ε reaches about 0.1), for a negative Q_V1, a locked or reversed wheel
+// (κ = −1: ω = 0; κ = −1.5) and a standing one.
+TEST(MfEvaluate, FloatRollingRadiusIsDoublesWithinItsTolerance) {
+  const MfOptions o = options_from_use_mode(111).value;
+  int compared = 0;
+  int beyond_series = 0;
+  for (const double q_v1 : {6.2e-4, -6.2e-4, 4e-3}) {
+    MfParameters<double> pd;
+    pd.q_v1 = q_v1;
+    const MfParameters<float> pf = convert_parameters<float>(pd);
+    for (const double fz : {0.0, 1000.0, 4000.0, 16000.0}) {
+      for (const double vx : {-30.0, -1.0, 0.0, 0.5, 16.7, 40.0}) {
+        for (const double kappa : {-1.5, -1.0, -0.3, 0.0, 0.4, 1.0}) {
+          const auto od = evaluate(pd, make_input(fz, kappa, 0.0, 0.0, vx), o);
+          MfInput<float> in;
+          in.fz_n = static_cast<float>(fz);
+          in.kappa = static_cast<float>(kappa);
+          in.vx_mps = static_cast<float>(vx);
+          const auto of = evaluate(pf, in, o);
+          SCOPED_TRACE("Q_V1 " + std::to_string(q_v1) + " Fz " + std::to_string(fz) + " Vx " +
+                       std::to_string(vx) + " κ " + std::to_string(kappa));
+          ASSERT_TRUE(std::isfinite(od.re_m));
+          EXPECT_NEAR(static_cast<double>(of.re_m), od.re_m, 2e-6);
+          EXPECT_NEAR(static_cast<double>(of.omega_radps), od.omega_radps,
+                      1e-5 * std::fabs(od.omega_radps) + 1e-6);
+          // ε of the float start, from the double results: B/A³ with A·(1 + u) = Re.
+          const double speed = (kappa * vx + vx) * pd.unloaded_radius_m / pd.longvl_mps;
+          const double b = pd.unloaded_radius_m * q_v1 * speed * speed;
+          if (std::fabs(b) > 0.02 * od.re_m * od.re_m * od.re_m) ++beyond_series;
+          ++compared;
+        }
+      }
+    }
+  }
+  EXPECT_EQ(compared, 3 * 4 * 6 * 6);
+  EXPECT_GT(beyond_series, 0);
 }
 
 }  // namespace
