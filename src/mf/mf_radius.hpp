@@ -124,6 +124,67 @@ struct Fz62Curve {
   T pow_floor = T(0);  // float lanes: the least δ the approximant takes (see fz62_pow_ratio)
 };
 
+/// The [5/5] Padé approximant of (1 + δ)^q (float lanes' fz62_pow_ratio): N's and D's
+/// coefficients, the bound's factor on t¹¹ and the least δ taken, functions of q alone.
+template <typename P>
+struct Pade55 {
+  P q;
+  P n1, n2, n3, n4, n5, d1, d2, d3, d4, d5;
+  P remainder, floor;
+};
+template <typename P>
+[[gnu::always_inline]] inline Pade55<P> pade55(const P& q) {
+  Pade55<P> k;
+  k.q = q;
+  // N = ₂F₁(−5, −5 − q; −10; −δ), D = ₂F₁(−5, q − 5; −10; −δ): the term in δ^k is the one in
+  // δ^(k−1) times (6 − k)(6 ± q − k)/((11 − k)·k)·δ.
+  k.n1 = (P(5) + q) * P(0.5);
+  k.n2 = k.n1 * (P(4) + q) * P(4.0 / 18.0);
+  k.n3 = k.n2 * (P(3) + q) * P(3.0 / 24.0);
+  k.n4 = k.n3 * (P(2) + q) * P(2.0 / 28.0);
+  k.n5 = k.n4 * (P(1) + q) * P(1.0 / 30.0);
+  k.d1 = (P(5) - q) * P(0.5);
+  k.d2 = k.d1 * (P(4) - q) * P(4.0 / 18.0);
+  k.d3 = k.d2 * (P(3) - q) * P(3.0 / 24.0);
+  k.d4 = k.d3 * (P(2) - q) * P(2.0 / 28.0);
+  k.d5 = k.d4 * (P(1) - q) * P(1.0 / 30.0);
+  const P q2 = q * q;
+  // e11 = (5!)²/(10!·11!)·q(q² − 1)(q² − 4)(q² − 9)(q² − 16)(q² − 25).
+  const P e11 = (q2 - P(1)) * (q2 - P(4)) * (q2 - P(9)) * (q2 - P(16)) * (q2 - P(25)) * q *
+                P(9.941312851e-11);
+  // At least 1e-20 (fz62_pow_ratio's bound accepts the same δ: 1e-20·1.5¹¹ is far below 6e-8), so
+  // that the bound's product never underflows.
+  k.remainder = max_of(P(8) * (e11 < P(0) ? -e11 : e11), P(1e-20));
+  // Below δ = −0.5/(1 + (|q| − 1)/2) (−0.5 for |q| ≤ 1) N's or D's terms cancel enough for
+  // float's rounding to exceed (8 + |q|)·ε near whole |q| of 4 or 5, where e11 is about 0.
+  const P magnitude = q < P(0) ? -q : q;
+  k.floor = P(-0.5) / (P(1) + P(0.5) * max_of(magnitude - P(1), P(0)));
+  return k;
+}
+/// pade55 for the q of the last call on this thread, kept: the coefficients take about forty
+/// scalar operations and four divisions' worth of the divider, which four lanes' evaluate_four
+/// paid in every call (it builds the curve per call), beside a solve whose chain sets its time.
+/// Four lanes on the Intel VM: MF 6.2's extra time over MF 6.1 1 846 → 1 769 ns per block of
+/// 64 wheels, the paired MF 6.2 / MF 6.1 1.302 → 1.292 (five alternating runs). Keyed on q's
+/// value (a fit changes Q_FCY2 in place), per thread (`tread mf eval` evaluates on every core); a
+/// constant-initialised thread-local: no allocation, no guard. The values are pade55's.
+template <typename P>
+struct Pade55Kept {
+  bool valid;
+  Pade55<P> k;
+};
+// Internal linkage, as pade55_kept's: each object has its own (the x86-64-v4 file's code must
+// share nothing with baseline code: tests/mf/wide_object_symbols.sh).
+template <typename P>
+static thread_local constinit Pade55Kept<P> pade55_kept_value{};
+template <typename P>
+[[gnu::always_inline]] static inline Pade55<P> pade55_kept(const P& q) {
+  Pade55Kept<P>& kept = pade55_kept_value<P>;
+  // Recomputed unless q equals the kept one (a NaN q: every time).
+  if (!(kept.valid && kept.k.q <= q && kept.k.q >= q)) kept = {true, pade55(q)};
+  return kept.k;
+}
+
 /// Fz62Curve but for what the forces Fx and Fy set (fz62_set_forces): four lanes build it before
 /// the forces are known, so that it is off the solve's chain. `tan_gamma`: tan γ where the caller
 /// has it (computed beside tan α), else null.
@@ -171,37 +232,22 @@ Fz62Curve<T, P> fz62_curve_without_forces(const MfParameters<P>& p, const T& gam
   c.fcy_per_force = T(P(p.q_fcy) / fz0);
   const P q = c.pow_q;
   if constexpr (kPowPade55<T>) {
-    // N = ₂F₁(−5, −5 − q; −10; −δ), D = ₂F₁(−5, q − 5; −10; −δ): the term in δ^k is the one in
-    // δ^(k−1) times (6 − k)(6 ± q − k)/((11 − k)·k)·δ.
-    const P n1 = (P(5) + q) * P(0.5);
-    const P n2 = n1 * (P(4) + q) * P(4.0 / 18.0);
-    const P n3 = n2 * (P(3) + q) * P(3.0 / 24.0);
-    const P n4 = n3 * (P(2) + q) * P(2.0 / 28.0);
-    const P d1 = (P(5) - q) * P(0.5);
-    const P d2 = d1 * (P(4) - q) * P(4.0 / 18.0);
-    const P d3 = d2 * (P(3) - q) * P(3.0 / 24.0);
-    const P d4 = d3 * (P(2) - q) * P(2.0 / 28.0);
-    c.pow_n1 = n1;
-    c.pow_n2 = n2;
-    c.pow_n3 = n3;
-    c.pow_n4 = n4;
-    c.pow_n5 = n4 * (P(1) + q) * P(1.0 / 30.0);
-    c.pow_d1 = d1;
-    c.pow_d2 = d2;
-    c.pow_d3 = d3;
-    c.pow_d4 = d4;
-    c.pow_d5 = d4 * (P(1) - q) * P(1.0 / 30.0);
-    const P q2 = q * q;
-    // e11 = (5!)²/(10!·11!)·q(q² − 1)(q² − 4)(q² − 9)(q² − 16)(q² − 25).
-    const P e11 = (q2 - P(1)) * (q2 - P(4)) * (q2 - P(9)) * (q2 - P(16)) * (q2 - P(25)) * q *
-                  P(9.941312851e-11);
-    // At least 1e-20 (fz62_pow_ratio's bound accepts the same δ: 1e-20·1.5¹¹ is far below 6e-8), so
-    // that the bound's product never underflows.
-    c.pow_remainder = T(max_of(P(8) * (e11 < P(0) ? -e11 : e11), P(1e-20)));
-    // Below δ = −0.5/(1 + (|q| − 1)/2) (−0.5 for |q| ≤ 1) N's or D's terms cancel enough for
-    // float's rounding to exceed (8 + |q|)·ε near whole |q| of 4 or 5, where e11 is about 0.
-    const P magnitude = q < P(0) ? -q : q;
-    c.pow_floor = T(P(-0.5) / (P(1) + P(0.5) * max_of(magnitude - P(1), P(0))));
+    // Four lanes build the curve for every call, the batch once per block in a loop GCC hoists it
+    // out of (mf_evaluate_batch.cpp): four lanes keep the last q's coefficients (see Pade55).
+    constexpr bool kKept = sizeof(T) == 4 * sizeof(float);
+    const Pade55<P> k = kKept ? pade55_kept(q) : pade55(q);
+    c.pow_n1 = k.n1;
+    c.pow_n2 = k.n2;
+    c.pow_n3 = k.n3;
+    c.pow_n4 = k.n4;
+    c.pow_n5 = k.n5;
+    c.pow_d1 = k.d1;
+    c.pow_d2 = k.d2;
+    c.pow_d3 = k.d3;
+    c.pow_d4 = k.d4;
+    c.pow_d5 = k.d5;
+    c.pow_remainder = k.remainder;
+    c.pow_floor = k.floor;
   } else if constexpr (!kPowPade<T>) {
     const P c2 = q * (q - P(1)) / P(2);
     const P c3 = c2 * (q - P(2)) / P(3);
