@@ -161,22 +161,24 @@ template <typename P>
   k.floor = P(-0.5) / (P(1) + P(0.5) * max_of(magnitude - P(1), P(0)));
   return k;
 }
-/// pade55 for the q of the last call on this thread, kept: the coefficients take about forty
-/// scalar operations and four divisions' worth of the divider, which four lanes' evaluate_four
-/// paid in every call (it builds the curve per call), beside a solve whose chain sets its time.
-/// Four lanes on the Intel VM: MF 6.2's extra time over MF 6.1 1 846 → 1 769 ns per block of
-/// 64 wheels, the paired MF 6.2 / MF 6.1 1.302 → 1.292 (five alternating runs). Keyed on q's
-/// value (a fit changes Q_FCY2 in place), per thread (`tread mf eval` evaluates on every core); a
-/// constant-initialised thread-local: no allocation, no guard. The values are pade55's.
+/// What pade55_kept keeps: internal linkage, as pade55_kept's, so that each object has its own
+/// (the x86-64-v4 file's code must share nothing with baseline code: tests/mf/
+/// wide_object_symbols.sh).
 template <typename P>
 struct Pade55Kept {
   bool valid;
   Pade55<P> k;
 };
-// Internal linkage, as pade55_kept's: each object has its own (the x86-64-v4 file's code must
-// share nothing with baseline code: tests/mf/wide_object_symbols.sh).
 template <typename P>
 static thread_local constinit Pade55Kept<P> pade55_kept_value{};
+/// pade55 for the q of the last call on this thread, kept: the coefficients take about forty
+/// scalar operations, a division among them, which four lanes' evaluate_four paid in every call
+/// (it builds the curve per call) beside a solve whose chain sets its time. Four lanes on the
+/// Intel VM: MF 6.2's extra time over MF 6.1 1 870 → 1 747 ns per block of 64 wheels, the paired
+/// MF 6.2 / MF 6.1 1.302 → 1.288 (five alternating runs). Keyed on q's value (a fit changes
+/// Q_FCY2 in place), per thread (`tread mf eval` evaluates on every core); a constant-initialised
+/// thread-local: no allocation, no guard. The values are pade55's (Mf62LoadedRadius.
+/// KeptPadeCoefficientsAreTheComputedOnes).
 template <typename P>
 [[gnu::always_inline]] static inline Pade55<P> pade55_kept(const P& q) {
   Pade55Kept<P>& kept = pade55_kept_value<P>;
@@ -233,7 +235,7 @@ Fz62Curve<T, P> fz62_curve_without_forces(const MfParameters<P>& p, const T& gam
   const P q = c.pow_q;
   if constexpr (kPowPade55<T>) {
     // Four lanes build the curve for every call, the batch once per block in a loop GCC hoists it
-    // out of (mf_evaluate_batch.cpp): four lanes keep the last q's coefficients (see Pade55).
+    // out of (mf_evaluate_batch.cpp): four lanes keep the last q's coefficients (pade55_kept).
     constexpr bool kKept = sizeof(T) == 4 * sizeof(float);
     const Pade55<P> k = kKept ? pade55_kept(q) : pade55(q);
     c.pow_n1 = k.n1;

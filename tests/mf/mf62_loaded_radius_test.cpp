@@ -13,12 +13,14 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <filesystem>
 #include <limits>
 #include <random>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <type_traits>
 #include <vector>
 
@@ -388,6 +390,35 @@ void check_start_convergent() {
   // The bound is not loose (the error's leading term is u⁴; above u = 0.05, where float's rounding
   // no longer hides it, 3/4 of it is reached).
   EXPECT_GT(worst_share, 0.5);
+}
+
+// Four lanes keep the [5/5] Padé coefficients of the last q per thread (pade55_kept): whatever
+// sequence of q a thread asks for (the same again, another, back, a NaN, ±0), each answer is
+// pade55(q)'s, bit for bit, and another thread's q does not change this thread's answers.
+TEST(Mf62LoadedRadius, KeptPadeCoefficientsAreTheComputedOnes) {
+  using detail::Pade55;
+  // The coefficients, bit for bit (q itself may be the other zero: −0 and +0 give the same ones).
+  const auto same = [](const Pade55<float>& a, const Pade55<float>& b) {
+    static_assert(sizeof(Pade55<float>) == 13 * sizeof(float));
+    return std::memcmp(&a.n1, &b.n1, 12 * sizeof(float)) == 0;
+  };
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const std::vector<float> qs{-0.9502F, -0.9502F, 1.3F,  -0.9502F, 4.0F, nan,
+                              nan,      2.0F,     -0.0F, 0.0F,     2.0F, -0.9502F};
+  for (const float q : qs) {
+    const Pade55<float> kept = detail::pade55_kept(q);
+    const Pade55<float> computed = detail::pade55(q);
+    if (std::isnan(q)) {
+      EXPECT_TRUE(std::isnan(kept.q) && std::isnan(kept.n1) && std::isnan(kept.remainder));
+    } else {
+      EXPECT_TRUE(same(kept, computed)) << "q " << q;
+    }
+  }
+  Pade55<float> other_thread{};
+  std::thread t([&] { other_thread = detail::pade55_kept(3.5F); });
+  t.join();
+  EXPECT_TRUE(same(other_thread, detail::pade55(3.5F)));
+  EXPECT_TRUE(same(detail::pade55_kept(-0.9502F), detail::pade55(-0.9502F)));
 }
 
 TEST(Mf62LoadedRadius, StartIsTheRootsThirdConvergent) {
