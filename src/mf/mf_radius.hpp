@@ -17,9 +17,9 @@
 namespace tread::mf::detail {
 
 /// calculateRe: Re by MFeval's fixed-point iteration on omega = (κ·Vx + Vx)/Re (unlimited κ, Fz,
-/// Vx).
+/// Vx). Returns the steps taken (on lanes, the most of any lane).
 template <typename T, typename P>
-void rolling_radius(const MfParameters<P>& p, Prepared<T>& in) {
+[[gnu::always_inline]] inline int rolling_radius(const MfParameters<P>& p, Prepared<T>& in) {
   const T r0 = p.unloaded_radius_m;
   const T fz0 = p.fnomin_n;
   const T cz = p.vertical_stiffness_npm * (T(1) + p.pfz1 * in.dpi);
@@ -34,9 +34,10 @@ void rolling_radius(const MfParameters<P>& p, Prepared<T>& in) {
     // MFeval's 0.965·R0. The iteration is Re ← A + B/Re² with A = R0·Q_RE0 − deflection,
     // B = R0·Q_V1·(v·R0/V0)², v = κ·Vx + Vx. Its fixed point is A·(1 + u), where u + 2u² + u³ =
     // ε = B/A³, so u = ε − 2ε² + 7ε³ − 30ε⁴ + 143ε⁵ − …; cut after ε⁴, the start is within about
-    // 143·ε⁵·A of it (1e-9 m at ε = 0.007, Vx = 40 m/s and κ = 0.3 on the sample tyre; 2e-7 m at
-    // ε = 0.02, the most taken). The first step then moves Re by less than the tolerance, 1e-6 m,
-    // and is the last, where from 0.965·R0 it took three, each waiting for the previous one's
+    // 143·ε⁵·A of it (1e-9 m at ε = 0.007, Vx = 40 m/s and κ = 0.3 on MagicFormula61; 2e-7 m at
+    // |ε| = 0.02, the most taken). The first step then moves Re by less than the tolerance, 1e-6 m
+    // (for A up to about 1.5 m; a larger tyre takes a second), and is the last, where from
+    // 0.965·R0 it took three, each waiting for the previous one's
     // division (on lanes the slowest lane sets the count, on a branch that waits for the chain).
     // The answer is the same map's iterate, within float's resolution of MFeval's. Taken where
     // |ε| < 0.02 and A > R0/2; elsewhere the old start.
@@ -60,8 +61,9 @@ void rolling_radius(const MfParameters<P>& p, Prepared<T>& in) {
   const T tolerance =
       T(std::is_same_v<T, float> || is_float_lanes<T> || is_fixed_point<T> ? 1e-6 : 1e-9);
   const auto every = !(T(0) > T(0));
-  for (int i = 0; i < 100; ++i) {
-    const auto active = i == 0 ? every : abs(re_old - re) > tolerance;
+  int steps = 0;
+  for (; steps < 100; ++steps) {
+    const auto active = steps == 0 ? every : abs(re_old - re) > tolerance;
     if (!any_lane(active)) break;
     const T omega_next = div_or(in.ukappa * in.vx + in.vx, re, T(0));
     const T speed = (omega_next * r0) / p.longvl_mps;
@@ -74,6 +76,7 @@ void rolling_radius(const MfParameters<P>& p, Prepared<T>& in) {
   in.re = re;
   in.omega = omega;
   in.romega = romega;
+  return steps;
 }
 
 /// How fz62_pow_ratio takes (1 + δ)^q near its memo: the [3/3] Padé approximant (kPowPade: float,
@@ -170,15 +173,23 @@ struct Pade55Kept {
   Pade55<P> k;
 };
 template <typename P>
-static thread_local constinit Pade55Kept<P> pade55_kept_value{};
+[[gnu::tls_model("initial-exec")]] static thread_local constinit Pade55Kept<P> pade55_kept_value{};
 /// pade55 for the q of the last call on this thread, kept: the coefficients take about forty
 /// scalar operations, a division among them, which four lanes' evaluate_four paid in every call
 /// (it builds the curve per call) beside a solve whose chain sets its time. Four lanes on the
 /// Intel VM: MF 6.2's extra time over MF 6.1 1 870 → 1 747 ns per block of 64 wheels, the paired
 /// MF 6.2 / MF 6.1 1.302 → 1.288 (five alternating runs). Keyed on q's value (a fit changes
 /// Q_FCY2 in place), per thread (`tread mf eval` evaluates on every core); a constant-initialised
-/// thread-local: no allocation, no guard. The values are pade55's (Mf62LoadedRadius.
-/// KeptPadeCoefficientsAreTheComputedOnes).
+/// thread-local of the initial-exec model: no guard, no __tls_get_addr, no allocation on a
+/// thread's first use, also where tread is linked into a shared object (which then needs its 56
+/// bytes of static TLS). Hosted targets only (kKeepPade55): on bare metal there is no thread
+/// pointer. Not async-signal-safe (nothing evaluates in a signal handler). The values are
+/// pade55's (Mf62LoadedRadius.KeptPadeCoefficientsAreTheComputedOnes).
+#if defined(__linux__)
+inline constexpr bool kKeepPade55 = true;
+#else
+inline constexpr bool kKeepPade55 = false;
+#endif
 template <typename P>
 [[gnu::always_inline]] static inline Pade55<P> pade55_kept(const P& q) {
   Pade55Kept<P>& kept = pade55_kept_value<P>;
@@ -234,10 +245,18 @@ Fz62Curve<T, P> fz62_curve_without_forces(const MfParameters<P>& p, const T& gam
   c.fcy_per_force = T(P(p.q_fcy) / fz0);
   const P q = c.pow_q;
   if constexpr (kPowPade55<T>) {
-    // Four lanes build the curve for every call, the batch once per block in a loop GCC hoists it
-    // out of (mf_evaluate_batch.cpp): four lanes keep the last q's coefficients (pade55_kept).
-    constexpr bool kKept = sizeof(T) == 4 * sizeof(float);
-    const Pade55<P> k = kKept ? pade55_kept(q) : pade55(q);
+    // evaluate_four builds the curve in every call, the 8- and 16-lane batch once per block in a
+    // loop GCC hoists it out of (mf_evaluate_batch.cpp): four lanes keep the last q's
+    // coefficients (pade55_kept; also the batch's blocks where it runs four lanes: NEON, and
+    // builds without the x86-64 wide files).
+    constexpr bool kKept = kKeepPade55 && is_float_lanes<T> && sizeof(T) == 4 * sizeof(float);
+    const Pade55<P> k = [&] {
+      if constexpr (kKept) {
+        return pade55_kept(q);
+      } else {
+        return pade55(q);
+      }
+    }();
     c.pow_n1 = k.n1;
     c.pow_n2 = k.n2;
     c.pow_n3 = k.n3;

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -394,13 +395,17 @@ void check_start_convergent() {
 
 // Four lanes keep the [5/5] Padé coefficients of the last q per thread (pade55_kept): whatever
 // sequence of q a thread asks for (the same again, another, back, a NaN, ±0), each answer is
-// pade55(q)'s, bit for bit, and another thread's q does not change this thread's answers.
+// pade55(q)'s, bit for bit; another thread starts with nothing kept and leaves this thread's q
+// kept.
 TEST(Mf62LoadedRadius, KeptPadeCoefficientsAreTheComputedOnes) {
   using detail::Pade55;
   // The coefficients, bit for bit (q itself may be the other zero: −0 and +0 give the same ones).
   const auto same = [](const Pade55<float>& a, const Pade55<float>& b) {
-    static_assert(sizeof(Pade55<float>) == 13 * sizeof(float));
-    return std::memcmp(&a.n1, &b.n1, 12 * sizeof(float)) == 0;
+    using Floats = std::array<float, 13>;
+    static_assert(sizeof(Pade55<float>) == sizeof(Floats));
+    const auto fa = std::bit_cast<Floats>(a);
+    const auto fb = std::bit_cast<Floats>(b);
+    return std::memcmp(fa.data() + 1, fb.data() + 1, 12 * sizeof(float)) == 0;
   };
   const float nan = std::numeric_limits<float>::quiet_NaN();
   const std::vector<float> qs{-0.9502F, -0.9502F, 1.3F,  -0.9502F, 4.0F, nan,
@@ -414,11 +419,19 @@ TEST(Mf62LoadedRadius, KeptPadeCoefficientsAreTheComputedOnes) {
       EXPECT_TRUE(same(kept, computed)) << "q " << q;
     }
   }
+  // Per thread: another thread starts with nothing kept and leaves this thread's q kept.
+  ASSERT_TRUE(same(detail::pade55_kept(-0.9502F), detail::pade55(-0.9502F)));
+  bool other_started_empty = false;
   Pade55<float> other_thread{};
-  std::thread t([&] { other_thread = detail::pade55_kept(3.5F); });
+  std::thread t([&] {
+    other_started_empty = !detail::pade55_kept_value<float>.valid;
+    other_thread = detail::pade55_kept(3.5F);
+  });
   t.join();
+  EXPECT_TRUE(other_started_empty);
   EXPECT_TRUE(same(other_thread, detail::pade55(3.5F)));
-  EXPECT_TRUE(same(detail::pade55_kept(-0.9502F), detail::pade55(-0.9502F)));
+  EXPECT_TRUE(detail::pade55_kept_value<float>.valid);
+  EXPECT_TRUE(same(detail::pade55_kept_value<float>.k, detail::pade55(-0.9502F)));
 }
 
 TEST(Mf62LoadedRadius, StartIsTheRootsThirdConvergent) {
