@@ -37,13 +37,13 @@ template <typename T, typename P>
     // 143·ε⁵·A of it (1e-9 m at ε = 0.007, Vx = 40 m/s and κ = 0.3 on MagicFormula61; 2e-7 m at
     // |ε| = 0.02, the most taken). The first step then moves Re by less than the tolerance, 1e-6 m
     // (for A up to about 1.5 m; a larger tyre takes a second), and is the last, where from
-    // 0.965·R0 it took three, each waiting for the previous one's
-    // division (on lanes the slowest lane sets the count, on a branch that waits for the chain).
-    // The answer is the same map's iterate, within float's resolution of MFeval's. Taken where
-    // |ε| < 0.02 and A > R0/2; elsewhere the old start.
+    // 0.965·R0 it took three, each waiting for the previous one's division (on lanes the slowest
+    // lane sets the count, on a branch that waits for the chain). The answer is the same map's
+    // iterate, within float's resolution of MFeval's. Taken where |ε| < 0.02 and A > R0/2;
+    // elsewhere the old start.
     // Not in double: there tread gives MFeval's iterates themselves (ω is the step before the
-    // last's, up to 2.6e-9 off the fixed point, and the golden test asks 1e-9), nor in fixed point
-    // (no FPU: the division would only add to the steps).
+    // last's, up to 2.6e-9 relative off the fixed point, and the golden test asks 1e-9), nor in
+    // fixed point (no FPU: the division would only add to the steps).
     const T a = r0 * p.q_re0 - deflection;
     const T v = in.ukappa * in.vx + in.vx;
     const T s = v * (r0 / p.longvl_mps);
@@ -174,6 +174,12 @@ struct Pade55Kept {
 };
 template <typename P>
 [[gnu::tls_model("initial-exec")]] static thread_local constinit Pade55Kept<P> pade55_kept_value{};
+/// Whether pade55_kept is used: on Linux targets (a thread pointer for the thread-local).
+#if defined(__linux__)
+inline constexpr bool kKeepPade55 = true;
+#else
+inline constexpr bool kKeepPade55 = false;
+#endif
 /// pade55 for the q of the last call on this thread, kept: the coefficients take about forty
 /// scalar operations, a division among them, which four lanes' evaluate_four paid in every call
 /// (it builds the curve per call) beside a solve whose chain sets its time. Four lanes on the
@@ -185,11 +191,6 @@ template <typename P>
 /// bytes of static TLS). Hosted targets only (kKeepPade55): on bare metal there is no thread
 /// pointer. Not async-signal-safe (nothing evaluates in a signal handler). The values are
 /// pade55's (Mf62LoadedRadius.KeptPadeCoefficientsAreTheComputedOnes).
-#if defined(__linux__)
-inline constexpr bool kKeepPade55 = true;
-#else
-inline constexpr bool kKeepPade55 = false;
-#endif
 template <typename P>
 [[gnu::always_inline]] static inline Pade55<P> pade55_kept(const P& q) {
   Pade55Kept<P>& kept = pade55_kept_value<P>;
