@@ -280,13 +280,14 @@ TEST(MfEvaluate, FloatRollingRadiusStartsAtItsFixedPoint) {
           detail::Prepared<float> prepared = detail::prepare(pf, in, o);
           const int steps = detail::rolling_radius(pf, prepared);
           // From the series: ω is taken at the start (within 143·|ε|⁵·A of the fixed point), Re one
-          // step on (that error times 2ε), both to float's rounding. From 0.965·R0 (|ε| > 0.02):
-          // MFeval's stop, a last step below 1e-6 m; ω is the step before the last's.
+          // step on (that error times 2ε), both to float's rounding (5 ulp of Re here; 1.9 seen on
+          // x86-64). From 0.965·R0 (|ε| > 0.02): MFeval's stop, a last step below 1e-6 m; ω is the
+          // step before the last's.
           double re_tolerance = 5e-7;
           double omega_tolerance = 5e-6;
           if (std::fabs(eps) < 0.019) {
             EXPECT_EQ(steps, 1) << "ε " << eps;
-            re_tolerance = 1e-7;
+            re_tolerance = 1.5e-7;
             omega_tolerance = 1e-6;
             ++series;
           } else if (eps > 0.021) {
@@ -335,7 +336,7 @@ TEST(MfEvaluate, FourLanesRollingRadiusMixesStartsPerLane) {
     SCOPED_TRACE("lane " + std::to_string(k));
     // As the scalar test's (lane 1 is beyond the series, from 0.965·R0).
     const bool from_series = k != 1;
-    EXPECT_NEAR(static_cast<double>(out[k].re_m), od.re_m, from_series ? 1e-7 : 5e-7);
+    EXPECT_NEAR(static_cast<double>(out[k].re_m), od.re_m, from_series ? 1.5e-7 : 5e-7);
     EXPECT_NEAR(static_cast<double>(out[k].omega_radps), od.omega_radps,
                 (from_series ? 1e-6 : 5e-6) * std::fabs(od.omega_radps) + 1e-6);
   }
