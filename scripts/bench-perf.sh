@@ -11,20 +11,25 @@
 #   2. With --timing SECONDS: scripts/bench-timing.sh SECONDS RUNS (cyclictest alone, then RUNS
 #      times the node with a cyclictest beside it and a control pair; --timing-runs, default 3).
 #   3. With --cli: scripts/bench-mf-eval.sh (`tread mf eval` on 1 M rows), when present.
+#   4. With --issue-baseline: scripts/bench-issue-baseline.sh (four lanes and the batch against the
+#      double path of the day the issue was filed, commit 75b2c3b, and through it against the
+#      issue's peer; builds that commit's mf_bench once).
 # A peer (e.g. MFeval exported to C++) is not part of the project; where one is measured elsewhere,
 # its figure against the double path carries over through the ratio column.
-# Usage: scripts/bench-perf.sh [--timing SECONDS [--timing-runs N]] [--cli]
+# Usage: scripts/bench-perf.sh [--timing SECONDS [--timing-runs N]] [--cli] [--issue-baseline]
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 timing=""
 timing_runs=3
 cli=0
+baseline=0
 while (($#)); do
   case $1 in
     --timing) timing=${2:?--timing needs SECONDS}; shift 2 ;;
     --timing-runs) timing_runs=${2:?--timing-runs needs N}; shift 2 ;;
     --cli) cli=1; shift ;;
-    *) echo "usage: $0 [--timing SECONDS [--timing-runs N]] [--cli]" >&2; exit 2 ;;
+    --issue-baseline) baseline=1; shift ;;
+    *) echo "usage: $0 [--timing SECONDS [--timing-runs N]] [--cli] [--issue-baseline]" >&2; exit 2 ;;
   esac
 done
 cmake --preset host >/dev/null
@@ -88,4 +93,8 @@ if ((cli)); then
   else
     echo "(scripts/bench-mf-eval.sh not present)"
   fi
+fi
+if ((baseline)); then
+  echo
+  bash scripts/bench-issue-baseline.sh
 fi
