@@ -176,11 +176,13 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
                    : fx_pure;
   const T fy = options.combined ? gyk * y0.fy0 + svyk : y0.fy0;
   // MF 6.2's (and MF 5.2's, PAC2002's) loaded radius, a root search whose steps depend on each
-  // other, needs only the forces (zeroed on a lifted wheel, as zero_lifted does below). On lanes it
-  // is started here, so that Mz's and the moments' work overlaps its chain (AVX2 VM, two sets of 8
-  // alternating runs: the 8-lane batch's MF 6.2 / MF 6.1 1.31–1.35 → 1.27–1.28, medians; four
-  // lanes unchanged); in float and double after everything else, as before (there it measured
-  // about 1 % slower here, 13 ns in float on the AVX-512 VM).
+  // other, needs only the forces (zeroed on a lifted wheel, as zero_lifted does below). On lanes and
+  // in double it is started here, so that Mz's and the moments' work overlaps its chain (AVX2 VM,
+  // two sets of 8 alternating runs: the 8-lane batch's MF 6.2 / MF 6.1 1.31–1.35 → 1.27–1.28,
+  // medians; four lanes unchanged. Double on the Intel VM, 10 alternating runs: 1.304 → 1.296,
+  // MF 6.2 about 5 ns per evaluation faster, MF 6.1 unchanged); in float and fixed point after
+  // everything else, as before (float measured about 1 % slower here, 13 ns on the AVX-512 VM).
+  constexpr bool kSolveBeforeMoments = is_lanes<T> || std::is_same_v<T, double>;
   LoadedRadius62<T> solved{T(0), T(0), 0, false};
   // MF 6.2's contact patch width takes a cube root (a power): where two powers cost about one
   // (kTwoForOne), beside the solve's seeded power; the contact load it is taken of is passed on
@@ -189,7 +191,7 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
   ContactLoad<T> width_load{};
   const bool width_beside =
       kTwoForOne<T> && p.fit_type == FitType::mf62 && !options.extras_loaded_radius_only;
-  if constexpr (is_lanes<T>) {
+  if constexpr (kSolveBeforeMoments) {
     if (solve62) {
       const auto lifted = !(in.ufz > T(0));
       const T fx_solve = if_else(lifted, T(0), fx);
@@ -249,7 +251,7 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
   zero_lifted(out, !(in.ufz > T(0)));  // Fz ≤ 0: no contact
 
   if (options.extras) {
-    if constexpr (!is_lanes<T>) {
+    if constexpr (!kSolveBeforeMoments) {
       if (solve62) solved = solve_loaded_radius62(p, in, b, out.fx_n, out.fy_n);
     }
     loaded_radius(p, in, b, solved, out);
