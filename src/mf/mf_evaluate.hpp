@@ -176,11 +176,11 @@ MfOutput<T> evaluate(const MfParameters<P>& params, const MfInput<T>& input,
                    : fx_pure;
   const T fy = options.combined ? gyk * y0.fy0 + svyk : y0.fy0;
   // MF 6.2's (and MF 5.2's, PAC2002's) loaded radius, a root search whose steps depend on each
-  // other, needs only the forces (zeroed on a lifted wheel, as zero_lifted does below). On lanes and
-  // in double it is started here, so that Mz's and the moments' work overlaps its chain (AVX2 VM,
-  // two sets of 8 alternating runs: the 8-lane batch's MF 6.2 / MF 6.1 1.31–1.35 → 1.27–1.28,
-  // medians; four lanes unchanged. Double on the Intel VM, 10 alternating runs: 1.304 → 1.296,
-  // MF 6.2 about 5 ns per evaluation faster, MF 6.1 unchanged); in float and fixed point after
+  // other, needs only the forces (zeroed on a lifted wheel, as zero_lifted does below). On lanes
+  // and in double it is started here, so that Mz's and the moments' work overlaps its chain (AVX2
+  // VM, two sets of 8 alternating runs: the 8-lane batch's MF 6.2 / MF 6.1 1.31–1.35 → 1.27–1.28,
+  // medians; four lanes unchanged. Double on the Intel VM, two sets of 10 alternating runs:
+  // 1.301 → 1.291 and 1.304 → 1.296, MF 6.1 unchanged); in float, fixed point and Jets after
   // everything else, as before (float measured about 1 % slower here, 13 ns on the AVX-512 VM).
   constexpr bool kSolveBeforeMoments = is_lanes<T> || std::is_same_v<T, double>;
   LoadedRadius62<T> solved{T(0), T(0), 0, false};

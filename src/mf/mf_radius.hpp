@@ -997,8 +997,8 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target,
 
 /// MF 6.2, MF 5.2 and PAC2002: Rl with Fz62(Rl) = Fz (decreasing in Rl) by loaded_radius62, at the
 /// forces Fx and Fy after the lifted wheel's zeroing. It needs nothing else of the evaluation: on
-/// lanes evaluate starts it as soon as the forces are known, so that the moments' work overlaps
-/// its chain of dependent steps (float, double and fixed point call it last). The load: MF 6.2
+/// lanes and in double evaluate starts it as soon as the forces are known, so that the moments'
+/// work overlaps its chain of dependent steps (float, fixed point and Jets call it last). MF 6.2
 /// solves for the load as given (MFeval 4.x's calculateRhoRl62 takes uFz, not the Fz limited to
 /// FZMAX that the forces see); MF 5.2 / PAC2002 for the limited load.
 template <typename T, typename P>
