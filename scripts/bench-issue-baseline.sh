@@ -4,7 +4,7 @@
 # project does not build the peer. The issue measured it at 2532 ns per evaluation where tread's
 # double path of that day took 1186 ns, 2.135× as long, and asked for the goals to be read against
 # the double path measured in the same run. The double path has changed since (on the Intel VM it
-# is 1.24–1.37× faster), so today's double path no longer stands for the peer at 2.135×.
+# is 1.17–1.53× faster), so today's double path no longer stands for the peer at 2.135×.
 # The double path of that day does: it is a fixed program, commit 75b2c3b (the parent of the
 # issue's first change), whose mf_bench this script builds once from the clone's history (into
 # build/issue17-baseline, a few minutes) and runs in turns with today's, ROUNDS times.
@@ -12,12 +12,12 @@
 # today's double, four lanes and batch per wheel, each × 75b2c3b's double path and × the peer
 # estimated as 2.135 × 75b2c3b's double path. That factor was measured on the issue's machine;
 # how well it carries over to another CPU is not known. A benchmark, not pass/fail.
-# Usage: scripts/bench-issue-baseline.sh [ROUNDS]   (default 8)
+# Usage: scripts/bench-issue-baseline.sh [ROUNDS]   (default 20, about a minute once built)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
-rounds=${1:-8}
+rounds=${1:-20}
 if ! [[ $rounds =~ ^[1-9][0-9]*$ ]]; then
-  echo "usage: $0 [ROUNDS]   (ROUNDS: a whole number ≥ 1, default 8)" >&2
+  echo "usage: $0 [ROUNDS]   (ROUNDS: a whole number ≥ 1, default 20)" >&2
   exit 2
 fi
 ref=75b2c3b
