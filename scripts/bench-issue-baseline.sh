@@ -63,10 +63,11 @@ for ((r = 0; r < rounds; r++)); do
       filter='Mf61_(Double|FloatFour|FloatBatch)_Combined_Extras$'
     fi
     "$bin" --benchmark_filter="$filter" --benchmark_min_time=0.3 --benchmark_format=json 2>/dev/null |
-      /usr/bin/python3 -c '
+      PYTHONPATH=scripts /usr/bin/python3 -c '
 import json, sys
+from mf_bench_per_wheel import ns_per_wheel
 for b in json.load(sys.stdin)["benchmarks"]:
-    print(sys.argv[1], sys.argv[2], b["run_name"], b["cpu_time"] * {"ns": 1, "us": 1e3, "ms": 1e6}[b["time_unit"]])
+    print(sys.argv[1], sys.argv[2], b["run_name"], ns_per_wheel(b))
 ' "$r" "$which" >>"$out"
   done
 done
@@ -79,12 +80,7 @@ per = collections.defaultdict(dict)  # round -> name -> ns per wheel
 for line in open(path):
     r, which, name, t = line.split()
     name = name.removeprefix("BM_Mf61_").removesuffix("_Combined_Extras")
-    ns = float(t)
-    if name == "FloatFour":
-        ns /= 4
-    elif name == "FloatBatch":
-        ns /= 1024  # one call evaluates the 1024 operating points
-    per[int(r)][("old " if which == "old" else "") + name] = ns
+    per[int(r)][("old " if which == "old" else "") + name] = float(t)  # ns per wheel
 rows = [("tread double of the issue's day (" + ref + ")", "old Double", None),
         ("tread double, today", "Double", None),
         ("tread four lanes, per wheel", "FloatFour", 15.0),

@@ -51,21 +51,15 @@ build/host/tests/mf/mf_bench --benchmark_filter='Mf6[12]_(Double|Float|FloatFour
 build/host/tests/mf/mf_bench --benchmark_filter='Ratio_(Double|Float|FloatFour|FloatBatch)$' \
   --benchmark_repetitions=3 --benchmark_min_time=0.5 --benchmark_report_aggregates_only=true \
   --benchmark_format=json >"$pairs" 2>/dev/null
-/usr/bin/python3 - "$json" "$pairs" <<'EOF'
+PYTHONPATH=scripts /usr/bin/python3 - "$json" "$pairs" <<'EOF'
 import json, sys
+from mf_bench_per_wheel import ns_per_wheel
 runs = json.load(open(sys.argv[1]))["benchmarks"]
 ns = {}
 for r in runs:
     if r.get("aggregate_name") != "median":
         continue
-    name = r["run_name"].removeprefix("BM_")
-    scale = {"ns": 1, "us": 1e3, "ms": 1e6}[r["time_unit"]]
-    per_call = r["cpu_time"] * scale
-    if "FloatFour" in name:
-        per_call /= 4
-    elif "FloatBatch" in name:
-        per_call /= 1024  # one call evaluates the 1024 operating points
-    ns[name] = per_call
+    ns[r["run_name"].removeprefix("BM_")] = ns_per_wheel(r)
 paired = {}
 for r in json.load(open(sys.argv[2]))["benchmarks"]:
     if r.get("aggregate_name") == "median":
