@@ -66,4 +66,16 @@ bool read_csv_number(std::string_view cell, bool decimal_comma, double& value) n
   return std::fabs(value) > 0.0 || !nonzero_mantissa(first, last);
 }
 
+const char* read_csv_number_at(const char* first, const char* last, double& value) noexcept {
+  if (first != last && *first == '+') ++first;
+  const fast_float::from_chars_result r = fast_float::from_chars_advanced(
+      first, last, value, fast_float::parse_options(fast_float::chars_format::general, '.'));
+  if (r.ec != std::errc() || r.ptr == first || r.ptr - first > static_cast<long>(kMaxChars) ||
+      !std::isfinite(value)) {
+    return nullptr;
+  }
+  if (!(std::fabs(value) > 0.0) && nonzero_mantissa(first, r.ptr)) return nullptr;
+  return r.ptr;
+}
+
 }  // namespace tread::host

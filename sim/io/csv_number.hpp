@@ -16,4 +16,13 @@ namespace tread::host {
 /// True with the number in `value`; false (`value` unspecified) if `cell` is not one.
 bool read_csv_number(std::string_view cell, bool decimal_comma, double& value) noexcept;
 
+/// The one-pass path of a row read in place: the number that starts at `first` (after a '+', if
+/// any) in a line that ends at `last`, with '.' as its decimal point. Returns the end of the
+/// number, or nullptr wherever read_csv_number's other rules decide: no number, more than 64
+/// characters, inf or nan, too large, an underflow to zero. A Fortran exponent ends the number
+/// at its `d`. If only blanks follow the returned end up to the cell's separator (or the line's
+/// end), read_csv_number of that cell with a '.' point gives the same value: the caller checks
+/// that, and reads any other cell with read_csv_number.
+const char* read_csv_number_at(const char* first, const char* last, double& value) noexcept;
+
 }  // namespace tread::host

@@ -23,16 +23,18 @@ namespace tread::host::text {
   throw std::runtime_error(source + ":" + std::to_string(line) + ": " + message);
 }
 
-/// Without leading and trailing white space (space, tab, CR, LF, form feed, vertical tab: what
-/// std::isspace counts in the C locale).
+/// White space: space, tab, CR, LF, form feed, vertical tab (what std::isspace counts in the C
+/// locale).
+inline bool is_blank(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v';
+}
+
+/// Without leading and trailing white space (is_blank).
 inline std::string_view trim_blanks(std::string_view s) {
-  const auto is_space = [](char c) {
-    return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v';
-  };
-  while (!s.empty() && is_space(s.front())) {
+  while (!s.empty() && is_blank(s.front())) {
     s.remove_prefix(1);
   }
-  while (!s.empty() && is_space(s.back())) {
+  while (!s.empty() && is_blank(s.back())) {
     s.remove_suffix(1);
   }
   return s;

@@ -1,6 +1,7 @@
 #include "tyre/input_table.hpp"
 
 #include <cctype>
+#include <cstring>
 #include <istream>
 
 #include "io/csv_number.hpp"
@@ -332,8 +333,9 @@ void InputTable::wrong_cell_count(std::size_t found, int line_no) const {
 bool InputTable::parse_row(std::string_view line, int line_no, InputRow& row) const {
   const std::string_view t = host::text::trim_blanks(line);
   if (t.empty() || t.front() == '#') return false;
-  row.value.fill(0.0);
   row.line = line_no;
+  if (separator_ == ',' && read_comma_row(t, row)) return true;
+  row.value.fill(0.0);
   // The cell count is checked first, so the first bad number is only noted on the way.
   std::size_t cell = 0;
   std::size_t start = 0;
@@ -365,6 +367,32 @@ bool InputTable::parse_row(std::string_view line, int line_no, InputRow& row) co
                             std::string(bad_text) + "' is not a finite number");
   }
   return true;
+}
+
+bool InputTable::read_comma_row(std::string_view t, InputRow& row) const noexcept {
+  row.value.fill(0.0);
+  const char* p = t.data();
+  const char* const end = p + t.size();
+  for (std::size_t cell = 0; cell < cells_; ++cell) {
+    if (cell > 0) {
+      if (p == end || *p != ',') return false;
+      ++p;
+    }
+    const int q = quantity_of_cell_[cell];
+    if (q < 0) {  // a column not read: up to the next separator
+      const void* next = std::memchr(p, ',', static_cast<std::size_t>(end - p));
+      p = next != nullptr ? static_cast<const char*>(next) : end;
+      continue;
+    }
+    while (p != end && host::text::is_blank(*p)) ++p;
+    double v = 0.0;
+    p = host::read_csv_number_at(p, end, v);
+    if (p == nullptr) return false;
+    while (p != end && host::text::is_blank(*p)) ++p;
+    const auto qi = static_cast<std::size_t>(q);
+    row.value[qi] = v * spec_[qi].to_si * sign_[qi];
+  }
+  return p == end;
 }
 
 std::vector<std::string> InputTable::mapping() const {

@@ -140,6 +140,12 @@ class InputTable {
   /// Takes the units of a units row (see the file comment); false if `cells` is not one.
   bool apply_units_row(const std::vector<std::string>& cells, int line_no);
   [[noreturn]] void wrong_cell_count(std::size_t found, int line_no) const;
+  /// parse_row's one pass over a ',' separated line `t` (trimmed, not a comment): each number
+  /// read where it stands (host::read_csv_number_at), no cell copied or scanned twice. False
+  /// wherever a cell needs read_csv_number's other rules or the row an error (a cell count, a
+  /// bad number): parse_row then reads the line again cell by cell, which gives the same values
+  /// for every line this accepts.
+  bool read_comma_row(std::string_view t, InputRow& row) const noexcept;
 
   std::istream& in_;
   std::string name_;

@@ -4,7 +4,8 @@
 // wheel they build, cants, rail sections and inclinations, wheel families, outer slopes, profile
 // formats, sign conventions. The first byte picks the parser; the rest is the text.
 // - a number token either parses to a finite value that its shortest text reads back exactly, or
-//   is refused; the profile number parser agrees on every plain decimal;
+//   is refused; the profile number parser agrees on every plain decimal, and so does a CSV row's
+//   one-pass reader (host::read_csv_number_at) with a CSV cell's reader;
 // - a spec either parses or throws a std::exception whose message quotes the text or the part of
 //   it that is wrong (checked for short printable texts);
 // - a wheel spec that parses builds a wheel whose sampled profile is finite with y increasing, or
@@ -16,6 +17,7 @@
 
 #include "contact/contact_setup.hpp"
 #include "fuzz_support.hpp"
+#include "io/csv_number.hpp"
 #include "io/text_line.hpp"
 #include "profile/profile_file.hpp"
 #include "profile/rail_profile.hpp"
@@ -101,6 +103,29 @@ void number_token(std::string_view text) {
   }
 }
 
+// A ',' row's one pass reads a cell where it stands (host::read_csv_number_at): where it reads
+// the whole cell, the value is the cell's own (host::read_csv_number, '.' point), to the bit; and
+// it reads every plain number that the cell's reading takes.
+void csv_cell(std::string_view text) {
+  const std::string_view cell = host::text::trim_blanks(text);
+  double whole = 0.0;
+  const bool number = host::read_csv_number(cell, false, whole);
+  const char* end = text.data() + text.size();
+  const char* p = text.data();
+  while (p != end && host::text::is_blank(*p)) ++p;
+  double at = 0.0;
+  const char* stop = host::read_csv_number_at(p, end, at);
+  while (stop != nullptr && stop != end && host::text::is_blank(*stop)) ++stop;
+  if (stop == end) {
+    fuzz_check(
+        number && std::bit_cast<std::uint64_t>(at) == std::bit_cast<std::uint64_t>(whole),
+        "the one-pass CSV reader takes '" + std::string(text) + "' as the cell's reader does not");
+  } else if (number && cell.find_first_of("dD") == std::string_view::npos) {
+    fuzz_check(false,
+               "the one-pass CSV reader declines the plain number '" + std::string(text) + "'");
+  }
+}
+
 void wheel(const std::string& text) {
   profile::WheelParameters parameters;
   if (!parses(text, [&] { parameters = contact::parse_wheel_spec(text); })) return;
@@ -127,6 +152,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   switch (pick % 9U) {
     case 0:
       number_token(text);
+      csv_cell(text);
       break;
     case 1:
       wheel(text);

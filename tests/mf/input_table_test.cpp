@@ -4,14 +4,18 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
 #include <sstream>
 #include <string>
 
+#include "io/csv_number.hpp"
 #include "io/replace_file.hpp"
+#include "io/text_line.hpp"
 #include "test_dir.hpp"
 #include "tir/tir_file.hpp"
 
@@ -216,6 +220,80 @@ TEST(InputTable, ErrorsNameFileAndLine) {
   expect_error("FZ,SL,SA,IA,V\n1,2,inf,0,5\n", 2, "SA: 'inf' is not a finite number");
   // A ',' file does not take decimal commas: the cell count is wrong instead.
   expect_error("FZ,SL,SA,IA,V\n1,0,5,2,0,5\n", 2, "expected 5 cells, found 6");
+}
+
+// A ',' row is read in one pass (InputTable::read_comma_row) and, where that declines, cell by
+// cell: whichever reads it, each cell's value is read_csv_number's of the trimmed cell, to the
+// bit, and a cell it refuses is an error naming its column and text.
+TEST(InputTable, CommaRowsGiveEachCellsOwnValueOrItsError) {
+  const std::string long_zeros = "0." + std::string(61, '0') + "1";  // 64 characters
+  const std::string cells[] = {"4000",
+                               " 4000 ",
+                               "\t+4.5e3\r",
+                               "-0",
+                               "0",
+                               "0.000",
+                               "0e5",
+                               "-0.0e-9",
+                               "1e-300",
+                               "1e-320",
+                               "1e-400",
+                               "0.0e-400",
+                               "1.5D-3",
+                               " 1.5d+2 ",
+                               "2.5E+02",
+                               ".5",
+                               "5.",
+                               "-.5e1",
+                               long_zeros,
+                               long_zeros + "2",
+                               "+-5",
+                               "++5",
+                               "+ 5",
+                               "5 5",
+                               "5e",
+                               "5e+",
+                               "0x10",
+                               "inf",
+                               "-nan",
+                               "1e400",
+                               "",
+                               "  ",
+                               "1.7976931348623157e308",
+                               "4.9e-324",
+                               "12345678901234567890123"};
+  for (const std::string& cell : cells) {
+    for (const bool ignored_column_first : {false, true}) {
+      const std::string header = ignored_column_first ? "t,Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps\n"
+                                                      : "Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps\n";
+      const std::string before = ignored_column_first ? "1;2 x," : "";
+      std::istringstream in(header + before + cell + ",0.1,0.02,0,16.7\n");
+      InputTable t(in, "cells.csv", {});
+      double expected = 0.0;
+      const bool number =
+          tread::host::read_csv_number(tread::host::text::trim_blanks(cell), false, expected);
+      if (number) {
+        const auto row = t.next();
+        ASSERT_TRUE(row) << cell;
+        EXPECT_EQ(std::bit_cast<std::uint64_t>((*row)[InputQuantity::fz]),
+                  std::bit_cast<std::uint64_t>(expected))
+            << "'" << cell << "': " << (*row)[InputQuantity::fz] << " against " << expected;
+        EXPECT_EQ((*row)[InputQuantity::kappa], 0.1);
+        EXPECT_EQ((*row)[InputQuantity::vx], 16.7);
+      } else {
+        try {
+          (void)t.next();
+          ADD_FAILURE() << "'" << cell << "' was read";
+        } catch (const tread::tir::TirError& e) {
+          const std::string what = e.what();
+          EXPECT_NE(what.find("cells.csv"), std::string::npos) << what;
+          EXPECT_NE(what.find("Fz_N: '" + std::string(tread::host::text::trim_blanks(cell)) + "'"),
+                    std::string::npos)
+              << what;
+        }
+      }
+    }
+  }
 }
 
 TEST(ReplaceFile, CommitReplacesAndAbandonLeavesTheOldFile) {
