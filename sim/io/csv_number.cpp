@@ -14,7 +14,7 @@ namespace {
 
 constexpr std::size_t kMaxChars = 64;  // as tir::parse_number
 
-bool is_blank(char c) noexcept {
+bool is_cell_blank(char c) noexcept {
   return c == ' ' || c == '\t' || c == '\r' || c == '\f';
 }
 
@@ -48,8 +48,8 @@ bool nonzero_mantissa(const char* first, const char* last) noexcept {
 bool read_csv_number(std::string_view cell, bool decimal_comma, double& value) noexcept {
   const char* first = cell.data();
   const char* last = first + cell.size();
-  while (first != last && is_blank(*first)) ++first;
-  while (first != last && is_blank(last[-1])) --last;
+  while (first != last && is_cell_blank(*first)) ++first;
+  while (first != last && is_cell_blank(last[-1])) --last;
   if (first != last && *first == '+') ++first;
   const auto n = static_cast<std::size_t>(last - first);
   if (n == 0 || n > kMaxChars) return false;
@@ -70,8 +70,8 @@ const char* read_csv_number_at(const char* first, const char* last, double& valu
   if (first != last && *first == '+') ++first;
   const fast_float::from_chars_result r = fast_float::from_chars_advanced(
       first, last, value, fast_float::parse_options(fast_float::chars_format::general, '.'));
-  if (r.ec != std::errc() || r.ptr == first || r.ptr - first > static_cast<long>(kMaxChars) ||
-      !std::isfinite(value)) {
+  if (r.ec != std::errc() || r.ptr == first ||
+      r.ptr - first > static_cast<std::ptrdiff_t>(kMaxChars) || !std::isfinite(value)) {
     return nullptr;
   }
   if (!(std::fabs(value) > 0.0) && nonzero_mantissa(first, r.ptr)) return nullptr;

@@ -20,9 +20,10 @@ bool read_csv_number(std::string_view cell, bool decimal_comma, double& value) n
 /// any) in a line that ends at `last`, with '.' as its decimal point. Returns the end of the
 /// number, or nullptr wherever read_csv_number's other rules decide: no number, more than 64
 /// characters, inf or nan, too large, an underflow to zero. A Fortran exponent ends the number
-/// at its `d`. If only blanks follow the returned end up to the cell's separator (or the line's
-/// end), read_csv_number of that cell with a '.' point gives the same value: the caller checks
-/// that, and reads any other cell with read_csv_number.
+/// at its `d`. If only blanks (text::is_blank) follow the returned end up to the cell's separator
+/// (or the line's end), read_csv_number of that cell, trimmed by text::trim_blanks, with a '.'
+/// point gives the same value: the caller checks that, and reads any other cell with
+/// read_csv_number.
 const char* read_csv_number_at(const char* first, const char* last, double& value) noexcept;
 
 }  // namespace tread::host

@@ -25,7 +25,7 @@ namespace tread::host::text {
 
 /// White space: space, tab, CR, LF, form feed, vertical tab (what std::isspace counts in the C
 /// locale).
-inline bool is_blank(char c) {
+constexpr bool is_blank(char c) noexcept {
   return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v';
 }
 

@@ -224,12 +224,15 @@ TEST(InputTable, ErrorsNameFileAndLine) {
 
 // A ',' row is read in one pass (InputTable::read_comma_row) and, where that declines, cell by
 // cell: whichever reads it, each cell's value is read_csv_number's of the trimmed cell, to the
-// bit, and a cell it refuses is an error naming its column and text.
+// bit, and a cell it refuses is an error naming its column and text. The cell stands first, after
+// an ignored column, and last.
 TEST(InputTable, CommaRowsGiveEachCellsOwnValueOrItsError) {
   const std::string long_zeros = "0." + std::string(61, '0') + "1";  // 64 characters
   const std::string cells[] = {"4000",
                                " 4000 ",
                                "\t+4.5e3\r",
+                               "\v7\f",
+                               "\f-2.5\v",
                                "-0",
                                "0",
                                "0.000",
@@ -261,13 +264,23 @@ TEST(InputTable, CommaRowsGiveEachCellsOwnValueOrItsError) {
                                "  ",
                                "1.7976931348623157e308",
                                "4.9e-324",
-                               "12345678901234567890123"};
+                               "12345678901234567890123",
+                               "5x",
+                               "1.5.2",
+                               "\v"};
+  struct Layout {
+    const char* header;
+    const char* before;  ///< the cells before Fz's
+    const char* after;   ///< the cells after it
+  };
+  const Layout layouts[] = {
+      {"Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps", "", ",0.1,0.02,0,16.7"},
+      {"t,Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps", "1;2 x,", ",0.1,0.02,0,16.7"},
+      {"kappa,alpha_rad,gamma_rad,Vx_mps,Fz_N", "0.1,0.02,0,16.7,", ""}};
   for (const std::string& cell : cells) {
-    for (const bool ignored_column_first : {false, true}) {
-      const std::string header = ignored_column_first ? "t,Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps\n"
-                                                      : "Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps\n";
-      const std::string before = ignored_column_first ? "1;2 x," : "";
-      std::istringstream in(header + before + cell + ",0.1,0.02,0,16.7\n");
+    for (const Layout& layout : layouts) {
+      std::istringstream in(std::string(layout.header) + "\n" + layout.before + cell +
+                            layout.after + "\n");
       InputTable t(in, "cells.csv", {});
       double expected = 0.0;
       const bool number =
@@ -286,7 +299,7 @@ TEST(InputTable, CommaRowsGiveEachCellsOwnValueOrItsError) {
           ADD_FAILURE() << "'" << cell << "' was read";
         } catch (const tread::tir::TirError& e) {
           const std::string what = e.what();
-          EXPECT_NE(what.find("cells.csv"), std::string::npos) << what;
+          EXPECT_NE(what.find("cells.csv:2"), std::string::npos) << what;
           EXPECT_NE(what.find("Fz_N: '" + std::string(tread::host::text::trim_blanks(cell)) + "'"),
                     std::string::npos)
               << what;
@@ -294,6 +307,33 @@ TEST(InputTable, CommaRowsGiveEachCellsOwnValueOrItsError) {
       }
     }
   }
+}
+
+// Rows of the wrong shape are errors of their cell count, whether the bad part is at the start,
+// the end or in a column not read; a column not read may hold anything but a separator.
+TEST(InputTable, CommaRowsOfTheWrongShape) {
+  const std::string header = "Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps,note\n";
+  {
+    std::istringstream in(header + "4000,0.1,0.02,0,16.7, any text; 1e400 \t\n" +
+                          " 4000 ,\t0.1\v,0.02 , 0 ,16.7,\n");
+    InputTable t(in, "shape.csv", {});
+    for (int line = 2; line <= 3; ++line) {
+      const auto row = t.next();
+      ASSERT_TRUE(row) << line;
+      EXPECT_EQ(row->line, line);
+      EXPECT_EQ((*row)[InputQuantity::fz], 4000.0);
+      EXPECT_EQ((*row)[InputQuantity::kappa], 0.1);
+      EXPECT_EQ((*row)[InputQuantity::vx], 16.7);
+    }
+    EXPECT_FALSE(t.next());
+  }
+  expect_error(header + "4000,0.1,0.02,0,16.7,a,b\n", 2, "expected 6 cells, found 7");
+  expect_error(header + "4000,0.1,0.02,0,16.7,a,\n", 2, "expected 6 cells, found 7");
+  expect_error(header + ",4000,0.1,0.02,0,16.7,x\n", 2, "expected 6 cells, found 7");
+  expect_error(header + ",4000,0.1,0.02,0,16.7\n", 2, "Fz_N: '' is not a finite number");
+  expect_error(header + "4000,0.1,0.02,0,16.7\n", 2, "expected 6 cells, found 5");
+  expect_error(header + "4000,0.1,0.02,0\n", 2, "expected 6 cells, found 4");
+  expect_error(header + "4000,0.1,,0,16.7,x\n", 2, "alpha_rad: '' is not a finite number");
 }
 
 TEST(ReplaceFile, CommitReplacesAndAbandonLeavesTheOldFile) {
