@@ -43,6 +43,12 @@ bool nonzero_mantissa(const char* first, const char* last) noexcept {
   return false;
 }
 
+// The rules once a number is read from [first, last): finite, and not an underflow to zero
+// ("1e-400", which std::from_chars, and so tir::parse_number, refuses as out of range).
+bool finite_not_underflow(double value, const char* first, const char* last) noexcept {
+  return std::isfinite(value) && (std::fabs(value) > 0.0 || !nonzero_mantissa(first, last));
+}
+
 }  // namespace
 
 bool read_csv_number(std::string_view cell, bool decimal_comma, double& value) noexcept {
@@ -61,9 +67,7 @@ bool read_csv_number(std::string_view cell, bool decimal_comma, double& value) n
         std::memchr(first, 'd', n) != nullptr || std::memchr(first, 'D', n) != nullptr;
     if (!fortran || !read_fortran(first, last, point, value)) return false;
   }
-  if (!std::isfinite(value)) return false;
-  // An underflow to zero ("1e-400") is refused, as std::from_chars does.
-  return std::fabs(value) > 0.0 || !nonzero_mantissa(first, last);
+  return finite_not_underflow(value, first, last);
 }
 
 const char* read_csv_number_at(const char* first, const char* last, double& value) noexcept {
@@ -71,10 +75,10 @@ const char* read_csv_number_at(const char* first, const char* last, double& valu
   const fast_float::from_chars_result r = fast_float::from_chars_advanced(
       first, last, value, fast_float::parse_options(fast_float::chars_format::general, '.'));
   if (r.ec != std::errc() || r.ptr == first ||
-      r.ptr - first > static_cast<std::ptrdiff_t>(kMaxChars) || !std::isfinite(value)) {
+      r.ptr - first > static_cast<std::ptrdiff_t>(kMaxChars) ||
+      !finite_not_underflow(value, first, r.ptr)) {
     return nullptr;
   }
-  if (!(std::fabs(value) > 0.0) && nonzero_mantissa(first, r.ptr)) return nullptr;
   return r.ptr;
 }
 
