@@ -64,12 +64,15 @@ TREAD_ROWS_FUNCTION void evaluate_two(const MfParameters<double>& params, const 
   MfInput<DL<2>> lanes_in;
   std::memcpy(static_cast<void*>(&lanes_in), in_fields, sizeof in_fields);
   const MfOutput<DL<2>> r = evaluate(params, lanes_in, options);
-  DL<2> out_fields[kOutputFields];
-  std::memcpy(out_fields, static_cast<const void*>(&r), sizeof out_fields);
+  // Field f of lane i is the double at byte 16·f + 8·i of r, and goes to byte 8·f of out[i]:
+  // copied straight there, a double at a time (no copy of r as a whole, no loop per lane).
+  const auto* from = reinterpret_cast<const unsigned char*>(&r);
   for (std::size_t i = 0; i < n; ++i) {
-    double values[kOutputFields];
-    for (std::size_t f = 0; f < kOutputFields; ++f) values[f] = out_fields[f].v[i];
-    std::memcpy(static_cast<void*>(&out[i]), values, sizeof values);
+    auto* to = reinterpret_cast<unsigned char*>(&out[i]);
+    for (std::size_t f = 0; f < kOutputFields; ++f) {
+      std::memcpy(to + f * sizeof(double), from + f * sizeof(DL<2>) + i * sizeof(double),
+                  sizeof(double));
+    }
     out[i].status = r.status[static_cast<int>(i)];
   }
 }
