@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstring>
 #include <istream>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -131,10 +132,42 @@ struct EvalSetup {
   bool strict = false;
   std::vector<std::size_t> columns;
   std::size_t row_bytes = 0;  ///< the most a formatted row takes
+  /// The limits per input (value[q] < low[q] or > high[q] is outside; ±inf where none applies),
+  /// for check_range's test of a whole row at once.
+  std::array<double, kInputQuantityCount> low{};
+  std::array<double, kInputQuantityCount> high{};
 };
+
+// Fills setup.low and setup.high from setup.limits (the pressure's only where the table has a
+// pressure column).
+void set_bounds(EvalSetup& setup) {
+  setup.low.fill(-std::numeric_limits<double>::infinity());
+  setup.high.fill(std::numeric_limits<double>::infinity());
+  for (const Limit& l : setup.limits) {
+    if (l.quantity == InputQuantity::pressure && !setup.table.has(InputQuantity::pressure)) {
+      continue;
+    }
+    (l.above ? setup.high : setup.low)[static_cast<std::size_t>(l.quantity)] = l.bound;
+  }
+}
+
+// Whether any of `row`'s values may lie outside the model's range: one test of every input, no
+// branch per limit (a pressure of 0, the file's INFLPRES, is never outside).
+bool maybe_outside(const EvalSetup& setup, const InputRow& row) {
+  bool outside = false;
+  for (std::size_t q = 0; q < kInputQuantityCount; ++q) {
+    const double v = row.value[q];
+    const bool beyond = (v < setup.low[q]) | (v > setup.high[q]);
+    outside |= q == static_cast<std::size_t>(InputQuantity::pressure)
+                   ? beyond & (std::fabs(v) > 0.0)
+                   : beyond;
+  }
+  return outside;
+}
 
 // Counts `row`'s values outside the model's range in `outside` (with --strict: refuses the first).
 void check_range(const EvalSetup& setup, const InputRow& row, std::array<Tally, kLimitCount>& out) {
+  if (!maybe_outside(setup, row)) return;
   for (std::size_t i = 0; i < kLimitCount; ++i) {
     const Limit& l = setup.limits[i];
     const double v = row[l.quantity];
@@ -316,7 +349,8 @@ MfCsvReport evaluate_csv(const mf::MfParameters<double>& params, const mf::MfOpt
       {Q::pressure, true, params.presmax_pa, "PRESMAX", "Pa"},
   }};
 
-  EvalSetup setup{table, in_name, limits, options, csv.strict, csv.columns, 0};
+  EvalSetup setup{table, in_name, limits, options, csv.strict, csv.columns, 0, {}, {}};
+  set_bounds(setup);
   // The extras (radii, contact patch, relaxation) change no force or moment, and Mx and My no
   // other output: each skipped when no selected column shows it (the status then covers what is
   // computed and shown).

@@ -418,6 +418,73 @@ TEST(MfCsvStream, RowsAreThoseTheTableReads) {
   }
 }
 
+// The rows counted outside each limit, at every bound, one step either side of it and far
+// beyond, one input at a time (the others inside): a value equal to its bound is inside; a
+// pressure of 0 (the file's INFLPRES) is never outside; without a pressure column no row is
+// outside PRESMIN or PRESMAX. Counted against the limits' definition, row by row.
+TEST(MfCsvStream, RangeCountsAtEveryBound) {
+  const MfParameters<double>& p = mf61();
+  struct Bound {
+    std::size_t column;  // in Point order: Fz, kappa, alpha, gamma, Vx, P
+    double value;
+    bool above;
+    const char* key;
+  };
+  const Bound bounds[] = {{0, p.fzmin_n, false, "FZMIN"},      {0, p.fzmax_n, true, "FZMAX"},
+                          {1, p.kpumin, false, "KPUMIN"},      {1, p.kpumax, true, "KPUMAX"},
+                          {2, p.alpmin_rad, false, "ALPMIN"},  {2, p.alpmax_rad, true, "ALPMAX"},
+                          {3, p.cammin_rad, false, "CAMMIN"},  {3, p.cammax_rad, true, "CAMMAX"},
+                          {5, p.presmin_pa, false, "PRESMIN"}, {5, p.presmax_pa, true, "PRESMAX"}};
+  const Point inside = {4000.0, 0.01, 0.02, 0.01, 20.0, 0.5 * (p.presmin_pa + p.presmax_pa)};
+  std::vector<Point> rows;
+  for (const Bound& b : bounds) {
+    const double inf = std::numeric_limits<double>::infinity();
+    const double far = b.above ? 2.0 * std::fabs(b.value) + 1.0 : -2.0 * std::fabs(b.value) - 1.0;
+    for (const double v :
+         {b.value, std::nextafter(b.value, inf), std::nextafter(b.value, -inf), far, 0.0}) {
+      Point q = inside;
+      double* cell[] = {&q.fz_n, &q.kappa, &q.alpha_rad, &q.gamma_rad, &q.vx_mps, &q.p_pa};
+      *cell[b.column] = v;
+      rows.push_back(q);
+    }
+  }
+  for (const bool with_pressure : {true, false}) {
+    std::string input = csv_text(rows);
+    if (!with_pressure) {  // the last column dropped
+      std::string cut;
+      std::istringstream lines(input);
+      for (std::string line; std::getline(lines, line);)
+        cut += line.substr(0, line.rfind(',')) + '\n';
+      input = cut;
+    }
+    MfCsvReport report;
+    evaluate(input, stream_options(7, 2), &report);
+    for (const Bound& b : bounds) {
+      std::size_t expected = 0;
+      int first_line = 0;
+      for (std::size_t r = 0; r < rows.size(); ++r) {
+        const Point& q = rows[r];
+        const double values[] = {q.fz_n, q.kappa, q.alpha_rad, q.gamma_rad, q.vx_mps, q.p_pa};
+        const double v = values[b.column];
+        if (b.column == 5 && (!with_pressure || !(std::fabs(v) > 0.0))) continue;
+        if (b.above ? v > b.value : v < b.value) {
+          if (expected++ == 0) first_line = static_cast<int>(r) + 2;  // after the header
+        }
+      }
+      const auto found =
+          std::find_if(report.out_of_range.begin(), report.out_of_range.end(),
+                       [&](const auto& c) { return c.limit.find(b.key) != std::string::npos; });
+      if (expected == 0) {
+        EXPECT_EQ(found, report.out_of_range.end()) << b.key << ' ' << with_pressure;
+      } else {
+        ASSERT_NE(found, report.out_of_range.end()) << b.key << ' ' << with_pressure;
+        EXPECT_EQ(found->rows, expected) << b.key << ' ' << with_pressure;
+        EXPECT_EQ(found->first_line, first_line) << b.key << ' ' << with_pressure;
+      }
+    }
+  }
+}
+
 std::string error_of(const std::string& input, const MfCsvOptions& csv) {
   try {
     evaluate(input, csv);
