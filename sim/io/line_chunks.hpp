@@ -8,6 +8,7 @@
 #include <istream>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace tread::host {
 
@@ -16,6 +17,9 @@ struct LineChunk {
   std::string text;
   int first_line = 0;     ///< line number of the first line of `text` (1-based)
   std::size_t lines = 0;  ///< lines in `text`
+  /// Where each line ends in `text` (its '\n', or text.size() for a last line without one), as
+  /// LineChunker found them; empty in a chunk made otherwise.
+  std::vector<std::size_t> ends;
 };
 
 /// Calls `f(line, number)` for each line of `chunk`, without its '\n'.
@@ -24,6 +28,13 @@ void for_each_line(const LineChunk& chunk, F&& f) {
   const std::string_view text = chunk.text;
   std::size_t start = 0;
   int number = chunk.first_line;
+  if (!chunk.ends.empty()) {  // the lines as the chunker found them: no second search
+    for (const std::size_t end : chunk.ends) {
+      f(text.substr(start, end - start), number++);
+      start = end + 1;
+    }
+    return;
+  }
   while (start < text.size()) {
     std::size_t end = text.find('\n', start);
     if (end == std::string_view::npos) end = text.size();

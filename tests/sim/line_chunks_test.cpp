@@ -1,5 +1,6 @@
 // host::LineChunker (sim/io/line_chunks.hpp): whole lines, numbered, in chunks of at most N lines;
-// the text comes out whole, whatever the chunk size, with or without a final newline.
+// the text comes out whole, whatever the chunk size, with or without a final newline; the line
+// ends the chunker records give the lines a search for '\n' gives.
 #include "io/line_chunks.hpp"
 
 #include <gtest/gtest.h>
@@ -37,6 +38,18 @@ std::vector<Line> lines_of(const std::string& text, std::size_t per_chunk, int f
       ++seen;
     });
     EXPECT_EQ(seen, chunk.lines);
+    // The chunker's line ends are the lines' '\n' (or the text's end): the same lines as a search.
+    EXPECT_EQ(chunk.ends.size(), chunk.lines);
+    LineChunk searched = chunk;
+    searched.ends.clear();
+    std::size_t at = lines.size() - seen;
+    tread::host::for_each_line(searched, [&](std::string_view line, int number) {
+      ASSERT_LT(at, lines.size());
+      EXPECT_EQ(line, lines[at].text);
+      EXPECT_EQ(number, lines[at].number);
+      ++at;
+    });
+    EXPECT_EQ(at, lines.size());
     whole += chunk.text;
   }
   EXPECT_EQ(whole, pending + text);
