@@ -151,16 +151,16 @@ void set_bounds(EvalSetup& setup) {
   }
 }
 
-// Whether any of `row`'s values may lie outside the model's range: one test of every input, no
-// branch per limit (a pressure of 0, the file's INFLPRES, is never outside).
+// Whether any of `row`'s values may lie outside the model's range: each input against the bounds
+// set once, not limit by limit (a pressure of 0, the file's INFLPRES, is never outside).
 bool maybe_outside(const EvalSetup& setup, const InputRow& row) {
   bool outside = false;
   for (std::size_t q = 0; q < kInputQuantityCount; ++q) {
     const double v = row.value[q];
-    const bool beyond = (v < setup.low[q]) | (v > setup.high[q]);
-    outside |= q == static_cast<std::size_t>(InputQuantity::pressure)
-                   ? beyond & (std::fabs(v) > 0.0)
-                   : beyond;
+    const bool beyond = v < setup.low[q] || v > setup.high[q];
+    const bool counts =
+        q != static_cast<std::size_t>(InputQuantity::pressure) || std::fabs(v) > 0.0;
+    outside = outside || (beyond && counts);
   }
   return outside;
 }

@@ -4,7 +4,11 @@
 // returns or its error names the file; what it returns holds finite inputs (in SI units) and
 // outputs that are finite or NaN ("not measured"), never infinite, each with the line it came from.
 // An input table without ';' gives the same rows and error read with ',' as its copy with every
-// ',' made a ';' read with ';' (a ',' row has a one-pass reader of its own).
+// ',' made a ';' read with ';' (a ',' row has a one-pass reader of its own). An input table also
+// goes through `tread mf eval`'s stream (tyre::evaluate_csv: chunks of lines read, parsed,
+// evaluated and formatted on worker threads, written in order) twice, in chunks of one line on two
+// threads and in one chunk on one: the same output and report, or the same error naming the file
+// (bit 4 of the first byte: --strict; bit 5: every column, else Fx, Fy and Mz).
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -17,7 +21,11 @@
 
 #include "fit/measurement.hpp"
 #include "fuzz_support.hpp"
+#include "mf/mf_options.hpp"
+#include "mf/mf_parameters.hpp"
 #include "tyre/input_table.hpp"
+#include "tyre/mf_csv.hpp"
+#include "tyre/mf_eval_columns.hpp"
 
 namespace {
 
@@ -69,6 +77,43 @@ TableRead read_table(const std::string& text, char separator, tyre::SignConventi
     read.error = e.what();
   }
   return read;
+}
+
+// `tread mf eval`'s stream over `text` (MF 6.1 with its default coefficients, useMode 111): the
+// output and report as text, or the error.
+struct StreamRun {
+  std::string output;
+  std::string error;
+};
+
+StreamRun run_stream(const std::string& text, tyre::SignConvention convention, bool strict,
+                     bool all_columns, std::size_t chunk_lines, unsigned threads) {
+  static const mf::MfParameters<double> kParams{};
+  StreamRun run;
+  std::istringstream in(text);
+  std::ostringstream out;
+  tyre::MfCsvOptions csv;
+  csv.table.convention = convention;
+  csv.strict = strict;
+  csv.columns = tyre::select_eval_columns(all_columns ? "all" : "Fx_N,Fy_N,Mz_Nm").columns;
+  csv.chunk_lines = chunk_lines;
+  csv.threads = threads;
+  try {
+    const tyre::MfCsvReport report =
+        tyre::evaluate_csv(kParams, mf::MfOptions{}, csv, in, "fuzz_input.csv", out);
+    run.output = out.str() + "\nrows " + std::to_string(report.rows);
+    for (const tyre::MfRangeCount& c : report.out_of_range) {
+      run.output +=
+          "\n" + c.limit + " " + std::to_string(c.rows) + " " + std::to_string(c.first_line);
+    }
+  } catch (const std::bad_alloc&) {
+    throw;
+  } catch (const std::exception& e) {
+    run.error = e.what();
+    fuzz_check(run.error.find("fuzz_input.csv") != std::string::npos,
+               "a stream error that does not name the file: " + run.error);
+  }
+  return run;
 }
 
 }  // namespace
@@ -131,6 +176,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                    "errors: '" +
                        commas.error + "' and '" + other.error + "'");
       }
+      const bool strict = (pick & 16U) != 0;
+      const bool all_columns = (pick & 32U) != 0;
+      const StreamRun lines = run_stream(file, convention, strict, all_columns, 1, 2);
+      const StreamRun whole = run_stream(file, convention, strict, all_columns, 1U << 20, 1);
+      fuzz_check(lines.error == whole.error, "the stream's error depends on its chunks: '" +
+                                                 lines.error + "' and '" + whole.error + "'");
+      fuzz_check(lines.output == whole.output, "the stream's output depends on its chunks");
       break;
     }
   }
