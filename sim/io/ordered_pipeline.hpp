@@ -60,32 +60,34 @@ void run_ordered_pipeline(unsigned workers, std::size_t in_flight, Produce&& pro
     for (std::thread& t : threads) t.join();
     threads.clear();
   };
-  for (unsigned i = 0; i < workers; ++i) {
-    threads.emplace_back([&] {
-      while (true) {
-        Slot* slot = nullptr;
-        {
-          std::unique_lock<std::mutex> lock(mutex);
-          work_ready.wait(lock, [&] { return stopping || !queue.empty(); });
-          if (queue.empty()) return;  // stopping
-          slot = queue.front();
-          queue.pop_front();
-        }
-        try {
-          work(slot->item);
-        } catch (...) {
-          slot->error = std::current_exception();
-        }
-        {
-          const std::lock_guard<std::mutex> lock(mutex);
-          slot->done = true;
-        }
-        work_done.notify_all();
-      }
-    });
-  }
-
   try {
+    // Started inside the try: if starting one fails, those already running are stopped and
+    // joined (a joinable std::thread destroyed would end the program).
+    for (unsigned i = 0; i < workers; ++i) {
+      threads.emplace_back([&] {
+        while (true) {
+          Slot* slot = nullptr;
+          {
+            std::unique_lock<std::mutex> lock(mutex);
+            work_ready.wait(lock, [&] { return stopping || !queue.empty(); });
+            if (queue.empty()) return;  // stopping
+            slot = queue.front();
+            queue.pop_front();
+          }
+          try {
+            work(slot->item);
+          } catch (...) {
+            slot->error = std::current_exception();
+          }
+          {
+            const std::lock_guard<std::mutex> lock(mutex);
+            slot->done = true;
+          }
+          work_done.notify_all();
+        }
+      });
+    }
+
     std::size_t made = 0;      // items produced
     std::size_t consumed = 0;  // items consumed
     bool end = false;

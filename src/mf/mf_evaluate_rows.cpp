@@ -49,6 +49,9 @@ static_assert(std::is_trivially_copyable_v<MfInput<DL<2>>> &&
 static_assert(offsetof(MfOutput<double>, kxk_n) == (kOutputFields - 1) * sizeof(double));
 static_assert(sizeof(MfInput<DL<2>>) == kInputFields * sizeof(DL<2>));
 static_assert(offsetof(MfOutput<DL<2>>, status) == kOutputFields * sizeof(DL<2>));
+// A DL<2> is its two doubles, lane 0 first (evaluate_two copies lane i from byte 8·i).
+static_assert(std::is_standard_layout_v<DL<2>> && sizeof(DL<2>) == 2 * sizeof(double) &&
+              offsetof(DL<2>, v) == 0);
 
 // n (1 or 2) points: lane i takes point i, a lone point is evaluated in both lanes.
 TREAD_ROWS_FUNCTION void evaluate_two(const MfParameters<double>& params, const MfInput<double>* in,

@@ -1,4 +1,4 @@
-// Measurement files and `tread mf eval` input tables (fit/measurement.hpp, mf/input_table.hpp) from
+// Measurement files and `tread mf eval` input tables (fit/measurement.hpp, tyre/input_table.hpp) from
 // bytes no one wrote. The first byte picks the reader (low 2 bits: 0 measurement CSV, 1 TYDEX,
 // 2 or 3 input table) and the sign convention (bits 2-3); the rest is the file. Either the reader
 // returns or its error names the file; what it returns holds finite inputs (in SI units) and
@@ -121,7 +121,7 @@ StreamRun run_stream(const std::string& text, tyre::SignConvention convention, b
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   fuzz::Input input(data, size);
   const std::uint8_t pick = input.byte();
-  const tyre::SignConvention convention = kConventions[(pick >> 2U) % kConventions.size()];
+  const tyre::SignConvention convention = kConventions[((pick >> 2U) & 3U) % kConventions.size()];
   const std::string file(input.rest());
   std::istringstream in{file};
   switch (pick & 3U) {

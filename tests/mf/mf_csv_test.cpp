@@ -19,6 +19,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <vector>
 
@@ -418,10 +419,10 @@ TEST(MfCsvStream, RowsAreThoseTheTableReads) {
   }
 }
 
-// The rows counted outside each limit, at every bound, one step either side of it and far
-// beyond, one input at a time (the others inside): a value equal to its bound is inside; a
-// pressure of 0 (the file's INFLPRES) is never outside; without a pressure column no row is
-// outside PRESMIN or PRESMAX. Counted against the limits' definition, row by row.
+// The rows counted outside each limit, at every bound, one step either side of it, far beyond it,
+// 0 and -0, one input at a time (the others inside): a value equal to its bound is inside; a
+// pressure of 0 (the file's INFLPRES) is never outside; without a pressure column (read as 0) no
+// row is outside PRESMIN or PRESMAX. Counted against the limits' definition, row by row.
 TEST(MfCsvStream, RangeCountsAtEveryBound) {
   const MfParameters<double>& p = mf61();
   struct Bound {
@@ -439,9 +440,12 @@ TEST(MfCsvStream, RangeCountsAtEveryBound) {
   std::vector<Point> rows;
   for (const Bound& b : bounds) {
     const double inf = std::numeric_limits<double>::infinity();
-    const double far = b.above ? 2.0 * std::fabs(b.value) + 1.0 : -2.0 * std::fabs(b.value) - 1.0;
+    // Far below PRESMIN is still a positive pressure (0 and below take the file's INFLPRES).
+    const double far = b.above                                ? 2.0 * std::fabs(b.value) + 1.0
+                       : b.key == std::string_view("PRESMIN") ? 0.5 * b.value
+                                                              : -2.0 * std::fabs(b.value) - 1.0;
     for (const double v :
-         {b.value, std::nextafter(b.value, inf), std::nextafter(b.value, -inf), far, 0.0}) {
+         {b.value, std::nextafter(b.value, inf), std::nextafter(b.value, -inf), far, 0.0, -0.0}) {
       Point q = inside;
       double* cell[] = {&q.fz_n, &q.kappa, &q.alpha_rad, &q.gamma_rad, &q.vx_mps, &q.p_pa};
       *cell[b.column] = v;
