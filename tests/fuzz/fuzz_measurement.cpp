@@ -98,21 +98,18 @@ StreamRun run_stream(const std::string& text, tyre::SignConvention convention, b
   csv.columns = tyre::select_eval_columns(all_columns ? "all" : "Fx_N,Fy_N,Mz_Nm").columns;
   csv.chunk_lines = chunk_lines;
   csv.threads = threads;
-  try {
-    const tyre::MfCsvReport report =
-        tyre::evaluate_csv(kParams, mf::MfOptions{}, csv, in, "fuzz_input.csv", out);
-    run.output = out.str() + "\nrows " + std::to_string(report.rows);
-    for (const tyre::MfRangeCount& c : report.out_of_range) {
-      run.output +=
-          "\n" + c.limit + " " + std::to_string(c.rows) + " " + std::to_string(c.first_line);
-    }
-  } catch (const std::bad_alloc&) {
-    throw;
-  } catch (const std::exception& e) {
-    run.error = e.what();
-    fuzz_check(run.error.find("fuzz_input.csv") != std::string::npos,
-               "a stream error that does not name the file: " + run.error);
-  }
+  static_cast<void>(fuzz::returns_or_names_source(
+      "fuzz_input.csv",
+      [&] {
+        const tyre::MfCsvReport report =
+            tyre::evaluate_csv(kParams, mf::MfOptions{}, csv, in, "fuzz_input.csv", out);
+        run.output = out.str() + "\nrows " + std::to_string(report.rows);
+        for (const tyre::MfRangeCount& c : report.out_of_range) {
+          run.output +=
+              "\n" + c.limit + " " + std::to_string(c.rows) + " " + std::to_string(c.first_line);
+        }
+      },
+      &run.error));
   return run;
 }
 

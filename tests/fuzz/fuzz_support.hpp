@@ -36,9 +36,10 @@ inline void fuzz_check(bool ok, const std::string& what) {
 /// its message naming the source (`source:line: ...` or `source: ...`). Anything else — a library
 /// exception with its own words ("stod", "vector::_M_range_check"), a message without the file —
 /// breaks the invariant. std::bad_alloc passes through (libFuzzer reports it as out-of-memory).
+/// @param message where given, the exception's message (left as it was if `f` returned)
 /// @return true if `f` returned normally
 template <typename F>
-bool returns_or_names_source(std::string_view source, F&& f) {
+bool returns_or_names_source(std::string_view source, F&& f, std::string* message = nullptr) {
   try {
     f();
     return true;
@@ -50,6 +51,7 @@ bool returns_or_names_source(std::string_view source, F&& f) {
       fuzz_fail("an error that does not name its source '" + std::string(source) +
                 "': " + std::string(what));
     }
+    if (message != nullptr) *message = what;
     return false;
   }
 }
