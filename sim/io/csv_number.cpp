@@ -12,7 +12,7 @@ namespace tread::host {
 
 namespace {
 
-constexpr std::size_t kMaxChars = 64;  // as tir::parse_number
+constexpr auto kMaxChars = static_cast<std::size_t>(detail::kMaxNumberChars);
 
 bool is_cell_blank(char c) noexcept {
   return c == ' ' || c == '\t' || c == '\r' || c == '\f';
@@ -30,23 +30,6 @@ bool is_cell_blank(char c) noexcept {
       text.data(), text.data() + n, value,
       fast_float::parse_options(fast_float::chars_format::general, point));
   return r.ec == std::errc() && r.ptr == text.data() + n;
-}
-
-// True if the digits before the exponent are not all zero: a zero result then is an underflow,
-// which std::from_chars (and so tir::parse_number) refuses as out of range.
-bool nonzero_mantissa(const char* first, const char* last) noexcept {
-  for (; first != last; ++first) {
-    const char c = *first;
-    if (c == 'e' || c == 'E' || c == 'd' || c == 'D') break;
-    if (c >= '1' && c <= '9') return true;
-  }
-  return false;
-}
-
-// The rules once a number is read from [first, last): finite, and not an underflow to zero
-// ("1e-400", which std::from_chars, and so tir::parse_number, refuses as out of range).
-bool finite_not_underflow(double value, const char* first, const char* last) noexcept {
-  return std::isfinite(value) && (std::fabs(value) > 0.0 || !nonzero_mantissa(first, last));
 }
 
 }  // namespace
@@ -67,19 +50,7 @@ bool read_csv_number(std::string_view cell, bool decimal_comma, double& value) n
         std::memchr(first, 'd', n) != nullptr || std::memchr(first, 'D', n) != nullptr;
     if (!fortran || !read_fortran(first, last, point, value)) return false;
   }
-  return finite_not_underflow(value, first, last);
-}
-
-const char* read_csv_number_at(const char* first, const char* last, double& value) noexcept {
-  if (first != last && *first == '+') ++first;
-  const fast_float::from_chars_result r = fast_float::from_chars_advanced(
-      first, last, value, fast_float::parse_options(fast_float::chars_format::general, '.'));
-  if (r.ec != std::errc() || r.ptr == first ||
-      r.ptr - first > static_cast<std::ptrdiff_t>(kMaxChars) ||
-      !finite_not_underflow(value, first, r.ptr)) {
-    return nullptr;
-  }
-  return r.ptr;
+  return detail::finite_not_underflow(value, first, last);
 }
 
 }  // namespace tread::host

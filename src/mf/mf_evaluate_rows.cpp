@@ -1,6 +1,6 @@
 // evaluate_rows: evaluate<double> on two double lanes (mf_double_lanes.hpp) where that gives
 // evaluate<double>'s bits, else one point at a time. This file is compiled -ffp-contract=off (and,
-// like the other lane files, -O2 without sanitizer instrumentation: src/mf/CMakeLists.txt).
+// like the other lane files, without sanitizer instrumentation; -O3: src/mf/CMakeLists.txt).
 //
 // Two lanes, not four: on the AVX2 VM (`tread mf eval --columns Fx_N,Fy_N,Mz_Nm`, 1 M rows, seven
 // alternating runs) two lanes took 6–11 % less CPU than evaluate<double> row by row, four lanes
