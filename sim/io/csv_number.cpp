@@ -1,7 +1,6 @@
 #include "io/csv_number.hpp"
 
 #include <array>
-#include <cmath>
 #include <cstddef>
 #include <cstring>
 #include <system_error>
