@@ -4,7 +4,9 @@
 // Cortex-M targets semihost/ (files, console, exit status) and cortex_m/ (SysTick tick counter).
 
 #include <concepts>
+#include <cstddef>
 #include <cstdint>
+#include <span>
 
 #include "core/status.hpp"
 #include "proto/can_frame.hpp"
@@ -24,6 +26,16 @@ concept CanBus = requires(B bus, const proto::CanFrame& out, proto::CanFrame& in
 template <typename B>
 concept WaitableCanBus = CanBus<B> && requires(B bus, std::int64_t deadline_ns) {
   { bus.wait_until_ns(deadline_ns) } -> std::same_as<Status>;
+};
+
+/// A CanBus that can also queue several frames in one call, in order: one wake-up of a receiver
+/// waiting on the other end (or one system call) for the lot instead of one per frame. Returns how
+/// many it queued, the first ones of `frames`; the rest were refused (queue full) and counted as
+/// dropped, as send() counts a refused frame. A loop sends its cycle's frames this way where the
+/// bus offers it.
+template <typename B>
+concept BatchCanBus = CanBus<B> && requires(B bus, std::span<const proto::CanFrame> frames) {
+  { bus.send_batch(frames) } -> std::same_as<std::size_t>;
 };
 
 /// Monotonic time in nanoseconds and absolute sleeps.

@@ -36,6 +36,18 @@ void futex_wake(std::atomic<std::uint32_t>& word) noexcept {
 
 }  // namespace
 
+void ThreadCanEndpoint::wake_waiting_receiver() noexcept {
+  // Paired with the waiter's fence: either it sees the new write index before sleeping, or this
+  // sees its flag and wakes it. The flag is taken, so frames queued before the waiter sleeps again
+  // cost one wake-up call.
+  std::atomic_thread_fence(std::memory_order_seq_cst);
+  if (out_.waiting.load(std::memory_order_relaxed) != 0U &&
+      out_.waiting.exchange(0U, std::memory_order_relaxed) != 0U) {
+    ++wake_calls_;
+    futex_wake(out_.ring.write_index());
+  }
+}
+
 Status ThreadCanEndpoint::send(const proto::CanFrame& frame) noexcept {
   proto::CanFrame stamped = frame;
   stamped.timestamp_ns = monotonic_ns();
@@ -43,14 +55,25 @@ Status ThreadCanEndpoint::send(const proto::CanFrame& frame) noexcept {
     ++tx_dropped_;
     return Status::would_block;
   }
-  // Paired with the waiter's fence: either it sees the new write index before sleeping, or this
-  // sees its flag and wakes it. The flag is taken, so a burst of frames costs one wake-up call.
-  std::atomic_thread_fence(std::memory_order_seq_cst);
-  if (out_.waiting.load(std::memory_order_relaxed) != 0U &&
-      out_.waiting.exchange(0U, std::memory_order_relaxed) != 0U) {
-    futex_wake(out_.ring.write_index());
-  }
+  wake_waiting_receiver();
   return Status::ok;
+}
+
+std::size_t ThreadCanEndpoint::send_batch(std::span<const proto::CanFrame> frames) noexcept {
+  std::size_t queued = 0;
+  for (const proto::CanFrame& frame : frames) {
+    proto::CanFrame stamped = frame;
+    stamped.timestamp_ns = monotonic_ns();
+    if (!out_.ring.push(stamped)) {
+      break;  // full: the rest are refused too, so that what arrives keeps its order
+    }
+    ++queued;
+  }
+  tx_dropped_ += frames.size() - queued;
+  if (queued > 0U) {
+    wake_waiting_receiver();
+  }
+  return queued;
 }
 
 Status ThreadCanEndpoint::receive(proto::CanFrame& frame) noexcept {

@@ -9,7 +9,9 @@
 // Each endpoint belongs to one thread: endpoint(0) is used by one thread, endpoint(1) by another.
 
 #include <atomic>
+#include <cstddef>
 #include <cstdint>
+#include <span>
 
 #include "core/spsc_ring.hpp"
 #include "core/status.hpp"
@@ -34,6 +36,12 @@ class ThreadCanEndpoint {
   /// Stamps the frame with CLOCK_MONOTONIC and queues it for the other end.
   /// @retval Status::would_block  the other end's queue is full (frame counted as dropped)
   Status send(const proto::CanFrame& frame) noexcept;
+  /// Stamps and queues `frames` in order, then wakes the other end once if it waits: a cycle's
+  /// answers cost the sender one wake-up call, not one per frame (a receiver that drains each
+  /// frame as it comes and sleeps again would otherwise be woken for every one, each call a
+  /// cross-CPU wake-up on the sender's real-time thread). Returns how many were queued; once the
+  /// queue is full the rest are refused and counted in tx_dropped().
+  std::size_t send_batch(std::span<const proto::CanFrame> frames) noexcept;
   /// @retval Status::would_block  nothing queued
   Status receive(proto::CanFrame& frame) noexcept;
   /// Blocks until a frame is queued or the absolute CLOCK_MONOTONIC `deadline_ns` has passed.
@@ -42,11 +50,17 @@ class ThreadCanEndpoint {
   Status wait_until_ns(std::int64_t deadline_ns) noexcept;
 
   [[nodiscard]] std::uint64_t tx_dropped() const noexcept { return tx_dropped_; }
+  /// Wake-up calls this end made to the other (a futex wake each, only while the other waited).
+  [[nodiscard]] std::uint64_t wake_calls() const noexcept { return wake_calls_; }
 
  private:
   ThreadCanPipe& in_;
   ThreadCanPipe& out_;
   std::uint64_t tx_dropped_{0};
+  std::uint64_t wake_calls_{0};
+
+  /// Wakes the other end if it waits (after frames were queued).
+  void wake_waiting_receiver() noexcept;
 };
 
 /// The two pipes and their endpoints. Not movable (the endpoints refer to the pipes).
@@ -69,6 +83,6 @@ class ThreadCanLink {
   ThreadCanEndpoint b_{a_to_b_, b_to_a_};
 };
 
-static_assert(WaitableCanBus<ThreadCanEndpoint>);
+static_assert(WaitableCanBus<ThreadCanEndpoint> && BatchCanBus<ThreadCanEndpoint>);
 
 }  // namespace tread::hal

@@ -2,9 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <thread>
 
 #include "posix/posix_clock.hpp"
@@ -48,6 +50,90 @@ TEST(ThreadCanLink, AFullQueueRefusesAndCountsTheFrame) {
   }
   EXPECT_EQ(link->endpoint(0).send(frame(2, 0)), Status::would_block);
   EXPECT_EQ(link->endpoint(0).tx_dropped(), 1U);
+}
+
+TEST(ThreadCanLink, ABatchArrivesInOrderStampedAndWhatDoesNotFitIsRefusedAndCounted) {
+  auto link = std::make_unique<ThreadCanLink>();
+  ThreadCanEndpoint& a = link->endpoint(0);
+  ThreadCanEndpoint& b = link->endpoint(1);
+  PosixClock clock;
+  std::array<proto::CanFrame, 13> burst{};
+  for (std::size_t i = 0; i < burst.size(); ++i) {
+    burst[i] = frame(0x300 + static_cast<std::uint32_t>(i), static_cast<std::uint8_t>(i));
+  }
+  const std::int64_t before = clock.now_ns();
+  ASSERT_EQ(a.send_batch(burst), burst.size());
+  const std::int64_t after = clock.now_ns();
+  EXPECT_EQ(a.send_batch(std::span<const proto::CanFrame>()), 0U);
+  proto::CanFrame f{};
+  std::int64_t last = before;
+  for (std::size_t i = 0; i < burst.size(); ++i) {
+    ASSERT_EQ(b.receive(f), Status::ok);
+    EXPECT_EQ(f.id, 0x300U + i);
+    EXPECT_EQ(f.data[0], i);
+    EXPECT_GE(f.timestamp_ns, last);  // each stamped as it was queued
+    EXPECT_LE(f.timestamp_ns, after);
+    last = f.timestamp_ns;
+  }
+  EXPECT_EQ(b.receive(f), Status::would_block);
+  EXPECT_EQ(a.tx_dropped(), 0U);
+
+  // Room for 5 more: the first 5 of the burst are queued, the other 8 refused and counted.
+  for (std::size_t i = 0; i < kThreadLinkFrames - 5; ++i) {
+    ASSERT_EQ(a.send(frame(1, 0)), Status::ok);
+  }
+  EXPECT_EQ(a.send_batch(burst), 5U);
+  EXPECT_EQ(a.tx_dropped(), 8U);
+  for (std::size_t i = 0; i < kThreadLinkFrames - 5; ++i) {
+    ASSERT_EQ(b.receive(f), Status::ok);
+  }
+  for (std::size_t i = 0; i < 5; ++i) {
+    ASSERT_EQ(b.receive(f), Status::ok);
+    EXPECT_EQ(f.id, 0x300U + i);
+  }
+  EXPECT_EQ(b.receive(f), Status::would_block);
+}
+
+// A receiver that takes each frame as it comes and sleeps again until it has the whole burst (as
+// the rig waits for a cycle's answer) is woken at most once per batch, and never misses one.
+TEST(ThreadCanLink, ABatchWakesASleepingEndOnceAtMost) {
+  auto link = std::make_unique<ThreadCanLink>();
+  constexpr std::uint32_t kRounds = 2'000;
+  constexpr std::size_t kBurst = 13;
+  constexpr std::int64_t kFar = 60'000'000'000;  // a lost wake-up would show as a 60 s hang
+  PosixClock clock;
+  std::uint32_t out_of_order = 0;
+  std::thread receiver([&] {
+    ThreadCanEndpoint& b = link->endpoint(1);
+    proto::CanFrame f{};
+    for (std::uint32_t r = 0; r < kRounds; ++r) {
+      for (std::size_t got = 0; got < kBurst;) {
+        if (b.receive(f) == Status::ok) {
+          out_of_order += f.id == got && f.data[0] == (r & 0xFFU) ? 0U : 1U;
+          ++got;
+        } else {
+          ASSERT_EQ(b.wait_until_ns(clock.now_ns() + kFar), Status::ok);
+        }
+      }
+      ASSERT_EQ(b.send(frame(0x7FF, 0)), Status::ok);  // the round is done
+    }
+  });
+  ThreadCanEndpoint& a = link->endpoint(0);
+  std::array<proto::CanFrame, kBurst> burst{};
+  proto::CanFrame f{};
+  for (std::uint32_t r = 0; r < kRounds; ++r) {
+    for (std::size_t i = 0; i < kBurst; ++i) {
+      burst[i] = frame(static_cast<std::uint32_t>(i), static_cast<std::uint8_t>(r & 0xFFU));
+    }
+    ASSERT_EQ(a.send_batch(burst), kBurst);
+    while (a.receive(f) != Status::ok) {
+      ASSERT_EQ(a.wait_until_ns(clock.now_ns() + kFar), Status::ok);
+    }
+  }
+  receiver.join();
+  EXPECT_EQ(out_of_order, 0U);
+  EXPECT_LE(a.wake_calls(), std::uint64_t{kRounds});
+  EXPECT_EQ(a.tx_dropped(), 0U);
 }
 
 TEST(ThreadCanLink, WaitReturnsAtOnceWhenAFrameIsQueuedAndAfterTheDeadlineWhenNone) {
