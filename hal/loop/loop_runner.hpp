@@ -144,16 +144,15 @@ class LoopRunner {
       // The cycle's frames in one call: one wake-up of a waiting receiver for all of them.
       const std::size_t sent = bus_.send_batch(std::span<const proto::CanFrame>(tx_.data(), n));
       stats_.tx_failed += n - std::min(sent, n);
-      for (std::size_t k = 0; k < n; ++k) {
-        observer_.on_tx(tx_[k], time_ns);
-      }
     } else {
       for (std::size_t k = 0; k < n; ++k) {
         if (bus_.send(tx_[k]) != Status::ok) {
           ++stats_.tx_failed;
         }
-        observer_.on_tx(tx_[k], time_ns);
       }
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+      observer_.on_tx(tx_[k], time_ns);
     }
   }
 

@@ -36,27 +36,9 @@ void futex_wake(std::atomic<std::uint32_t>& word) noexcept {
 
 }  // namespace
 
-void ThreadCanEndpoint::wake_waiting_receiver() noexcept {
-  // Paired with the waiter's fence: either it sees the new write index before sleeping, or this
-  // sees its flag and wakes it. The flag is taken, so frames queued before the waiter sleeps again
-  // cost one wake-up call.
-  std::atomic_thread_fence(std::memory_order_seq_cst);
-  if (out_.waiting.load(std::memory_order_relaxed) != 0U &&
-      out_.waiting.exchange(0U, std::memory_order_relaxed) != 0U) {
-    ++wake_calls_;
-    futex_wake(out_.ring.write_index());
-  }
-}
-
 Status ThreadCanEndpoint::send(const proto::CanFrame& frame) noexcept {
-  proto::CanFrame stamped = frame;
-  stamped.timestamp_ns = monotonic_ns();
-  if (!out_.ring.push(stamped)) {
-    ++tx_dropped_;
-    return Status::would_block;
-  }
-  wake_waiting_receiver();
-  return Status::ok;
+  return send_batch(std::span<const proto::CanFrame>(&frame, 1)) == 1U ? Status::ok
+                                                                       : Status::would_block;
 }
 
 std::size_t ThreadCanEndpoint::send_batch(std::span<const proto::CanFrame> frames) noexcept {
@@ -70,8 +52,17 @@ std::size_t ThreadCanEndpoint::send_batch(std::span<const proto::CanFrame> frame
     ++queued;
   }
   tx_dropped_ += frames.size() - queued;
-  if (queued > 0U) {
-    wake_waiting_receiver();
+  if (queued == 0U) {
+    return 0U;
+  }
+  // Paired with the waiter's fence: either it sees the new write index before sleeping, or this
+  // sees its flag and wakes it. The flag is taken, so frames queued before the waiter sleeps again
+  // cost one wake-up call.
+  std::atomic_thread_fence(std::memory_order_seq_cst);
+  if (out_.waiting.load(std::memory_order_relaxed) != 0U &&
+      out_.waiting.exchange(0U, std::memory_order_relaxed) != 0U) {
+    ++wake_calls_;
+    futex_wake(out_.ring.write_index());
   }
   return queued;
 }

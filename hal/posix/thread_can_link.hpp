@@ -58,9 +58,6 @@ class ThreadCanEndpoint {
   ThreadCanPipe& out_;
   std::uint64_t tx_dropped_{0};
   std::uint64_t wake_calls_{0};
-
-  /// Wakes the other end if it waits (after frames were queued).
-  void wake_waiting_receiver() noexcept;
 };
 
 /// The two pipes and their endpoints. Not movable (the endpoints refer to the pipes).
