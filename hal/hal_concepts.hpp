@@ -38,6 +38,15 @@ concept BatchCanBus = CanBus<B> && requires(B bus, std::span<const proto::CanFra
   { bus.send_batch(frames) } -> std::same_as<std::size_t>;
 };
 
+/// A CanBus that can also take several queued frames in one call, in order (one system call for
+/// the lot instead of one per frame and one more to find the queue empty). Returns how many it
+/// wrote to the front of `frames`: fewer than `frames.size()` when no more were queued, 0 when none
+/// was. A loop drains its bus this way where the bus offers it.
+template <typename B>
+concept BatchReceiveCanBus = CanBus<B> && requires(B bus, std::span<proto::CanFrame> frames) {
+  { bus.receive_batch(frames) } -> std::same_as<std::size_t>;
+};
+
 /// Monotonic time in nanoseconds and absolute sleeps.
 template <typename C>
 concept Clock = requires(C clock, std::int64_t deadline_ns) {

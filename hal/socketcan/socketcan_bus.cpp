@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cstring>
 #include <ctime>
@@ -23,7 +24,11 @@ SocketCanBus::SocketCanBus(SocketCanBus&& other) noexcept
     : fd_(std::exchange(other.fd_, -1)),
       fd_enabled_(other.fd_enabled_),
       last_errno_(other.last_errno_),
-      tx_dropped_(other.tx_dropped_) {}
+      tx_dropped_(other.tx_dropped_),
+      rx_overflows_(other.rx_overflows_),
+      error_frames_(other.error_frames_),
+      rx_malformed_(other.rx_malformed_),
+      bus_off_(other.bus_off_) {}
 
 SocketCanBus& SocketCanBus::operator=(SocketCanBus&& other) noexcept {
   if (this != &other) {
@@ -32,6 +37,10 @@ SocketCanBus& SocketCanBus::operator=(SocketCanBus&& other) noexcept {
     fd_enabled_ = other.fd_enabled_;
     last_errno_ = other.last_errno_;
     tx_dropped_ = other.tx_dropped_;
+    rx_overflows_ = other.rx_overflows_;
+    error_frames_ = other.error_frames_;
+    rx_malformed_ = other.rx_malformed_;
+    bus_off_ = other.bus_off_;
   }
   return *this;
 }
@@ -135,11 +144,9 @@ Status SocketCanBus::set_filters(std::span<const CanIdFilter> filters) {
   return Status::ok;
 }
 
-Status SocketCanBus::send(const proto::CanFrame& frame) {
-  if (fd_ < 0) {
-    return Status::io_error;
-  }
-  canfd_frame raw{};
+Status SocketCanBus::to_raw(const proto::CanFrame& frame, canfd_frame& raw,
+                            std::size_t& size) const {
+  raw = canfd_frame{};
   raw.can_id = frame.id & (frame.extended ? CAN_EFF_MASK : CAN_SFF_MASK);
   if (frame.extended) {
     raw.can_id |= CAN_EFF_FLAG;
@@ -147,7 +154,7 @@ Status SocketCanBus::send(const proto::CanFrame& frame) {
   if (frame.error) {  // error-frame injection (vcan echoes it to every reader, like canerrsim)
     raw.can_id = CAN_ERR_FLAG | (frame.id & CAN_ERR_MASK);
   }
-  std::size_t size = CAN_MTU;
+  size = CAN_MTU;
   if (frame.fd) {
     if (!fd_enabled_ || !proto::is_valid_fd_length(frame.len)) {
       return Status::invalid_argument;
@@ -159,7 +166,18 @@ Status SocketCanBus::send(const proto::CanFrame& frame) {
   }
   raw.len = frame.len;
   std::copy_n(frame.data.begin(), frame.len, raw.data);
+  return Status::ok;
+}
 
+Status SocketCanBus::send(const proto::CanFrame& frame) {
+  if (fd_ < 0) {
+    return Status::io_error;
+  }
+  canfd_frame raw{};
+  std::size_t size = 0;
+  if (const Status s = to_raw(frame, raw, size); s != Status::ok) {
+    return s;
+  }
   const ssize_t written = ::write(fd_, &raw, size);
   if (written < 0) {
     last_errno_ = errno;
@@ -170,6 +188,62 @@ Status SocketCanBus::send(const proto::CanFrame& frame) {
     return Status::io_error;
   }
   return static_cast<std::size_t>(written) == size ? Status::ok : Status::io_error;
+}
+
+std::size_t SocketCanBus::send_batch(std::span<const proto::CanFrame> frames) {
+  if (fd_ < 0) {
+    return 0;
+  }
+  std::array<canfd_frame, kBatchFrames> raw;
+  std::array<iovec, kBatchFrames> iov{};
+  std::array<mmsghdr, kBatchFrames> messages{};
+  std::size_t sent = 0;
+  while (sent < frames.size()) {
+    // The next system call's frames: up to the batch's size, up to the first invalid frame.
+    std::size_t count = 0;
+    bool invalid = false;
+    while (count < kBatchFrames && sent + count < frames.size()) {
+      std::size_t size = 0;
+      if (to_raw(frames[sent + count], raw[count], size) != Status::ok) {
+        invalid = true;
+        break;
+      }
+      iov[count] = iovec{&raw[count], size};
+      messages[count] = mmsghdr{};
+      messages[count].msg_hdr.msg_iov = &iov[count];
+      messages[count].msg_hdr.msg_iovlen = 1;
+      ++count;
+    }
+    // sendmmsg stops at the first message the socket refuses and reports how many went before
+    // it; the refusal's errno comes from the call that starts with the refused message.
+    std::size_t done = 0;
+    while (done < count) {
+      const int rc =
+          ::sendmmsg(fd_, messages.data() + done, static_cast<unsigned int>(count - done), 0);
+      if (rc < 0 && errno == EINTR) {
+        continue;
+      }
+      if (rc <= 0) {
+        last_errno_ = rc < 0 ? errno : EIO;
+        if (last_errno_ == ENOBUFS || last_errno_ == EAGAIN) {
+          tx_dropped_ += frames.size() - (sent + done);  // the refused frame and all after it
+        }
+        return sent + done;
+      }
+      for (std::size_t k = done; k < done + static_cast<std::size_t>(rc); ++k) {
+        if (messages[k].msg_len != iov[k].iov_len) {  // a raw CAN socket takes all or nothing
+          last_errno_ = EIO;
+          return sent + k;
+        }
+      }
+      done += static_cast<std::size_t>(rc);
+    }
+    sent += count;
+    if (invalid) {
+      return sent;
+    }
+  }
+  return sent;
 }
 
 Status SocketCanBus::wait_until_ns(std::int64_t deadline_ns) {
@@ -199,30 +273,14 @@ Status SocketCanBus::wait_until_ns(std::int64_t deadline_ns) {
   }
 }
 
-Status SocketCanBus::receive(proto::CanFrame& frame) {
-  if (fd_ < 0) {
-    return Status::io_error;
-  }
-  canfd_frame raw{};
-  iovec iov{&raw, sizeof(raw)};
-  alignas(cmsghdr) char control[CMSG_SPACE(sizeof(timespec)) + CMSG_SPACE(sizeof(std::uint32_t))];
-  msghdr message{};
-  message.msg_iov = &iov;
-  message.msg_iovlen = 1;
-  message.msg_control = control;
-  message.msg_controllen = sizeof(control);
-
-  const ssize_t got = ::recvmsg(fd_, &message, MSG_DONTWAIT);
-  if (got < 0) {
-    last_errno_ = errno;
-    return (last_errno_ == EAGAIN || last_errno_ == EWOULDBLOCK) ? Status::would_block
-                                                                 : Status::io_error;
-  }
-  if (static_cast<std::size_t>(got) != CAN_MTU && static_cast<std::size_t>(got) != CANFD_MTU) {
+Status SocketCanBus::from_raw(const canfd_frame& raw, std::size_t got, msghdr& message,
+                              proto::CanFrame& frame) {
+  if (got != CAN_MTU && got != CANFD_MTU) {
+    ++rx_malformed_;
     return Status::invalid_argument;
   }
   frame = proto::CanFrame{};
-  frame.fd = static_cast<std::size_t>(got) == CANFD_MTU;
+  frame.fd = got == CANFD_MTU;
   frame.extended = (raw.can_id & CAN_EFF_FLAG) != 0U;
   frame.error = (raw.can_id & CAN_ERR_FLAG) != 0U;
   frame.id = raw.can_id & (frame.extended || frame.error ? CAN_EFF_MASK : CAN_SFF_MASK);
@@ -252,6 +310,81 @@ Status SocketCanBus::receive(proto::CanFrame& frame) {
     }
   }
   return Status::ok;
+}
+
+namespace {
+
+// Room for a message's control data: its receive timestamp and the overflow count.
+constexpr std::size_t kControlBytes =
+    CMSG_SPACE(sizeof(timespec)) + CMSG_SPACE(sizeof(std::uint32_t));
+struct alignas(cmsghdr) ControlBuffer {
+  char bytes[kControlBytes];
+};
+
+}  // namespace
+
+Status SocketCanBus::receive(proto::CanFrame& frame) {
+  if (fd_ < 0) {
+    return Status::io_error;
+  }
+  canfd_frame raw{};
+  iovec iov{&raw, sizeof(raw)};
+  ControlBuffer control;
+  msghdr message{};
+  message.msg_iov = &iov;
+  message.msg_iovlen = 1;
+  message.msg_control = control.bytes;
+  message.msg_controllen = sizeof(control.bytes);
+
+  const ssize_t got = ::recvmsg(fd_, &message, MSG_DONTWAIT);
+  if (got < 0) {
+    last_errno_ = errno;
+    return (last_errno_ == EAGAIN || last_errno_ == EWOULDBLOCK) ? Status::would_block
+                                                                 : Status::io_error;
+  }
+  return from_raw(raw, static_cast<std::size_t>(got), message, frame);
+}
+
+std::size_t SocketCanBus::receive_batch(std::span<proto::CanFrame> frames) {
+  if (fd_ < 0) {
+    return 0;
+  }
+  std::array<canfd_frame, kBatchFrames> raw;
+  std::array<iovec, kBatchFrames> iov{};
+  std::array<ControlBuffer, kBatchFrames> control;
+  std::array<mmsghdr, kBatchFrames> messages{};
+  std::size_t taken = 0;
+  while (taken < frames.size()) {
+    const std::size_t ask = std::min(kBatchFrames, frames.size() - taken);
+    for (std::size_t k = 0; k < ask; ++k) {
+      iov[k] = iovec{&raw[k], sizeof(canfd_frame)};
+      messages[k] = mmsghdr{};
+      messages[k].msg_hdr.msg_iov = &iov[k];
+      messages[k].msg_hdr.msg_iovlen = 1;
+      messages[k].msg_hdr.msg_control = control[k].bytes;
+      messages[k].msg_hdr.msg_controllen = sizeof(control[k].bytes);
+    }
+    const int rc =
+        ::recvmmsg(fd_, messages.data(), static_cast<unsigned int>(ask), MSG_DONTWAIT, nullptr);
+    if (rc < 0) {
+      if (errno == EINTR) {
+        continue;
+      }
+      if (errno != EAGAIN && errno != EWOULDBLOCK) {
+        last_errno_ = errno;
+      }
+      return taken;
+    }
+    for (std::size_t k = 0; k < static_cast<std::size_t>(rc); ++k) {
+      if (from_raw(raw[k], messages[k].msg_len, messages[k].msg_hdr, frames[taken]) == Status::ok) {
+        ++taken;
+      }
+    }
+    if (static_cast<std::size_t>(rc) < ask) {
+      return taken;  // the queue is empty
+    }
+  }
+  return taken;
 }
 
 }  // namespace tread::hal

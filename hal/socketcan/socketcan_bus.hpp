@@ -1,6 +1,11 @@
 #pragma once
-// SocketCAN raw socket: classic and FD frames, non-blocking, kernel receive timestamps.
+// SocketCAN raw socket: classic and FD frames, non-blocking, kernel receive timestamps; a cycle's
+// frames sent and received in one system call each (sendmmsg, recvmmsg).
 
+#include <linux/can.h>
+#include <sys/socket.h>
+
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <string_view>
@@ -18,7 +23,8 @@ struct CanIdFilter {
   bool extended{false};
 };
 
-/// SocketCAN raw socket. Satisfies hal::CanBus. Error frames (bus-off, controller problems,
+/// SocketCAN raw socket. Satisfies hal::WaitableCanBus, hal::BatchCanBus and
+/// hal::BatchReceiveCanBus. Error frames (bus-off, controller problems,
 /// restarted, TX timeout) are delivered as frames with `error = true` and the error class in `id`.
 class SocketCanBus {
  public:
@@ -46,9 +52,28 @@ class SocketCanBus {
   /// dropped
   Status send(const proto::CanFrame& frame);
 
+  /// Sends `frames` in order, up to kBatchFrames of them in one system call (sendmmsg), without
+  /// blocking. Returns how many were queued: the first ones of `frames`. It stops at the first
+  /// frame it cannot send: one send() would refuse as invalid (an FD frame on a classic socket, a
+  /// length the frame cannot have; not counted), one refused because the socket's queue is full
+  /// (ENOBUFS/EAGAIN: that frame and every one after it counted in tx_dropped(), as send() counts
+  /// a refused frame), or an I/O error (`last_errno()`; not counted). A signal (EINTR) is retried.
+  std::size_t send_batch(std::span<const proto::CanFrame> frames);
+
   /// Receives one frame if one is queued.
   /// @retval Status::would_block   nothing queued
+  /// @retval Status::invalid_argument  the message was no CAN frame (counted in rx_malformed())
   Status receive(proto::CanFrame& frame);
+
+  /// Receives up to `frames.size()` queued frames, up to kBatchFrames of them in one system call
+  /// (recvmmsg), without blocking, each as receive() gives it (kernel timestamp, error frames).
+  /// Returns how many it wrote to the front of `frames`: fewer than asked for when no more were
+  /// queued, 0 when none was (or on an I/O error: `last_errno()`). A message that is no CAN frame
+  /// is skipped and counted in rx_malformed().
+  std::size_t receive_batch(std::span<proto::CanFrame> frames);
+
+  /// The most frames one sendmmsg or recvmmsg call of send_batch() / receive_batch() carries.
+  static constexpr std::size_t kBatchFrames = 32;
 
   /// Blocks until a frame (or error frame) is queued or the absolute CLOCK_MONOTONIC
   /// `deadline_ns` passes (ppoll). Satisfies hal::WaitableCanBus.
@@ -70,10 +95,18 @@ class SocketCanBus {
   /// Frames the kernel dropped because this socket's receive queue was full (SO_RXQ_OVFL).
   [[nodiscard]] std::uint32_t rx_overflows() const noexcept { return rx_overflows_; }
   [[nodiscard]] std::uint64_t error_frames() const noexcept { return error_frames_; }
+  /// Messages received that were no CAN frame (a size other than CAN_MTU or CANFD_MTU): skipped.
+  [[nodiscard]] std::uint64_t rx_malformed() const noexcept { return rx_malformed_; }
   [[nodiscard]] bool bus_off() const noexcept { return bus_off_; }
 
  private:
   void close() noexcept;
+  /// `frame` as the kernel's frame; `size` CAN_MTU or CANFD_MTU. invalid_argument where send()
+  /// refuses it.
+  Status to_raw(const proto::CanFrame& frame, canfd_frame& raw, std::size_t& size) const;
+  /// The received message (`got` bytes, its control messages in `message`) as `frame`: error-frame
+  /// state, overflow count and timestamp taken. invalid_argument (counted) if it is no CAN frame.
+  Status from_raw(const canfd_frame& raw, std::size_t got, msghdr& message, proto::CanFrame& frame);
 
   int fd_{-1};
   bool fd_enabled_{false};
@@ -81,9 +114,12 @@ class SocketCanBus {
   std::uint64_t tx_dropped_{0};
   std::uint32_t rx_overflows_{0};
   std::uint64_t error_frames_{0};
+  std::uint64_t rx_malformed_{0};
   bool bus_off_{false};
 };
 
 static_assert(WaitableCanBus<SocketCanBus>);
+static_assert(BatchCanBus<SocketCanBus>);
+static_assert(BatchReceiveCanBus<SocketCanBus>);
 
 }  // namespace tread::hal
