@@ -11,7 +11,10 @@
 // The node sees the nominal cycle time (the deadline) in periodic mode and the wake time in sync
 // mode: in periodic mode a recorded run is therefore replayable bit for bit.
 // TX goes out in one call where the bus can queue several frames at once (hal::BatchCanBus: the
-// thread link, where it costs one wake-up of a waiting rig for the cycle), else a send() a frame.
+// thread link, where it costs one wake-up of a waiting rig for the cycle; SocketCAN, one sendmmsg),
+// else a send() a frame. RX comes in one call where the bus can take several queued frames at once
+// (hal::BatchReceiveCanBus: SocketCAN, one recvmmsg), else a receive() a frame and one more that
+// finds the queue empty.
 // Header-only, templated on hal concepts; no heap.
 
 #include <algorithm>
@@ -49,6 +52,9 @@ struct LoopStats {
   std::uint64_t tx_failed{0};  ///< sends refused (queue full: counted, never waited for)
   std::uint64_t rx_drained{0};
 };
+
+/// The most frames one receive_batch() call of the loop takes (hal::BatchReceiveCanBus).
+inline constexpr std::size_t kRxBatchFrames = 32;
 
 template <CanBus Bus, Clock ClockT, OutputPin Pin, typename NodeT, typename Observer = NoObserver>
 class LoopRunner {
@@ -129,13 +135,31 @@ class LoopRunner {
  private:
   bool drain(std::int64_t time_ns) noexcept {
     bool trigger = false;
-    proto::CanFrame frame{};
-    while (bus_.receive(frame) == Status::ok) {
-      ++stats_.rx_drained;
-      observer_.on_rx(frame, time_ns);
-      trigger = node_.receive(frame, time_ns) || trigger;
+    if constexpr (BatchReceiveCanBus<Bus>) {
+      // What is queued in as few calls as the batch allows: one for a cycle's inputs.
+      for (;;) {
+        const std::size_t got = bus_.receive_batch(std::span<proto::CanFrame>(rx_));
+        for (std::size_t k = 0; k < got; ++k) {
+          trigger = take(rx_[k], time_ns) || trigger;
+        }
+        if (got < rx_.size()) {
+          return trigger;
+        }
+      }
+    } else {
+      proto::CanFrame frame{};
+      while (bus_.receive(frame) == Status::ok) {
+        trigger = take(frame, time_ns) || trigger;
+      }
+      return trigger;
     }
-    return trigger;
+  }
+
+  /// One received frame to the observer and the node; true if it is the rig's cycle frame.
+  bool take(const proto::CanFrame& frame, std::int64_t time_ns) noexcept {
+    ++stats_.rx_drained;
+    observer_.on_rx(frame, time_ns);
+    return node_.receive(frame, time_ns);
   }
 
   void transmit(std::int64_t time_ns) noexcept {
@@ -164,6 +188,9 @@ class LoopRunner {
   Observer& observer_;
   LoopStats stats_{};
   std::array<proto::CanFrame, node::kMaxTxFrames> tx_{};
+  /// Where a BatchReceiveCanBus drains to: a cycle's inputs in one call (a rig sends at most
+  /// proto::RigLink::kMaxRigFrames a cycle), a backlog in as many calls as it needs.
+  std::array<proto::CanFrame, kRxBatchFrames> rx_{};
   std::int64_t next_deadline_ns_{-1};
   std::int64_t last_compute_ns_{-1};
 };
