@@ -8,12 +8,18 @@
 #   working directory is /work (files land there unless DEST is absolute); --workdir copies the guest's
 #   /work/out back to DIR after the run.
 # Environment: TREAD_VM_DIR (kernel, default /var/cache/tread/vm), TREAD_VM_TIMEOUT_S (default 300),
-#   TREAD_VM_VERBOSE=1 to show the whole console.
+#   TREAD_VM_CPUS (virtual CPUs, default 1; more run as threads of the emulator, one per CPU, for a
+#   node and a rig on CPUs of their own), TREAD_VM_VERBOSE=1 to show the whole console.
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 vm_dir=${TREAD_VM_DIR:-/var/cache/tread/vm}
 timeout_s=${TREAD_VM_TIMEOUT_S:-300}
+cpus=${TREAD_VM_CPUS:-1}
+if ! [[ $cpus =~ ^[1-9][0-9]?$ ]]; then
+  echo "run-in-vm: TREAD_VM_CPUS must be a whole number from 1 to 99, not '$cpus'" >&2
+  exit 2
+fi
 
 files=()
 outdir=""
@@ -114,7 +120,7 @@ chmod +x "$root/init"
 
 console=$work/console.log
 set +e
-timeout "$timeout_s" qemu-system-x86_64 -accel tcg -m 512 -smp 1 -nographic -no-reboot \
+timeout "$timeout_s" qemu-system-x86_64 -accel tcg,thread=multi -m 512 -smp "$cpus" -nographic -no-reboot \
   -kernel "$vm_dir/vmlinuz" -initrd "$work/initrd.gz" \
   -append "console=ttyS0 panic=-1 quiet loglevel=3" </dev/null >"$console" 2>&1
 qemu_rc=$?
