@@ -4,6 +4,7 @@
 #include <sys/syscall.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <ctime>
 
@@ -26,6 +27,14 @@ void futex_wait(std::atomic<std::uint32_t>& word, std::uint32_t expected,
   static_cast<void>(::syscall(SYS_futex, reinterpret_cast<std::uint32_t*>(&word),
                               FUTEX_WAIT_BITSET | FUTEX_PRIVATE_FLAG, expected, &ts, nullptr,
                               FUTEX_BITSET_MATCH_ANY));
+}
+
+void sleep_until(std::int64_t at_ns) noexcept {
+  timespec ts{};
+  ts.tv_sec = static_cast<time_t>(at_ns / 1'000'000'000);
+  ts.tv_nsec = static_cast<long>(at_ns % 1'000'000'000);
+  while (::clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr) == EINTR) {
+  }
 }
 
 void futex_wake(std::atomic<std::uint32_t>& word) noexcept {
@@ -72,6 +81,18 @@ Status ThreadCanEndpoint::receive(proto::CanFrame& frame) noexcept {
 }
 
 Status ThreadCanEndpoint::wait_until_ns(std::int64_t deadline_ns) noexcept {
+  if (poll_interval_ns_ > 0) {
+    for (;;) {
+      if (!in_.ring.empty()) {
+        return Status::ok;
+      }
+      const std::int64_t now = monotonic_ns();
+      if (now >= deadline_ns) {
+        return Status::would_block;
+      }
+      sleep_until(std::min(now + poll_interval_ns_, deadline_ns));
+    }
+  }
   std::atomic<std::uint32_t>& word = in_.ring.write_index();
   for (;;) {
     if (!in_.ring.empty()) {

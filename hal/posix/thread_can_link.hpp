@@ -49,6 +49,17 @@ class ThreadCanEndpoint {
   /// @retval Status::would_block  the deadline passed with nothing queued
   Status wait_until_ns(std::int64_t deadline_ns) noexcept;
 
+  /// How wait_until_ns() waits. 0 (the default): it sleeps until the other end's send wakes it (a
+  /// futex wake-up, made by the sender's thread). Above 0: it looks at its queue every
+  /// `interval_ns` and sleeps in between, never asking to be woken, so the other end's sends make
+  /// no wake-up call; a frame is then seen up to `interval_ns` late (its timestamp is still its
+  /// send time). For a rig's end whose node must not pay for waking it: waking a sleeping thread
+  /// on another CPU cost the waker's thread a median 31 µs on one VM of these machines (PVM),
+  /// 15–30 times the node's whole cycle. A thread's own end, set before the threads start.
+  void set_poll_interval_ns(std::int64_t interval_ns) noexcept {
+    poll_interval_ns_ = interval_ns > 0 ? interval_ns : 0;
+  }
+
   [[nodiscard]] std::uint64_t tx_dropped() const noexcept { return tx_dropped_; }
   /// Wake-up calls this end made to the other (a futex wake each, only while the other waited).
   [[nodiscard]] std::uint64_t wake_calls() const noexcept { return wake_calls_; }
@@ -58,6 +69,7 @@ class ThreadCanEndpoint {
   ThreadCanPipe& out_;
   std::uint64_t tx_dropped_{0};
   std::uint64_t wake_calls_{0};
+  std::int64_t poll_interval_ns_{0};
 };
 
 /// The two pipes and their endpoints. Not movable (the endpoints refer to the pipes).

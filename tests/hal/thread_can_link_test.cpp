@@ -146,6 +146,55 @@ TEST(ThreadCanLink, WaitReturnsAtOnceWhenAFrameIsQueuedAndAfterTheDeadlineWhenNo
   EXPECT_EQ(link->endpoint(1).wait_until_ns(clock.now_ns() + 60'000'000'000), Status::ok);
 }
 
+// An end that polls (the demo's rig) is never woken: the other thread's sends make no wake-up
+// call, and it still sees every frame in order, in a round trip with an end that sleeps until woken.
+TEST(ThreadCanLink, AnEndThatPollsCostsTheSenderNoWakeUpAndMissesNoFrame) {
+  auto link = std::make_unique<ThreadCanLink>();
+  constexpr std::uint32_t kRounds = 500;
+  constexpr std::size_t kBurst = 13;
+  constexpr std::int64_t kFar = 60'000'000'000;
+  constexpr std::int64_t kPollNs = 20'000;
+  PosixClock clock;
+  ThreadCanEndpoint& polling = link->endpoint(1);
+  polling.set_poll_interval_ns(kPollNs);
+  std::uint32_t out_of_order = 0;
+  std::thread poller([&] {
+    proto::CanFrame f{};
+    for (std::uint32_t r = 0; r < kRounds; ++r) {
+      for (std::size_t got = 0; got < kBurst;) {
+        if (polling.receive(f) == Status::ok) {
+          out_of_order += f.id == got && f.data[0] == (r & 0xFFU) ? 0U : 1U;
+          ++got;
+        } else {
+          ASSERT_EQ(polling.wait_until_ns(clock.now_ns() + kFar), Status::ok);
+        }
+      }
+      ASSERT_EQ(polling.send(frame(0x7FF, 0)), Status::ok);  // wakes the other end, which sleeps
+    }
+  });
+  ThreadCanEndpoint& sleeping = link->endpoint(0);
+  std::array<proto::CanFrame, kBurst> burst{};
+  proto::CanFrame f{};
+  for (std::uint32_t r = 0; r < kRounds; ++r) {
+    for (std::size_t i = 0; i < kBurst; ++i) {
+      burst[i] = frame(static_cast<std::uint32_t>(i), static_cast<std::uint8_t>(r & 0xFFU));
+    }
+    ASSERT_EQ(sleeping.send_batch(burst), kBurst);
+    while (sleeping.receive(f) != Status::ok) {
+      ASSERT_EQ(sleeping.wait_until_ns(clock.now_ns() + kFar), Status::ok);
+    }
+  }
+  poller.join();
+  EXPECT_EQ(out_of_order, 0U);
+  EXPECT_EQ(sleeping.wake_calls(), 0U);  // the polling end never asked to be woken
+  EXPECT_GT(polling.wake_calls(), 0U);   // the sleeping end did
+
+  // With nothing queued it returns at its deadline, not before.
+  const std::int64_t deadline = clock.now_ns() + 2'000'000;
+  EXPECT_EQ(polling.wait_until_ns(deadline), Status::would_block);
+  EXPECT_GE(clock.now_ns(), deadline);
+}
+
 // A sleeping end is woken by the other thread's frame: a ping-pong of many frames, each end
 // waiting with a deadline far away, completes (no lost wake-up would leave an end asleep).
 TEST(ThreadCanLink, ASleepingEndIsWokenByEveryFrameOfTheOtherThread) {
