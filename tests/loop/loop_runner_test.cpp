@@ -20,6 +20,7 @@ constexpr std::int64_t kMs = 1'000'000;
 
 /// The node's end of the stub bus, a frame a call (hal::CanBus), counting the loop's calls.
 struct FrameByFrameBus {
+  explicit FrameByFrameBus(StubCanEndpoint& endpoint) noexcept : end(endpoint) {}
   StubCanEndpoint& end;
   std::size_t receive_calls{0};
   Status send(const proto::CanFrame& frame) noexcept { return end.send(frame); }
@@ -33,6 +34,7 @@ static_assert(!BatchReceiveCanBus<FrameByFrameBus>);
 /// The same end taking what is queued in batches as well (hal::BatchReceiveCanBus), as SocketCAN's
 /// recvmmsg does.
 struct BatchReceivingBus : FrameByFrameBus {
+  using FrameByFrameBus::FrameByFrameBus;
   std::size_t batch_calls{0};
   std::size_t receive_batch(std::span<proto::CanFrame> frames) noexcept {
     ++batch_calls;
