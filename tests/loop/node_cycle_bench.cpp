@@ -3,7 +3,12 @@
 // table), encode and protect every output frame. Target ≤ 2 µs per cycle. The HAL is not involved.
 #include <benchmark/benchmark.h>
 
+#include <time.h>
+
 #include <array>
+#include <cerrno>
+#include <chrono>
+#include <cstdint>
 
 #include "golden_path.hpp"
 #include "lut/tread_lut.hpp"
@@ -17,8 +22,23 @@ namespace {
 
 using namespace tread;
 
+/// Sleeps until the next whole millisecond of CLOCK_MONOTONIC, as the loop sleeps to its deadline.
+void sleep_to_next_ms() {
+  timespec now{};
+  clock_gettime(CLOCK_MONOTONIC, &now);
+  const std::int64_t ns = static_cast<std::int64_t>(now.tv_sec) * 1'000'000'000 + now.tv_nsec;
+  const std::int64_t next = (ns / 1'000'000 + 1) * 1'000'000;
+  const timespec at{static_cast<time_t>(next / 1'000'000'000),
+                    static_cast<long>(next % 1'000'000'000)};
+  while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &at, nullptr) == EINTR) {
+  }
+}
+
+/// `after_sleep`: each cycle after a sleep to the next millisecond, timed alone (manual time), as
+/// the loop meets it: the caches and TLB as the sleep left them, where back-to-back cycles find
+/// them warm.
 template <typename Tyre>
-void run_cycles(benchmark::State& state, std::array<Tyre, 4>& tyres) {
+void run_cycles(benchmark::State& state, std::array<Tyre, 4>& tyres, bool after_sleep = false) {
   const auto layout = state.range(0) == 0 ? proto::Layout::classic : proto::Layout::fd;
   std::array<node::ContactTableChannel, 2> contacts;
   for (auto& c : contacts) c = node::ContactTableChannel(lut::contact_pairs()[0].f32);
@@ -42,12 +62,21 @@ void run_cycles(benchmark::State& state, std::array<Tyre, 4>& tyres) {
   std::int64_t now = 0;
   std::size_t c = 0;
   for (auto _ : state) {
+    std::chrono::steady_clock::time_point start{};
+    if (after_sleep) {
+      sleep_to_next_ms();
+      start = std::chrono::steady_clock::now();
+    }
     now += 1'000'000;
     for (std::size_t k = 0; k < counts[c]; ++k) {
       benchmark::DoNotOptimize(n.receive(frames[c][k], now));
     }
     benchmark::DoNotOptimize(n.compute(now, tx));
     c = (c + 1) % kCycles;
+    if (after_sleep) {
+      state.SetIterationTime(
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
   }
   state.counters["rejected"] = static_cast<double>(n.counters().rx_rejected());
   state.SetLabel(layout == proto::Layout::classic ? "classic: 11 rx + 13 tx frames"
@@ -63,6 +92,22 @@ void BM_NodeCycle(benchmark::State& state) {
   run_cycles(state, tyres);
 }
 BENCHMARK(BM_NodeCycle)->Arg(0)->Arg(1)->Unit(benchmark::kNanosecond);
+
+/// The same cycle, each after a sleep to the next millisecond (classic layout): what the loop's
+/// cycle time meets on a machine whose caches the sleep leaves cold (a VM's idle vCPU, another
+/// task on the CPU).
+void BM_NodeCycleAfterSleep(benchmark::State& state) {
+  const mf::MfParameters<float> params = mf::convert_parameters<float>(
+      tyre::load_mf_parameters(testing::tyre_file("MagicFormula61_Parameters.tir")).params);
+  std::array<node::MfTyreChannel, 4> tyres;
+  for (auto& t : tyres) t = node::MfTyreChannel(params, mf::MfOptions{});
+  run_cycles(state, tyres, true);
+}
+BENCHMARK(BM_NodeCycleAfterSleep)
+    ->Arg(0)
+    ->UseManualTime()
+    ->Iterations(2000)
+    ->Unit(benchmark::kNanosecond);
 
 /// The same cycle without the tyre model: the node's own cost (E2E, codec, contact tables).
 void BM_NodeCycleWithoutTyreModel(benchmark::State& state) {
