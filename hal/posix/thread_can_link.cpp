@@ -8,13 +8,14 @@
 #include <cerrno>
 #include <ctime>
 
+#include "posix/posix_clock.hpp"
+
 namespace tread::hal {
 namespace {
 
+// The link's time: CLOCK_MONOTONIC, as the node's clock reads it.
 std::int64_t monotonic_ns() noexcept {
-  timespec ts{};
-  ::clock_gettime(CLOCK_MONOTONIC, &ts);
-  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec;
+  return PosixClock{}.now_ns();
 }
 
 // FUTEX_WAIT_BITSET takes an absolute CLOCK_MONOTONIC timeout (FUTEX_WAIT's is relative).
@@ -27,14 +28,6 @@ void futex_wait(std::atomic<std::uint32_t>& word, std::uint32_t expected,
   static_cast<void>(::syscall(SYS_futex, reinterpret_cast<std::uint32_t*>(&word),
                               FUTEX_WAIT_BITSET | FUTEX_PRIVATE_FLAG, expected, &ts, nullptr,
                               FUTEX_BITSET_MATCH_ANY));
-}
-
-void sleep_until(std::int64_t at_ns) noexcept {
-  timespec ts{};
-  ts.tv_sec = static_cast<time_t>(at_ns / 1'000'000'000);
-  ts.tv_nsec = static_cast<long>(at_ns % 1'000'000'000);
-  while (::clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr) == EINTR) {
-  }
 }
 
 void futex_wake(std::atomic<std::uint32_t>& word) noexcept {
@@ -90,7 +83,8 @@ Status ThreadCanEndpoint::wait_until_ns(std::int64_t deadline_ns) noexcept {
       if (now >= deadline_ns) {
         return Status::would_block;
       }
-      sleep_until(std::min(now + poll_interval_ns_, deadline_ns));
+      static_cast<void>(
+          PosixClock{}.sleep_until_ns(std::min(now + poll_interval_ns_, deadline_ns)));
     }
   }
   std::atomic<std::uint32_t>& word = in_.ring.write_index();
