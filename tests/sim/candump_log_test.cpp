@@ -2,8 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
+
+#include "test_dir.hpp"
 
 namespace tread::host {
 namespace {
@@ -69,7 +72,8 @@ TEST(CandumpLog, BadLinesNameFileAndLine) {
       EXPECT_EQ(std::string(e.what()).rfind("run.log:7: ", 0), 0U) << e.what();
     }
   }
-  const std::string path = std::string(TREAD_SOURCE_DIR) + "/build/candump_bad_test.log";
+  const std::filesystem::path path =
+      tread::testing::test_dir("candump_log_test") / "candump_bad_test.log";
   {
     std::ofstream out(path);
     out << "(1.000000) vcan0 123#00\n(1.000000) vcan0 123#ZZ\n";

@@ -73,8 +73,8 @@ TEST(TirHeader, FedaTables) {
 }
 
 TEST(TirHeader, OddValuesSurvive) {
-  const TirFile f =
-      tread::tir::read_tir(std::string(TREAD_SOURCE_DIR) + "/tests/tir/data/odd_values.tir");
+  const TirFile f = tread::tir::read_tir(tread::testing::source_dir() / "tests" / "tir" / "data" /
+                                         "odd_values.tir");
   expect_matches(f, tyres::kOdd, tyres::kOddTables);
   using tread::tir::find_entry;
   EXPECT_EQ(find_entry(tyres::kOdd, "ODD_SECTION", "BACKSLASH")->text, "C:\\tyres\\x.tir");
