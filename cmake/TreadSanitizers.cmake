@@ -30,9 +30,11 @@ endif()
 # -O1 (the fits' own sources: sim/fit/CMakeLists.txt). A few sources are one long generated function
 # each (the X-macro code over every Magic Formula coefficient, and tests over those headers); with
 # ASan, GCC takes minutes over each at -O1 and seconds at -O0, and what runs from them is brief:
-# they stay at -O0. Call from the directory that adds the source's target.
+# they stay at -O0. Call from the directory that adds the source's target. Such a source does not
+# use the tests' precompiled GoogleTest header (tests/CMakeLists.txt), which is built at -O1: GCC
+# refuses a precompiled header made at another optimisation level.
 function(tread_sanitized_at_o0)
   if(TREAD_SANITIZE)
-    set_source_files_properties(${ARGN} PROPERTIES COMPILE_OPTIONS -O0)
+    set_source_files_properties(${ARGN} PROPERTIES COMPILE_OPTIONS -O0 SKIP_PRECOMPILE_HEADERS ON)
   endif()
 endfunction()
