@@ -27,14 +27,13 @@ endif()
 
 # The sanitized build (preset asan) compiles at -O1, as AddressSanitizer's own documentation advises
 # for a usable speed: its tests took 36 minutes at -O0 on a 2-core VM of this project's kind, 16 at
-# -O1 (the fits' own sources: sim/fit/CMakeLists.txt). A few sources are one long generated function
-# each (the X-macro code over every Magic Formula coefficient, and tests over those headers); with
-# ASan, GCC takes minutes over each at -O1 and seconds at -O0, and what runs from them is brief:
-# they stay at -O0. Call from the directory that adds the source's target. Such a source does not
-# use the tests' precompiled GoogleTest header (tests/CMakeLists.txt), which is built at -O1: GCC
-# refuses a precompiled header made at another optimisation level.
+# -O1 (the fits' own sources: sim/fit/CMakeLists.txt). The test sources themselves compile at -O0
+# (tests/CMakeLists.txt). A few of the tools' sources are one long generated function each (the
+# X-macro code over every Magic Formula coefficient); with ASan, GCC takes minutes over each at -O1
+# and seconds at -O0, and what runs from them is brief: they stay at -O0. Call from the directory
+# that adds the source's target.
 function(tread_sanitized_at_o0)
   if(TREAD_SANITIZE)
-    set_source_files_properties(${ARGN} PROPERTIES COMPILE_OPTIONS -O0 SKIP_PRECOMPILE_HEADERS ON)
+    set_source_files_properties(${ARGN} PROPERTIES COMPILE_OPTIONS -O0)
   endif()
 endfunction()
