@@ -72,6 +72,10 @@ void add_conicity_command(CLI::App& app) {
       std::cerr << "tread conicity: warning: from |y| = " << *end_y
                 << " mm the contact lies at the end of a profile (the profiles do not cover it)\n";
     }
+    // The wavelength (Annex B) is 2 pi sqrt(e0 r0 / tan(gamma_e)) of this wheelset.
+    contact::ConicityOptions options;
+    options.e0_mm = contact::half_contact_base_mm(setup);
+    options.r0_mm = contact::nominal_r0_mm(setup);
     std::cout << "amplitude_mm,tan_gamma_e,centre_mm,wavelength_mm,tan_gamma_regression,"
                  "centre_regression_mm,note\n";
     auto csv_safe = [](std::string text) {
@@ -82,7 +86,7 @@ void add_conicity_command(CLI::App& app) {
       std::string note;
       std::cout << std::fixed << std::setprecision(3) << a << ',';
       try {
-        const contact::ConicityResult r = contact::equivalent_conicity(t, a);
+        const contact::ConicityResult r = contact::equivalent_conicity(t, a, options);
         std::cout << std::setprecision(5) << r.tan_gamma_e << ',' << std::setprecision(4)
                   << r.centre_y_mm << ',' << std::setprecision(1) << r.wavelength_mm << ',';
         if (r.neutral) {

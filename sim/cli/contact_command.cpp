@@ -60,7 +60,8 @@ struct MechanicsOptions {
 /// The mechanics columns of every row of the geometry table.
 std::vector<std::string> mechanics_rows(const contact::RigidContact& c,
                                         const contact::ContactTable& t, const MechanicsOptions& o,
-                                        double r0_left_mm, double r0_right_mm) {
+                                        double r0_left_mm, double r0_right_mm,
+                                        double half_contact_base_mm) {
   const std::vector<contact::MechanicsRow> rows =
       contact::mechanics_table(c, t.y_first_mm, t.y_mm.back(), t.y_step_mm, o.materials);
   const contact::FlangeAngles flange = contact::flange_angles(rows);
@@ -74,10 +75,10 @@ std::vector<std::string> mechanics_rows(const contact::RigidContact& c,
   out.reserve(rows.size());
   for (const contact::MechanicsRow& r : rows) {
     const rail::WheelForces<double> left =
-        contact::evaluate_wheel(r.left, false, state, r0_left_mm, contact::kTrackFrameOrigin_mm,
-                                o.materials, flange.left_rad, polach, law);
+        contact::evaluate_wheel(r.left, false, state, r0_left_mm, half_contact_base_mm, o.materials,
+                                flange.left_rad, polach, law);
     const rail::WheelForces<double> right =
-        contact::evaluate_wheel(r.right, true, state, r0_right_mm, contact::kTrackFrameOrigin_mm,
+        contact::evaluate_wheel(r.right, true, state, r0_right_mm, half_contact_base_mm,
                                 o.materials, flange.right_rad, polach, law);
     out.push_back(contact::mechanics_fields(left, right));
   }
@@ -166,7 +167,8 @@ void add_contact_command(CLI::App& app) {
     std::vector<std::string> extra;
     if (mechanics.load_n > 0.0) {
       extra_header = contact::mechanics_header();
-      extra = mechanics_rows(c, t, mechanics, setup.r0_mm, setup.r0_right_mm.value_or(setup.r0_mm));
+      extra = mechanics_rows(c, t, mechanics, setup.r0_mm, setup.r0_right_mm.value_or(setup.r0_mm),
+                             contact::half_contact_base_mm(setup));
     }
     if (output.empty()) {
       write_table(std::cout, t, rail_positions, extra_header, extra);

@@ -172,6 +172,14 @@ std::string one_in(double rad) {
 
 }  // namespace
 
+double half_contact_base_mm(const ContactSetup& setup) {
+  return 0.5 * setup.back_to_back_mm + kTapingLineFromBack_mm;
+}
+
+double nominal_r0_mm(const ContactSetup& setup) {
+  return 0.5 * (setup.r0_mm + setup.r0_right_mm.value_or(setup.r0_mm));
+}
+
 RigidContact build_contact(const ContactSetup& setup) {
   std::vector<std::string> ignored;
   return build_contact(setup, ignored);

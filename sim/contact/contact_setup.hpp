@@ -33,6 +33,14 @@ struct ContactSetup {
   double smooth_half_window_mm = 0.0;  ///< local quadratic smoothing of the profiles (0 = off)
 };
 
+/// EN 15302's e0: half the lateral distance between the two wheels' taping lines, b2b / 2 + 70 mm
+/// (750 mm for the standard back-to-back of 1360 mm). The Annex B wavelength and the creepages'
+/// yaw lever use it.
+double half_contact_base_mm(const ContactSetup& setup);
+
+/// The wheelset's nominal rolling radius r0: the mean of the two wheels' (--r0 and --r0-right).
+double nominal_r0_mm(const ContactSetup& setup);
+
 /// Parses a wheel/rail pair given as one "key=value,..." spec (the node's and the demo's
 /// --wheelset-profile, the LUT generator's pairs) into a ContactSetup. The keys are those of the
 /// `tread contact` options: wheel, wheel-file, wheel-right-file, rail, rail-file, rail-frame, cant,

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <numbers>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -129,6 +130,39 @@ TEST(ContactCommand, En15302ConicityMatchesAnnexK) {
     EXPECT_GE(row[4], lo) << "annex C, amplitude " << row[0];
     EXPECT_LE(row[4], hi) << "annex C, amplitude " << row[0];
   }
+}
+
+// The Annex B wavelength is 2 pi sqrt(e0 r0 / tan(gamma_e)) of the wheelset given: r0 the mean of
+// --r0 and --r0-right, e0 = --b2b / 2 + 70 mm (750 mm at the standard 1360). The conicity itself
+// does not depend on r0.
+TEST(ContactCommand, WavelengthFollowsTheWheelset) {
+  struct Case {
+    std::string args;
+    double e0_mm, r0_mm;
+  };
+  const std::vector<Case> cases{
+      {"", 750.0, 460.0},
+      {" --r0 500", 750.0, 500.0},
+      {" --r0 460 --r0-right 459.8", 750.0, 459.9},
+      {" --gauge 1000 --b2b 925", 532.5, 460.0},
+  };
+  std::vector<double> tan_at_3mm;
+  for (const Case& c : cases) {
+    const fs::path out = tmp_dir() / "conicity.csv";
+    ASSERT_EQ(run("conicity --wheel S1002 --rail 60E1 --amplitudes 2,3,4" + c.args, out,
+                  tmp_dir() / "conicity.log"),
+              0)
+        << c.args << ": " << text_of(tmp_dir() / "conicity.log");
+    const auto rows = read_csv(out);
+    ASSERT_EQ(rows.size(), 3u) << c.args;
+    for (const auto& row : rows) {
+      ASSERT_GT(row[1], 0.01) << c.args;
+      const double lambda = 2.0 * std::numbers::pi * std::sqrt(c.e0_mm * c.r0_mm / row[1]);
+      EXPECT_NEAR(row[3], lambda, 1e-4 * lambda) << c.args << ", amplitude " << row[0];
+    }
+    tan_at_3mm.push_back(rows[1][1]);
+  }
+  EXPECT_NEAR(tan_at_3mm[1], tan_at_3mm[0], 1e-5) << "r0 does not change tan(gamma_e)";
 }
 
 // The 920 / 918 mm case of EN 15302 (wheel A mod): --r0-right 459 gives delta r = r_left -
