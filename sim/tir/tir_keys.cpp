@@ -38,11 +38,11 @@ constexpr std::array kTable = std::to_array<KeyInfo>({
     {"BOTTOM_OFFST", kLength, kMf61 | kMf62},
     {"Q_FCY2", kNone, kMf62},
     {"Q_CAM1", kNone, kMf62},
-    {"Q_CAM2", kNone, kMf62},
+    {"Q_CAM2", kPerLength, kMf62},  // Q_CAM1·Rl + Q_CAM2·Rl²: Q_CAM1 per length
     {"Q_CAM3", kNone, kMf62},
-    {"Q_FYS1", kNone, kMf62},
-    {"Q_FYS2", kNone, kMf62},
-    {"Q_FYS3", kNone, kMf62},
+    {"Q_FYS1", kForce, kMf62},  // Sfyg, subtracted from Fy
+    {"Q_FYS2", kForce, kMf62},
+    {"Q_FYS3", kForce, kMf62},
     {"LONGITUDINAL_STIFFNESS", kStiffness, kMf61 | kMf62},
     {"LATERAL_STIFFNESS", kStiffness, kMf61 | kMf62},
     {"PCFX1", kNone, kMf61 | kMf62},

@@ -46,6 +46,7 @@ inline constexpr Dimension kMass{0, 0, 0, 1, 0};
 inline constexpr Dimension kTime{0, 0, 0, 0, 1};
 inline constexpr Dimension kPressure{-2, 1, 0, 0, 0};
 inline constexpr Dimension kStiffness{-1, 1, 0, 0, 0};         ///< force / length
+inline constexpr Dimension kPerLength{-1, 0, 0, 0, 0};         ///< 1 / length
 inline constexpr Dimension kTorsionStiffness{1, 1, -1, 0, 0};  ///< force·length / angle
 inline constexpr Dimension kDamping{-1, 1, 0, 0, 1};           ///< force·time / length
 inline constexpr Dimension kSpeed{1, 0, 0, 0, -1};

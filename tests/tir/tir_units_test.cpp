@@ -119,6 +119,48 @@ TEST(TirUnits, NonSiFilesEvaluateLikeTheSiOriginal) {
   }
 }
 
+// MF 6.2's loaded-radius keys carry dimensions too: Q_FYS1…3 are forces (Sfyg, taken from Fy),
+// Q_CAM2 is Q_CAM1 per length (Q_CAM1·Rl + Q_CAM2·Rl²). The SI sample written in mm and kN (every
+// value through set_si) gives the same Rl, rho and forces, with camber and side slip.
+TEST(TirUnits, Mf62InMillimetresAndKilonewtonsEvaluatesLikeSi) {
+  const TirFile si = read_tir(testing::tyre_file("MagicFormula62_Parameters.tir"));
+  TirFile f = si;
+  f.set_text("UNITS", "LENGTH", "mm");
+  f.set_text("UNITS", "FORCE", "kN");
+  for (const auto& s : si.sections()) {
+    if (iequals(s.name, "UNITS") || iequals(s.name, "MDI_HEADER")) continue;
+    for (const Entry* e : s.entries()) {
+      if (e->is_quoted()) continue;
+      set_si(f, s.name, e->key, *si.number(s.name, e->key));
+    }
+  }
+  const TirFile g = parse_tir(write_tir(f), "mf62_mm_kN.tir");
+  EXPECT_DOUBLE_EQ(*g.number("VERTICAL", "Q_FYS1"), -20.4964);
+  EXPECT_DOUBLE_EQ(*g.number("VERTICAL", "Q_CAM2"), 0.2574);
+  const auto a = tyre::mf_parameters_from_tir(si).params;
+  const auto b = tyre::mf_parameters_from_tir(g).params;
+  mf::MfOptions o;
+  for (const double fz : {2000.0, 4000.0, 6000.0}) {
+    for (const double alpha : {-0.1, 0.0, 0.1}) {
+      for (const double gamma : {-0.08, 0.0, 0.08}) {
+        mf::MfInput<double> in;
+        in.fz_n = fz;
+        in.kappa = 0.02;
+        in.alpha_rad = alpha;
+        in.gamma_rad = gamma;
+        in.vx_mps = 20.0;
+        const auto x = mf::evaluate(a, in, o);
+        const auto y = mf::evaluate(b, in, o);
+        const double tol = 1e-9;
+        expect_rel(y.fy_n, x.fy_n, tol, "Fy");
+        expect_rel(y.mz_nm, x.mz_nm, tol, "Mz");
+        expect_rel(y.rl_m, x.rl_m, tol, "Rl");
+        expect_rel(y.rho_m, x.rho_m, tol, "rho");
+      }
+    }
+  }
+}
+
 TEST(TirUnits, RoundTripKeepsTheFileUnitsAndSetSiConverts) {
   const auto path = variant("mf61_mm_kN_deg.tir");
   TirFile f = read_tir(path);
