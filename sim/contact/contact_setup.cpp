@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
@@ -139,6 +140,18 @@ profile::SampledProfile read_file(const std::string& file, profile::ProfileRole 
                                   std::vector<std::string>& warnings,
                                   std::optional<double>* rail_inclination_rad = nullptr) {
   profile::ProfileFile read = profile::read_profile_file(file, role, options);
+  // A wheel or rail head for contact is some 50 to 200 mm wide: one under 20 mm is a file in
+  // metres or inches read as millimetres.
+  constexpr double kMinWidth_mm = 20.0;
+  const double width_mm = read.profile.y_mm.back() - read.profile.y_mm.front();
+  if (width_mm < kMinWidth_mm) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", width_mm);
+    throw std::runtime_error(file + ": the profile is only " + text +
+                             " mm wide: a wheel or rail profile is some 50 to 200 mm wide (is the "
+                             "file in metres or inches? name its columns with their unit, e.g. "
+                             "y_m,z_m, or give them in mm)");
+  }
   warnings.insert(warnings.end(), read.warnings.begin(), read.warnings.end());
   if (rail_inclination_rad != nullptr) {
     *rail_inclination_rad = read.rail_inclination_rad;

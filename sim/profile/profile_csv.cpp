@@ -3,6 +3,7 @@
 #include "io/text_line.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstddef>
@@ -11,6 +12,7 @@
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -52,6 +54,44 @@ bool is_number_text(std::string_view text) {
   return host::text::parse_number_text(text, value);
 }
 
+/// A header cell naming a profile axis: 'y' or 'z', alone or with its unit after '_', ' ', '/',
+/// '[' or '(' ("y_mm", "z [m]", "Y(in)", "z/mm"). `mm_per_unit` converts to millimetres; a bare
+/// "y" or "z" is in millimetres.
+struct AxisColumn {
+  char axis = 0;  ///< 'y' or 'z'; 0: the cell names no axis
+  double mm_per_unit = 1.0;
+};
+
+AxisColumn axis_column(std::string_view cell, const std::string& source, std::size_t line) {
+  std::string name;
+  for (const char c : cell) {
+    if (c != ' ' && c != '\t')
+      name += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  if (name.empty() || (name[0] != 'y' && name[0] != 'z')) return {};
+  std::string_view unit = std::string_view(name).substr(1);
+  if (!unit.empty()) {
+    const char open = unit.front();
+    if (open != '_' && open != '/' && open != '[' && open != '(') return {};  // "yaw", "zone"
+    unit.remove_prefix(1);
+    if ((open == '[' && !unit.empty() && unit.back() == ']') ||
+        (open == '(' && !unit.empty() && unit.back() == ')')) {
+      unit.remove_suffix(1);
+    } else if (open == '[' || open == '(') {
+      return {};
+    }
+  }
+  static constexpr std::pair<std::string_view, double> kUnits[] = {
+      {"", 1.0},    {"mm", 1.0},    {"m", 1000.0}, {"cm", 10.0},
+      {"in", 25.4}, {"inch", 25.4}, {"um", 0.001}, {"\u00b5m", 0.001}};
+  for (const auto& [u, f] : kUnits) {
+    if (unit == u) return {name[0], f};
+  }
+  host::text::fail_at(source, line,
+                      "column '" + std::string(cell) + "': unit '" + std::string(unit) +
+                          "' not known for a profile (mm, m, cm, in, um)");
+}
+
 }  // namespace
 
 ProfilePoints read_profile_csv_points(std::istream& in, const std::string& source_name,
@@ -64,6 +104,8 @@ ProfilePoints read_profile_csv_points(std::istream& in, const std::string& sourc
   std::size_t y_col = 0;
   std::size_t z_col = 1;
   std::size_t n_cols = 0;
+  double y_scale = 1.0;  // to mm, from the header's units
+  double z_scale = 1.0;
   bool have_header = false;
   bool data_started = false;
   while (std::getline(in, line)) {
@@ -93,7 +135,42 @@ ProfilePoints read_profile_csv_points(std::istream& in, const std::string& sourc
             "expected a header naming the columns y_mm and z_mm, got '" + std::string(text) + "'");
       }
       if (fields.size() < 2 || !is_number_text(fields[0]) || !is_number_text(fields[1])) {
-        have_header = true;  // one header row of other names is allowed before the data
+        // One header row before the data. Where it names the y and z columns ("y,z", "z_m,y_m",
+        // "Y [in]", ...), they are read from there, converted from their units to mm; a header of
+        // other names ("x,y" of a drawing) leaves the first two columns as y and z in mm.
+        // A unit set apart by a blank ("y [mm]") is a field of its own here: joined to its name,
+        // so that the header's cells count as the data's columns.
+        std::vector<std::string> cells;
+        for (const std::string_view f : fields) {
+          if (!cells.empty() && !f.empty() && (f.front() == '[' || f.front() == '(')) {
+            cells.back() += f;
+          } else {
+            cells.emplace_back(f);
+          }
+        }
+        const std::size_t none = cells.size();
+        std::size_t y_at = none;
+        std::size_t z_at = none;
+        double y_mm_per = 1.0;
+        double z_mm_per = 1.0;
+        for (std::size_t k = 0; k < cells.size(); ++k) {
+          const AxisColumn c = axis_column(cells[k], source_name, line_no);
+          if (c.axis == 'y' && y_at == none) {
+            y_at = k;
+            y_mm_per = c.mm_per_unit;
+          } else if (c.axis == 'z' && z_at == none) {
+            z_at = k;
+            z_mm_per = c.mm_per_unit;
+          }
+        }
+        if (y_at < none && z_at < none) {
+          y_col = y_at;
+          z_col = z_at;
+          y_scale = y_mm_per;
+          z_scale = z_mm_per;
+          n_cols = std::max(y_at, z_at) + 1;
+        }
+        have_header = true;
         continue;
       }
     }
@@ -108,8 +185,8 @@ ProfilePoints read_profile_csv_points(std::istream& in, const std::string& sourc
       host::text::fail_at(source_name, line_no,
                           "expected two numbers 'y_mm,z_mm', got '" + std::string(text) + "'");
     }
-    points.y_mm.push_back(parse_number(fields[y_col], source_name, line_no, "y_mm"));
-    points.z_mm.push_back(parse_number(fields[z_col], source_name, line_no, "z_mm"));
+    points.y_mm.push_back(parse_number(fields[y_col], source_name, line_no, "y_mm") * y_scale);
+    points.z_mm.push_back(parse_number(fields[z_col], source_name, line_no, "z_mm") * z_scale);
     points.line.push_back(line_no);
   }
   if (!have_header && !tolerant) {

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <iterator>
 #include <map>
 #include <numbers>
@@ -353,6 +354,30 @@ TEST_F(ConicityOnProfileFiles, EveryVariantGivesTheCleanConicity) {
   fs::copy_file(file("s1002_measured.whl"), whl_as_txt, fs::copy_options::overwrite_existing);
   expect_near(conicity(" --wheel-file " + whl_as_txt.string() + " --wheel-format miniprof" + rail),
               conicity(" --wheel-file " + file("s1002_measured.whl").string() + rail), 1e-12);
+}
+
+// The clean wheel written in metres: under a header naming the columns with their unit (y_m,z_m)
+// it gives the clean conicity; under "y,z" (millimetres assumed) it is refused as 0.14 mm wide.
+TEST_F(ConicityOnProfileFiles, ColumnUnitsInTheHeaderAreHonoured) {
+  const std::string rail = " --rail-file " + file("uic60_upright_clean.csv").string();
+  const auto clean = conicity(" --wheel-file " + file("s1002_clean.csv").string() + rail);
+  const auto write_in_metres = [&](const std::string& header) {
+    const fs::path out = tmp_dir() / ("s1002_m_" + std::to_string(n_) + ".csv");
+    std::ofstream m(out);
+    m << header << '\n' << std::setprecision(17);
+    for (const auto& row : read_csv(file("s1002_clean.csv"))) {
+      m << row[0] / 1000.0 << ',' << row[1] / 1000.0 << '\n';
+    }
+    return out;
+  };
+  expect_near(conicity(" --wheel-file " + write_in_metres("y_m,z_m").string() + rail), clean, 1e-9);
+  const fs::path bare = write_in_metres("y,z");
+  const fs::path out = tmp_dir() / "bare.csv";
+  const fs::path log = tmp_dir() / "bare.log";
+  EXPECT_NE(run("conicity --wheel-file " + bare.string() + rail, out, log), 0);
+  EXPECT_NE(text_of(log).find(bare.string() + ": the profile is only "), std::string::npos)
+      << text_of(log);
+  EXPECT_NE(text_of(log).find("is the file in metres or inches?"), std::string::npos);
 }
 
 TEST_F(ConicityOnProfileFiles, CantedManchesterRailIsFlagged) {

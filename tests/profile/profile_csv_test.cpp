@@ -86,6 +86,42 @@ TEST(ProfileCsvGolden, ReadsEn15302RailAAndWheelA) {
 namespace tread::profile {
 namespace {
 
+// A header naming y and z with their units: the columns are taken from it, in any order, and
+// converted to mm; an unknown unit is an error at its line; other names leave the first two columns
+// as y and z in mm.
+TEST(ProfileCsv, TolerantHeaderUnitsAreConvertedToMillimetres) {
+  const auto read = [](const std::string& text) {
+    std::istringstream in(text);
+    return read_profile_csv(in, "h", CsvDialect::kTolerant);
+  };
+  const std::vector<double> y{-10.0, 20.0, 60.0};
+  const std::vector<double> z{1.0, 0.5, 0.25};
+  for (const char* text :
+       {"y_m,z_m\n-0.01,0.001\n0.02,0.0005\n0.06,0.00025\n",
+        "z [m]; y [m]\n0.001;-0.01\n0.0005;0.02\n0.00025;0.06\n",
+        "Y(cm)\tZ(mm)\n-1\t1\n2\t0.5\n6\t0.25\n",
+        "z[m];y[m]\n0.001;-0.01\n0.0005;0.02\n0.00025;0.06\n", "y,z\n-10,1\n20,0.5\n60,0.25\n",
+        "x,y\n-10,1\n20,0.5\n60,0.25\n", "y/mm z/mm extra\n-10 1 7\n20 0.5 7\n60 0.25 7\n"}) {
+    SCOPED_TRACE(text);
+    const SampledProfile p = read(text);
+    ASSERT_EQ(p.y_mm.size(), 3u);
+    for (std::size_t k = 0; k < 3; ++k) {
+      EXPECT_NEAR(p.y_mm[k], y[k], 1e-12);
+      EXPECT_NEAR(p.z_mm[k], z[k], 1e-12);
+    }
+  }
+  const SampledProfile in = read("y_in,z_in\n0,0\n1,0.5\n");
+  EXPECT_DOUBLE_EQ(in.y_mm[1], 25.4);
+  EXPECT_DOUBLE_EQ(in.z_mm[1], 12.7);
+  try {
+    (void)read("# a comment\ny_ft,z_ft\n0,0\n1,1\n");
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(),
+                 "h:2: column 'y_ft': unit 'ft' not known for a profile (mm, m, cm, in, um)");
+  }
+}
+
 TEST(ProfileCsv, TolerantDialectTakesAnySeparatorAndAnOptionalHeader) {
   std::istringstream a("# c\n0;0.5\n1\t0.25\n2 0 9\n");
   const SampledProfile p = read_profile_csv(a, "a", CsvDialect::kTolerant);
@@ -100,7 +136,7 @@ TEST(ProfileCsv, TolerantDialectTakesAnySeparatorAndAnOptionalHeader) {
     (void)read_profile_csv(c, "c", CsvDialect::kTolerant);
     ADD_FAILURE() << "no error";
   } catch (const std::runtime_error& e) {
-    EXPECT_STREQ(e.what(), "c:3: expected two numbers 'y_mm,z_mm', got 'foo'");
+    EXPECT_STREQ(e.what(), "c:3: expected 2 columns, got 1");
   }
   // The strict dialect still wants its header.
   std::istringstream d("0,0\n1,1\n");
