@@ -234,6 +234,16 @@ const Entry* TirFile::find_any(std::string_view key) const noexcept {
 }
 
 namespace {
+
+/// A table row of a .tir starts with its column header '{', a number or quoted text; a line
+/// starting with a letter is a 'KEY = value' line gone wrong.
+bool looks_like_table_row(std::string_view text) {
+  const std::string_view t = host::text::trim_blanks(text);
+  if (t.empty()) return true;
+  const char c = t.front();
+  return c == '{' || c == '\'' || c == '"' || c == '+' || c == '-' || c == '.' ||
+         (c >= '0' && c <= '9');
+}
 std::optional<double> entry_number(const Entry* e, const std::string& origin) {
   if (e == nullptr) return std::nullopt;
   if (!e->is_quoted()) {
@@ -462,6 +472,16 @@ TirFile parse_tir(std::string_view text, const std::string& origin) {
                  "]: '" + std::string(t) + "'");
       }
       for (const auto& prev : current->lines) {
+        if (prev.kind == other && l.kind == Line::Kind::kEntry &&
+            !looks_like_table_row(prev.text)) {
+          // The section's first "row" is a word and a value: a 'KEY = value' line missing its '='
+          // (MF files have no table whose rows start with a name). Point at it, not at the
+          // well-formed entries after it.
+          fail(origin, prev.line,
+               "line is neither 'KEY = value' nor a comment in section [" + current->name +
+                   "] (a missing '='? entries follow at line " + std::to_string(line_no) + "): '" +
+                   std::string(host::text::trim_blanks(prev.text)) + "'");
+        }
         if (prev.kind == other) {
           fail(origin, line_no,
                l.kind == Line::Kind::kEntry

@@ -126,6 +126,10 @@ TEST(TirFile, ErrorsNameFileAndLine) {
   expect_error("[A\nX = 1\n", 1, "without ']'");
   expect_error("[A]\nX = 1\nY 2\n", 3, "neither 'KEY = value' nor a comment");
   expect_error("[A]\n1 2\nX = 1\n", 3, "table section");
+  // A key missing its '=' before the section's entries: the error is at that line, not at the
+  // well-formed entry after it.
+  expect_error("[A]\nFNOMIN 6752\nX = 1\n", 2,
+               "(a missing '='? entries follow at line 3): 'FNOMIN 6752'");
 }
 
 std::filesystem::path variant(const std::string& name) {
