@@ -109,6 +109,7 @@ struct BatchScratch {
   std::vector<InputRow> rows;
   std::vector<mf::MfInput<T>> inputs;
   std::vector<mf::MfOutput<T>> outputs;
+  std::vector<unsigned char> outside;  ///< per row: an input outside the tyre's limits
 };
 
 // One chunk of the stream: its lines in, its formatted rows out. Reused from chunk to chunk.
@@ -166,8 +167,11 @@ bool maybe_outside(const EvalSetup& setup, const InputRow& row) {
 }
 
 // Counts `row`'s values outside the model's range in `outside` (with --strict: refuses the first).
-void check_range(const EvalSetup& setup, const InputRow& row, std::array<Tally, kLimitCount>& out) {
-  if (!maybe_outside(setup, row)) return;
+// True if one was: with the limits on (useMode 1xx) the core clamps it, and the row's status says
+// `out of range`.
+bool check_range(const EvalSetup& setup, const InputRow& row, std::array<Tally, kLimitCount>& out) {
+  if (!maybe_outside(setup, row)) return false;
+  bool any = false;
   for (std::size_t i = 0; i < kLimitCount; ++i) {
     const Limit& l = setup.limits[i];
     const double v = row[l.quantity];
@@ -183,6 +187,17 @@ void check_range(const EvalSetup& setup, const InputRow& row, std::array<Tally, 
                               hint(setup.table, l, v));
     }
     if (out[i].rows++ == 0) out[i].first_line = row.line;
+    any = true;
+  }
+  return any;
+}
+
+// An ok result for a row whose input the core clamped at the tyre's limits is `out of range`
+// (the README's promise), a worse status stays.
+template <typename T>
+void mark_clamped(const EvalSetup& setup, bool outside, mf::MfOutput<T>& result) {
+  if (outside && setup.options.use_limits && result.status == Status::ok) {
+    result.status = Status::out_of_range;
   }
 }
 
@@ -275,8 +290,10 @@ void evaluate_chunk(const EvalSetup& setup, const mf::MfParameters<T>& params, C
   InputRow row;
   host::for_each_line(chunk.lines, [&](std::string_view line, int line_no) {
     if (!setup.table.parse_row(line, line_no, row)) return;
-    check_range(setup, row, chunk.outside);
-    p = format_row(setup, row, evaluate(params, input_of<T>(row), setup.options), p);
+    const bool outside = check_range(setup, row, chunk.outside);
+    mf::MfOutput<T> result = evaluate(params, input_of<T>(row), setup.options);
+    mark_clamped(setup, outside, result);
+    p = format_row(setup, row, result, p);
     ++chunk.rows;
   });
   chunk.used = static_cast<std::size_t>(p - chunk.text.get());
@@ -295,6 +312,7 @@ void evaluate_chunk_batch(const EvalSetup& setup, const mf::MfParameters<T>& par
     batch.rows.resize(kBatchRows);
     batch.inputs.resize(kBatchRows);
     batch.outputs.resize(kBatchRows);
+    batch.outside.resize(kBatchRows);
   }
   char* p = chunk.text.get();
   std::size_t pending = 0;
@@ -302,6 +320,7 @@ void evaluate_chunk_batch(const EvalSetup& setup, const mf::MfParameters<T>& par
     evaluate_many(params, std::span<const mf::MfInput<T>>(batch.inputs).first(pending),
                   setup.options, std::span<mf::MfOutput<T>>(batch.outputs).first(pending));
     for (std::size_t i = 0; i < pending; ++i) {
+      mark_clamped(setup, batch.outside[i] != 0, batch.outputs[i]);
       p = format_row(setup, batch.rows[i], batch.outputs[i], p);
       ++chunk.rows;
     }
@@ -311,7 +330,7 @@ void evaluate_chunk_batch(const EvalSetup& setup, const mf::MfParameters<T>& par
     InputRow& row = batch.rows[pending];
     try {
       if (!setup.table.parse_row(line, line_no, row)) return;
-      check_range(setup, row, chunk.outside);
+      batch.outside[pending] = check_range(setup, row, chunk.outside) ? 1 : 0;
     } catch (...) {
       flush();  // may throw an earlier row's error instead
       throw;

@@ -377,6 +377,43 @@ TEST(MfCommand, DegreesInARadianColumnAreCountedOrRefusedWithStrict) {
       << slurp(dir / "strict_ok.txt");
 }
 
+// A row whose input lies outside the tyre's limits is evaluated clamped (useMode 1xx) and says so
+// in its status, `out of range`, in every arithmetic; without the limits (2xx) it is evaluated as
+// given and the status stays `ok`.
+TEST(MfCommand, RowsClampedAtTheLimitsSayOutOfRange) {
+  const auto tir = tread::testing::tyre_file("MagicFormula61_Parameters.tir");
+  const auto dir = tmp_dir();
+  const auto in = dir / "limits.csv";
+  // FZMAX 18000 N, KPUMAX 1, CAMMAX 0.105 rad in the sample file.
+  write(in,
+        "Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps\n4000,0.05,0.02,0,16\n30000,0.05,0.02,0,16\n"
+        "4000,5,0.02,0,16\n4000,0.05,0.02,0.5,16\n6000,-0.1,-0.05,0.01,16\n");
+  const auto statuses = [&](const std::string& args) {
+    const auto out = dir / "limits_out.csv";
+    std::filesystem::remove(out);
+    EXPECT_EQ(run("mf eval " + args + " --tir " + tir.string() + " --input " + in.string() +
+                      " --output " + out.string(),
+                  dir / "limits.txt"),
+              0)
+        << args << ": " << slurp(dir / "limits.txt");
+    std::vector<std::string> status;
+    std::istringstream text(slurp(out));
+    for (std::string line; std::getline(text, line);) {
+      if (line.empty() || line[0] == '#' || line.rfind("in_", 0) == 0 || line[0] == 'F') continue;
+      status.push_back(line.substr(line.rfind(',') + 1));
+    }
+    return status;
+  };
+  const std::vector<std::string> clamped{"ok", "out of range", "out of range", "out of range",
+                                         "ok"};
+  for (const char* args : {"", "--float", "--batch", "--fixed", "--columns Fx_N,Fy_N,Mz_Nm"}) {
+    EXPECT_EQ(statuses(args), clamped) << args;
+  }
+  const std::vector<std::string> unclamped = statuses("--mode 211 --columns Fx_N");
+  ASSERT_EQ(unclamped.size(), 5U);
+  EXPECT_EQ(unclamped[1], "ok");
+}
+
 TEST(MfCommand, SaeFileWithTtcNamesEqualsIsoWFile) {
   const auto tir = tread::testing::tyre_file("MagicFormula61_Parameters.tir");
   const auto dir = tmp_dir();
