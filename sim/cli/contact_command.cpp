@@ -64,7 +64,9 @@ std::vector<std::string> mechanics_rows(const contact::RigidContact& c,
                                         double half_contact_base_mm) {
   const std::vector<contact::MechanicsRow> rows =
       contact::mechanics_table(c, t.y_first_mm, t.y_mm.back(), t.y_step_mm, o.materials);
-  const contact::FlangeAngles flange = contact::flange_angles(rows);
+  // Nadal's limit takes the profiles' flange angle, not the largest angle this table's range
+  // happens to reach (a table short of flange contact would give a tread angle).
+  const contact::FlangeAngles flange = contact::profile_flange_angles(c, o.materials);
   contact::WheelsetState state = o.state;
   state.load_left_n = o.load_n;
   state.load_right_n = o.load_right_n > 0.0 ? o.load_right_n : o.load_n;

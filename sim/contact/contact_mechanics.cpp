@@ -120,6 +120,25 @@ FlangeAngles flange_angles(const std::vector<MechanicsRow>& table) {
   return out;
 }
 
+FlangeAngles profile_flange_angles(const RigidContact& contact, const ContactMaterials& m,
+                                   const MechanicsSettings& s) {
+  constexpr double kStep_mm = 0.1;
+  constexpr int kSteps = 300;  // ±30 mm: past flange contact on any standard wheelset
+  FlangeAngles out;
+  for (const int side : {-1, 1}) {
+    for (int k = 0; k <= kSteps; ++k) {
+      try {
+        const MechanicsRow r = mechanics_row(contact.at(side * k * kStep_mm), m, s);
+        out.left_rad = std::max(out.left_rad, r.left.point[0].gamma_rad);
+        out.right_rad = std::max(out.right_rad, r.right.point[0].gamma_rad);
+      } catch (const std::domain_error&) {
+        break;  // the wheels no longer meet the rails further out
+      }
+    }
+  }
+  return out;
+}
+
 rail::WheelForces<double> evaluate_wheel(const WheelMechanics& wheel, bool right_wheel,
                                          const WheelsetState& state, double r0_mm,
                                          double half_contact_base_mm, const ContactMaterials& m,

@@ -459,6 +459,26 @@ std::map<std::string, std::vector<double>> run_table(const std::string& extra, c
 
 }  // namespace mechanics
 
+// Nadal's limit is the profiles' (their flange angle), not the largest contact angle within the
+// table's range: a table that stops short of flange contact gives the same limit.
+TEST(ContactCommand, NadalLimitDoesNotDependOnTheTablesRange) {
+  for (const char* ymax : {"0.5", "3", "10"}) {
+    const fs::path out = tmp_dir() / (std::string("nadal_") + ymax + ".csv");
+    ASSERT_EQ(run(std::string("contact --wheel S1002 --rail 60E1 --step 0.5 --load 80000 --ymax ") +
+                      ymax + " --output " + out.string(),
+                  tmp_dir() / "stdout.txt", tmp_dir() / "nadal.log"),
+              0)
+        << text_of(tmp_dir() / "nadal.log");
+    auto t = mechanics::columns(out);
+    ASSERT_FALSE(t["nadal_limit_left"].empty());
+    for (const char* s : {"_left", "_right"}) {
+      for (const double limit : t[std::string("nadal_limit") + s]) {
+        EXPECT_NEAR(limit, 1.2003, 0.01) << "--ymax " << ymax << s;  // S1002: 70 deg, mu 0.36
+      }
+    }
+  }
+}
+
 TEST(ContactCommand, LoadAddsHertzCreepAndDerailmentColumns) {
   auto t = mechanics::run_table("--speed 30 --yaw 0.002", "polach");
   ASSERT_EQ(t["y_mm"].size(), 33u);
