@@ -5,6 +5,7 @@
 //
 //   peak μx    max |Fx| / Fz over κ ∈ [−1, 1] (drive and brake peaks reported separately)
 //   peak μy    max |Fy| / Fz over α ∈ [−0.5, 0.5] rad
+//              both within KPUMIN…KPUMAX and ALPMIN…ALPMAX where the limits are on
 //   Kxκ        longitudinal slip stiffness at the free-rolling point (the model's BCDx, MFeval's
 //              Kxk output; N per unit slip)
 //   Kyα        cornering stiffness, the model's Kya with its sign turned so that a normal tyre
@@ -34,6 +35,14 @@ struct MfTyreFigures {
   double re_m = 0.0;           ///< effective rolling radius, free rolling
   double rl_m = 0.0;           ///< loaded radius, free rolling
   bool finite = true;          ///< false if any evaluation gave a non-finite value
+  /// With the limits on: whether the range KPUMIN…KPUMAX holds drive (κ > 0) and brake (κ < 0)
+  /// slip at all, and whether a peak lies at an end of the tyre's range (the curve may rise
+  /// beyond it, where the file says nothing).
+  bool drive_in_range = true;
+  bool brake_in_range = true;
+  bool kappa_drive_at_limit = false;
+  bool kappa_brake_at_limit = false;
+  bool alpha_muy_at_limit = false;
 };
 
 /// The figures at `fz_n` (≤ 0: the file's FNOMIN) and `vx_mps` (≤ 0: LONGVL), `options` as

@@ -91,9 +91,17 @@ std::string tir_info_report(const std::filesystem::path& path) {
   mf::MfOptions o;
   const MfTyreFigures f = tyre_figures(p, o);
   out << "at FNOMIN (" << num(f.fz_n) << " N, " << num(f.vx_mps) << " m/s, γ = 0, pure slip):\n"
-      << "  peak μx: drive " << num(f.mux_drive) << " at κ = " << num(f.kappa_drive) << ", brake "
-      << num(f.mux_brake) << " at κ = " << num(f.kappa_brake) << '\n'
-      << "  peak μy: " << num(f.muy) << " at α = " << deg(f.alpha_muy_rad) << '\n'
+      << "  peak μx: drive "
+      << (f.drive_in_range ? num(f.mux_drive) + " at κ = " + num(f.kappa_drive) +
+                                 (f.kappa_drive_at_limit ? " (KPUMAX, the range's end)" : "")
+                           : std::string("none (KPUMAX ≤ 0: no drive slip in the tyre's range)"))
+      << ", brake "
+      << (f.brake_in_range ? num(f.mux_brake) + " at κ = " + num(f.kappa_brake) +
+                                 (f.kappa_brake_at_limit ? " (KPUMIN, the range's end)" : "")
+                           : std::string("none (KPUMIN ≥ 0: no brake slip in the tyre's range)"))
+      << '\n'
+      << "  peak μy: " << num(f.muy) << " at α = " << deg(f.alpha_muy_rad)
+      << (f.alpha_muy_at_limit ? " (ALPMIN/ALPMAX, the range's end)" : "") << '\n'
       << "  slip stiffness Kxκ: " << num(f.kxk_n) << " N\n"
       << "  cornering stiffness Kyα: " << num(f.kya_nprad) << " N/rad\n"
       << "  pneumatic trail (α = 0.5°): " << num(f.trail_m) << " m\n"

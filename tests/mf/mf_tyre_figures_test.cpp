@@ -69,5 +69,30 @@ TEST(MfTyreFigures, PeaksAreThePeaksOfTheCurves) {
   EXPECT_LT(f.trail_m, 0.1);
 }
 
+// A tyre whose range ends before its peaks (the FEDA file: ALPMIN −0.195 rad, KPUMAX 0): the
+// peaks are searched within the range, a peak at its end says so, and no drive peak is made up
+// where the file allows no drive slip. Without the limits (useMode 2xx) the whole grid counts.
+TEST(MfTyreFigures, PeaksStayInsideTheTyresRange) {
+  const MfParameters<double> p =
+      tyre::load_mf_parameters(testing::tyre_file("chrono_feda_335_65R22_5_G275MSA_60psi.tir"))
+          .params;
+  ASSERT_GT(p.alpmin_rad, -0.5);
+  ASSERT_LE(p.kpumax, 0.0);
+  const tyre::MfTyreFigures f = tyre::tyre_figures(p, MfOptions{});
+  EXPECT_GE(f.alpha_muy_rad, p.alpmin_rad);
+  EXPECT_LE(f.alpha_muy_rad, p.alpmax_rad);
+  EXPECT_TRUE(f.alpha_muy_at_limit);  // this tyre's |Fy| still rises at ALPMIN
+  EXPECT_DOUBLE_EQ(f.alpha_muy_rad, p.alpmin_rad);
+  EXPECT_FALSE(f.drive_in_range);
+  EXPECT_TRUE(f.brake_in_range);
+  EXPECT_GE(f.kappa_brake, p.kpumin);
+  MfOptions no_limits;
+  no_limits.use_limits = false;
+  const tyre::MfTyreFigures g = tyre::tyre_figures(p, no_limits);
+  EXPECT_TRUE(g.drive_in_range);
+  EXPECT_FALSE(g.alpha_muy_at_limit);
+  EXPECT_GE(g.muy, f.muy);
+}
+
 }  // namespace
 }  // namespace tread::mf
