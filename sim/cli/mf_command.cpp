@@ -151,6 +151,13 @@ void run_mf_plot(const MfPlotArgs& args) {
   }
   tyre::MfPlotOptions plot;
   plot.loads_n = args.loads;
+  for (const double fz : tyre::plot_loads(loaded.params, plot)) {
+    if (const std::string bound = tyre::clamped_load(loaded.params, options, fz); !bound.empty()) {
+      std::cerr << "tread mf plot: warning: " << args.tir << ": Fz = " << fz
+                << " N lies outside the tyre's load range: its curves are drawn at " << bound
+                << " (--mode 2xx evaluates beyond it)\n";
+    }
+  }
   plot.vx_mps = args.vx_mps;
   plot.title = std::filesystem::path(args.tir).filename().string() + " (useMode " +
                std::to_string(args.mode) + ", ISO-W)";

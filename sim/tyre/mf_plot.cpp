@@ -32,6 +32,28 @@ std::string quoted(const std::string& text) {
 
 }  // namespace
 
+std::vector<double> plot_loads(const mf::MfParameters<double>& params, const MfPlotOptions& plot) {
+  if (!plot.loads_n.empty()) return plot.loads_n;
+  std::vector<double> loads;
+  for (double f : plot.load_factors) loads.push_back(f * params.fnomin_n);
+  return loads;
+}
+
+std::string clamped_load(const mf::MfParameters<double>& params, const mf::MfOptions& options,
+                         double fz_n) {
+  if (!options.use_limits) return {};
+  char text[64];
+  if (fz_n > params.fzmax_n) {
+    std::snprintf(text, sizeof text, "FZMAX %.0f N", params.fzmax_n);
+    return text;
+  }
+  if (fz_n < params.fzmin_n) {
+    std::snprintf(text, sizeof text, "FZMIN %.0f N", params.fzmin_n);
+    return text;
+  }
+  return {};
+}
+
 std::string mf_plot_script(const mf::MfParameters<double>& p, const mf::MfOptions& options,
                            const MfPlotOptions& plot, const std::filesystem::path& output) {
   mf::MfOptions o = options;
@@ -39,12 +61,7 @@ std::string mf_plot_script(const mf::MfParameters<double>& p, const mf::MfOption
   std::ostringstream s;
   s.precision(9);
   const int n = plot.points < 3 ? 3 : plot.points;
-  std::vector<double> loads;
-  if (plot.loads_n.empty()) {
-    for (double f : plot.load_factors) loads.push_back(f * p.fnomin_n);
-  } else {
-    loads = plot.loads_n;
-  }
+  const std::vector<double> loads = plot_loads(p, plot);
 
   // Fx(κ), Fy(α), Mz(α): one datablock per load, columns: slip, value.
   for (std::size_t l = 0; l < loads.size(); ++l) {
@@ -95,10 +112,14 @@ std::string mf_plot_script(const mf::MfParameters<double>& p, const mf::MfOption
   auto curves = [&](const std::string& block, const std::string& using_cols) {
     std::string line = "plot ";
     for (std::size_t l = 0; l < loads.size(); ++l) {
-      char title[64];
-      std::snprintf(title, sizeof title, "Fz = %.0f N", loads[l]);
+      char text[64];
+      std::snprintf(text, sizeof text, "Fz = %.0f N", loads[l]);
+      std::string title = text;
+      if (const std::string bound = clamped_load(p, options, loads[l]); !bound.empty()) {
+        title += " (at " + bound + ")";
+      }
       line += "$" + block + std::to_string(l) + " using " + using_cols + " with lines lw 2 title " +
-              quoted(title) + (l + 1 < loads.size() ? ", " : "\n");
+              tyre::quoted(title) + (l + 1 < loads.size() ? ", " : "\n");
     }
     return line;
   };

@@ -22,6 +22,15 @@ struct MfPlotOptions {
   int points = 301;
 };
 
+/// The loads drawn: `loads_n`, or `load_factors` × FNOMIN.
+std::vector<double> plot_loads(const mf::MfParameters<double>& params, const MfPlotOptions& plot);
+
+/// For a load outside FZMIN…FZMAX with the limits on (where the model evaluates the bound
+/// instead): the bound's name and value, e.g. "FZMAX 30578 N"; empty otherwise. The legend
+/// names it beside the load, and `tread mf plot` warns.
+std::string clamped_load(const mf::MfParameters<double>& params, const mf::MfOptions& options,
+                         double fz_n);
+
 /// The gnuplot script that writes `output` (PNG or SVG by extension).
 std::string mf_plot_script(const mf::MfParameters<double>& params, const mf::MfOptions& options,
                            const MfPlotOptions& plot, const std::filesystem::path& output);

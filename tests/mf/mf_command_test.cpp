@@ -260,6 +260,28 @@ TEST(MfCommand, ErrorInALateChunkNamesItsLineAndLeavesNoOutput) {
   }
 }
 
+// Loads beyond FZMAX are drawn at FZMAX by the limited model: the legend and a warning say so
+// (the FEDA file: FNOMIN 21674 N, FZMAX 30578 N; the default loads are 0.5…2 × FNOMIN).
+TEST(MfCommand, PlotSaysWhichLoadsAreDrawnAtFzmax) {
+  const auto tir = tread::testing::tyre_file("chrono_feda_335_65R22_5_G275MSA_60psi.tir");
+  const auto dir = tmp_dir();
+  const auto png = dir / "feda.png";
+  ASSERT_EQ(run("mf plot --tir " + tir.string() + " --output " + png.string(), dir / "plot.txt"), 0)
+      << slurp(dir / "plot.txt");
+  const std::string err = slurp(dir / "plot.txt");
+  EXPECT_NE(err.find("Fz = 43348 N lies outside the tyre's load range: its curves are drawn at "
+                     "FZMAX 30578 N"),
+            std::string::npos)
+      << err;
+  EXPECT_EQ(err.find("Fz = 21674 N lies outside"), std::string::npos) << err;
+  const std::string svg = slurp(dir / "feda.svg");
+  EXPECT_NE(svg.find("Fz = 43348 N (at FZMAX 30578 N)"), std::string::npos);
+  ASSERT_EQ(run("mf plot --mode 211 --tir " + tir.string() + " --output " + png.string(),
+                dir / "plot211.txt"),
+            0);
+  EXPECT_EQ(slurp(dir / "plot211.txt").find("outside the tyre's load range"), std::string::npos);
+}
+
 TEST(MfCommand, PlotWritesPngAndSvg) {
   const auto tir = tread::testing::tyre_file("MagicFormula52_Parameters.tir");
   const auto dir = tmp_dir();
