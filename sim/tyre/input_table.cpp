@@ -172,7 +172,10 @@ std::string_view to_string(SignConvention c) {
 double iso_w_sign(SignConvention c, InputQuantity q) {
   switch (c) {
     case SignConvention::sae:
-      return q == InputQuantity::fz || q == InputQuantity::alpha ? -1.0 : 1.0;
+      // SAE J670 is ISO-W turned 180° about x (y right, z down): Fz, α and the turn slip φt (a yaw
+      // rate over the speed: a rotation about z) change sign.
+      return q == InputQuantity::fz || q == InputQuantity::alpha || q == InputQuantity::phit ? -1.0
+                                                                                             : 1.0;
     case SignConvention::adapted_iso:
       return q == InputQuantity::alpha ? -1.0 : 1.0;
     case SignConvention::iso_w:

@@ -194,6 +194,12 @@ TEST(InputTable, ConventionsAndOutputSigns) {
   EXPECT_EQ(output_sign(SignConvention::sae, MeasuredQuantity::mz), -1.0);
   EXPECT_EQ(output_sign(SignConvention::adapted_iso, MeasuredQuantity::fy), -1.0);
   EXPECT_EQ(output_sign(SignConvention::adapted_iso, MeasuredQuantity::fz), 1.0);
+  // The turn slip is a yaw rate over the speed: a rotation about z, which SAE's z (down) reverses;
+  // adapted ISO keeps ISO-W's axes.
+  EXPECT_EQ(iso_w_sign(SignConvention::sae, InputQuantity::phit), -1.0);
+  EXPECT_EQ(iso_w_sign(SignConvention::adapted_iso, InputQuantity::phit), 1.0);
+  EXPECT_EQ(iso_w_sign(SignConvention::sae, InputQuantity::gamma), 1.0);
+  EXPECT_EQ(iso_w_sign(SignConvention::sae, InputQuantity::kappa), 1.0);
 }
 
 void expect_error(const std::string& text, int line, const std::string& what) {
