@@ -185,8 +185,13 @@ ProfilePoints read_profile_csv_points(std::istream& in, const std::string& sourc
       host::text::fail_at(source_name, line_no,
                           "expected two numbers 'y_mm,z_mm', got '" + std::string(text) + "'");
     }
-    points.y_mm.push_back(parse_number(fields[y_col], source_name, line_no, "y_mm") * y_scale);
-    points.z_mm.push_back(parse_number(fields[z_col], source_name, line_no, "z_mm") * z_scale);
+    const double y = parse_number(fields[y_col], source_name, line_no, "y_mm") * y_scale;
+    const double z = parse_number(fields[z_col], source_name, line_no, "z_mm") * z_scale;
+    if (!std::isfinite(y) || !std::isfinite(z)) {
+      host::text::fail_at(source_name, line_no, "value is not finite in mm");
+    }
+    points.y_mm.push_back(y);
+    points.z_mm.push_back(z);
     points.line.push_back(line_no);
   }
   if (!have_header && !tolerant) {

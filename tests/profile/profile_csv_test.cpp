@@ -110,6 +110,7 @@ TEST(ProfileCsv, TolerantHeaderUnitsAreConvertedToMillimetres) {
       EXPECT_NEAR(p.z_mm[k], z[k], 1e-12);
     }
   }
+  EXPECT_THROW((void)read("y_m,z_m\n1e306,0\n2e306,1\n"), std::runtime_error);  // inf in mm
   const SampledProfile in = read("y_in,z_in\n0,0\n1,0.5\n");
   EXPECT_DOUBLE_EQ(in.y_mm[1], 25.4);
   EXPECT_DOUBLE_EQ(in.z_mm[1], 12.7);
