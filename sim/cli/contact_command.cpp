@@ -4,6 +4,7 @@
 // with --load, the contact mechanics at each y as further columns (contact/mechanics_columns.hpp):
 // Hertz ellipses and pressures, the two-point load split, creepages and creep forces (Polach or
 // FASTSIM) from the wheelset motion given, Y/Q and Nadal's margin.
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -66,7 +67,8 @@ std::vector<std::string> mechanics_rows(const contact::RigidContact& c,
       contact::mechanics_table(c, t.y_first_mm, t.y_mm.back(), t.y_step_mm, o.materials);
   // Nadal's limit takes the profiles' flange angle, not the largest angle this table's range
   // happens to reach (a table short of flange contact would give a tread angle).
-  const contact::FlangeAngles flange = contact::profile_flange_angles(c, o.materials);
+  const contact::FlangeAngles flange =
+      contact::profile_flange_angles(c, std::max(std::abs(t.y_first_mm), std::abs(t.y_mm.back())));
   contact::WheelsetState state = o.state;
   state.load_left_n = o.load_n;
   state.load_right_n = o.load_right_n > 0.0 ? o.load_right_n : o.load_n;

@@ -154,7 +154,7 @@ void run_mf_plot(const MfPlotArgs& args) {
   for (const double fz : tyre::plot_loads(loaded.params, plot)) {
     if (const std::string bound = tyre::clamped_load(loaded.params, options, fz); !bound.empty()) {
       std::cerr << "tread mf plot: warning: " << args.tir << ": Fz = " << fz
-                << " N lies outside the tyre's load range: its curves are drawn at " << bound
+                << " N lies above the tyre's load range: its curves are drawn at " << bound
                 << " (--mode 2xx evaluates beyond it)\n";
     }
   }

@@ -120,17 +120,16 @@ FlangeAngles flange_angles(const std::vector<MechanicsRow>& table) {
   return out;
 }
 
-FlangeAngles profile_flange_angles(const RigidContact& contact, const ContactMaterials& m,
-                                   const MechanicsSettings& s) {
+FlangeAngles profile_flange_angles(const RigidContact& contact, double beyond_mm) {
   constexpr double kStep_mm = 0.1;
-  constexpr int kSteps = 300;  // ±30 mm: past flange contact on any standard wheelset
+  const int steps = static_cast<int>(std::ceil(std::max(30.0, beyond_mm) / kStep_mm));
   FlangeAngles out;
   for (const int side : {-1, 1}) {
-    for (int k = 0; k <= kSteps; ++k) {
+    for (int k = 0; k <= steps; ++k) {
       try {
-        const MechanicsRow r = mechanics_row(contact.at(side * k * kStep_mm), m, s);
-        out.left_rad = std::max(out.left_rad, r.left.point[0].gamma_rad);
-        out.right_rad = std::max(out.right_rad, r.right.point[0].gamma_rad);
+        const ContactState c = contact.at(side * k * kStep_mm);
+        out.left_rad = std::max(out.left_rad, c.left.gamma_rad);
+        out.right_rad = std::max(out.right_rad, c.right.gamma_rad);
       } catch (const std::domain_error&) {
         break;  // the wheels no longer meet the rails further out
       }

@@ -75,10 +75,11 @@ struct FlangeAngles {
 FlangeAngles flange_angles(const std::vector<MechanicsRow>& table);
 
 /// The same over every lateral position where the wheels still meet the rails (0.1 mm apart, out
-/// to ±30 mm), whatever range a table covers: the flange angle of the profiles themselves, for
-/// Nadal's limit of a table that stops short of flange contact.
-FlangeAngles profile_flange_angles(const RigidContact& contact, const ContactMaterials& m,
-                                   const MechanicsSettings& s = {});
+/// to ±30 mm or ±`beyond_mm` if wider), whatever range a table covers: the flange angle of the
+/// profiles themselves, for Nadal's limit of a table that stops short of flange contact. The
+/// contact angles of the geometry (RigidContact::at), which are the main points' of
+/// mechanics_table.
+FlangeAngles profile_flange_angles(const RigidContact& contact, double beyond_mm = 0.0);
 
 /// Polach's parameters by name: "kalker" (kA = kS = 1, constant mu: Kalker's initial slope),
 /// "dry" or "wet" (Polach 2005's recommended sets); mu > 0 replaces mu0. Throws

@@ -54,39 +54,43 @@ bool is_number_text(std::string_view text) {
   return host::text::parse_number_text(text, value);
 }
 
-/// A header cell naming a profile axis: 'y' or 'z', alone or with its unit after '_', ' ', '/',
-/// '[' or '(' ("y_mm", "z [m]", "Y(in)", "z/mm"). `mm_per_unit` converts to millimetres; a bare
-/// "y" or "z" is in millimetres.
+/// A header cell naming a profile axis: 'y' or 'z', alone or with its unit after '_' or '/'
+/// ("y_mm", "z/m") or in brackets ("z [m]", "Y(in)"), quotes around the name ignored. `mm_per_unit`
+/// converts to millimetres; a bare "y" or "z" is in millimetres. A suffix after '_' or '/' that is
+/// no unit ("y_err", "z_wheel") names no axis; a bracketed unit not known is an error.
 struct AxisColumn {
   char axis = 0;  ///< 'y' or 'z'; 0: the cell names no axis
   double mm_per_unit = 1.0;
+  bool other_unit = false;  ///< a unit other than mm is named
 };
 
 AxisColumn axis_column(std::string_view cell, const std::string& source, std::size_t line) {
   std::string name;
   for (const char c : cell) {
-    if (c != ' ' && c != '\t')
+    if (c != ' ' && c != '\t' && c != '"' && c != '\'') {
       name += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    }
   }
   if (name.empty() || (name[0] != 'y' && name[0] != 'z')) return {};
   std::string_view unit = std::string_view(name).substr(1);
+  bool bracketed = false;
   if (!unit.empty()) {
     const char open = unit.front();
     if (open != '_' && open != '/' && open != '[' && open != '(') return {};  // "yaw", "zone"
     unit.remove_prefix(1);
-    if ((open == '[' && !unit.empty() && unit.back() == ']') ||
-        (open == '(' && !unit.empty() && unit.back() == ')')) {
+    if (open == '[' || open == '(') {
+      if (unit.empty() || unit.back() != (open == '[' ? ']' : ')')) return {};
       unit.remove_suffix(1);
-    } else if (open == '[' || open == '(') {
-      return {};
+      bracketed = true;
     }
   }
   static constexpr std::pair<std::string_view, double> kUnits[] = {
-      {"", 1.0},    {"mm", 1.0},    {"m", 1000.0}, {"cm", 10.0},
-      {"in", 25.4}, {"inch", 25.4}, {"um", 0.001}, {"\u00b5m", 0.001}};
+      {"", 1.0},      {"mm", 1.0},   {"m", 1000.0},      {"cm", 10.0},      {"in", 25.4},
+      {"inch", 25.4}, {"um", 0.001}, {"\u00b5m", 0.001}, {"\u03bcm", 0.001}};
   for (const auto& [u, f] : kUnits) {
-    if (unit == u) return {name[0], f};
+    if (unit == u) return {name[0], f, !u.empty() && u != "mm"};
   }
+  if (!bracketed) return {};
   host::text::fail_at(source, line,
                       "column '" + std::string(cell) + "': unit '" + std::string(unit) +
                           "' not known for a profile (mm, m, cm, in, um)");
@@ -142,7 +146,9 @@ ProfilePoints read_profile_csv_points(std::istream& in, const std::string& sourc
         // so that the header's cells count as the data's columns.
         std::vector<std::string> cells;
         for (const std::string_view f : fields) {
-          if (!cells.empty() && !f.empty() && (f.front() == '[' || f.front() == '(')) {
+          if (!cells.empty() && !f.empty() &&
+              (f.front() == '[' || f.front() == '(' || f.front() == '/' ||
+               (!cells.back().empty() && cells.back().back() == '/'))) {
             cells.back() += f;
           } else {
             cells.emplace_back(f);
@@ -153,15 +159,25 @@ ProfilePoints read_profile_csv_points(std::istream& in, const std::string& sourc
         std::size_t z_at = none;
         double y_mm_per = 1.0;
         double z_mm_per = 1.0;
+        bool y_unit = false;
+        bool z_unit = false;
         for (std::size_t k = 0; k < cells.size(); ++k) {
           const AxisColumn c = axis_column(cells[k], source_name, line_no);
           if (c.axis == 'y' && y_at == none) {
             y_at = k;
             y_mm_per = c.mm_per_unit;
+            y_unit = c.other_unit;
           } else if (c.axis == 'z' && z_at == none) {
             z_at = k;
             z_mm_per = c.mm_per_unit;
+            z_unit = c.other_unit;
           }
+        }
+        if ((y_at < none) != (z_at < none) && (y_unit || z_unit)) {
+          host::text::fail_at(source_name, line_no,
+                              std::string("the header gives the unit of ") + (y_unit ? "y" : "z") +
+                                  " but names no " + (y_unit ? "z" : "y") + " column: '" +
+                                  std::string(text) + "'");
         }
         if (y_at < none && z_at < none) {
           y_col = y_at;

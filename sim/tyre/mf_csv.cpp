@@ -187,7 +187,8 @@ bool check_range(const EvalSetup& setup, const InputRow& row, std::array<Tally, 
                               hint(setup.table, l, v));
     }
     if (out[i].rows++ == 0) out[i].first_line = row.line;
-    any = true;
+    // A load of 0 or less is a wheel off the ground (no forces), not a clamped input.
+    any = any || !(l.quantity == InputQuantity::fz && v <= 0.0);
   }
   return any;
 }
@@ -236,7 +237,8 @@ char* format_row(const EvalSetup& setup, const InputRow& row, const mf::MfOutput
                  char* p) {
   constexpr auto members = eval_output_members<T>();
   const std::array<EvalColumn, kEvalColumnCount>& columns = eval_columns();
-  const bool ok = result.status == Status::ok;
+  // The statuses under which every number must be finite: ok, and out of range (clamped inputs).
+  const bool ok = result.status == Status::ok || result.status == Status::out_of_range;
   // The text of each input written in this row: an output that repeats it to the bit (kappa_1
   // and in_kappa, ...) copies it instead of formatting it again.
   std::array<const char*, kEvalInputColumns> input_text{};
@@ -261,13 +263,14 @@ char* format_row(const EvalSetup& setup, const InputRow& row, const mf::MfOutput
       continue;
     }
     if (ok && !std::isfinite(v)) {
-      // Never a NaN or Inf under status ok. The core already writes a non-finite output as 0
+      // Never a NaN or Inf under status ok (or out of range). The core already writes a non-finite output as 0
       // with Status::non_finite; this is the last check where numbers leave the program.
       char number[host::kShortestNumberRoom];
       char* end = host::write_shortest(number, v);
       throw tir::TirError(setup.in_name, row.line,
                           std::string(columns[c].name) + " = " + std::string(number, end) +
-                              " under status ok: the tyre's parameters give no finite "
+                              " under status " + to_string(result.status) +
+                              ": the tyre's parameters give no finite "
                               "result for this row (check the .tir for zero or missing "
                               "stiffnesses and radii)");
     }

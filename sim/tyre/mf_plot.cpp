@@ -47,11 +47,7 @@ std::string clamped_load(const mf::MfParameters<double>& params, const mf::MfOpt
     std::snprintf(text, sizeof text, "FZMAX %.0f N", params.fzmax_n);
     return text;
   }
-  if (fz_n < params.fzmin_n) {
-    std::snprintf(text, sizeof text, "FZMIN %.0f N", params.fzmin_n);
-    return text;
-  }
-  return {};
+  return {};  // below FZMIN the forces are not clamped (only Mz's trail takes FZMIN)
 }
 
 std::string mf_plot_script(const mf::MfParameters<double>& p, const mf::MfOptions& options,

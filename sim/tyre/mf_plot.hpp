@@ -25,9 +25,9 @@ struct MfPlotOptions {
 /// The loads drawn: `loads_n`, or `load_factors` × FNOMIN.
 std::vector<double> plot_loads(const mf::MfParameters<double>& params, const MfPlotOptions& plot);
 
-/// For a load outside FZMIN…FZMAX with the limits on (where the model evaluates the bound
-/// instead): the bound's name and value, e.g. "FZMAX 30578 N"; empty otherwise. The legend
-/// names it beside the load, and `tread mf plot` warns.
+/// For a load above FZMAX with the limits on (where the model evaluates FZMAX instead): "FZMAX"
+/// and its value, e.g. "FZMAX 30578 N"; empty otherwise (below FZMIN the forces are not clamped).
+/// The legend names it beside the load, and `tread mf plot` warns.
 std::string clamped_load(const mf::MfParameters<double>& params, const mf::MfOptions& options,
                          double fz_n);
 

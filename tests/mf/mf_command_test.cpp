@@ -269,17 +269,17 @@ TEST(MfCommand, PlotSaysWhichLoadsAreDrawnAtFzmax) {
   ASSERT_EQ(run("mf plot --tir " + tir.string() + " --output " + png.string(), dir / "plot.txt"), 0)
       << slurp(dir / "plot.txt");
   const std::string err = slurp(dir / "plot.txt");
-  EXPECT_NE(err.find("Fz = 43348 N lies outside the tyre's load range: its curves are drawn at "
+  EXPECT_NE(err.find("Fz = 43348 N lies above the tyre's load range: its curves are drawn at "
                      "FZMAX 30578 N"),
             std::string::npos)
       << err;
-  EXPECT_EQ(err.find("Fz = 21674 N lies outside"), std::string::npos) << err;
+  EXPECT_EQ(err.find("Fz = 21674 N lies above"), std::string::npos) << err;
   const std::string svg = slurp(dir / "feda.svg");
   EXPECT_NE(svg.find("Fz = 43348 N (at FZMAX 30578 N)"), std::string::npos);
   ASSERT_EQ(run("mf plot --mode 211 --tir " + tir.string() + " --output " + png.string(),
                 dir / "plot211.txt"),
             0);
-  EXPECT_EQ(slurp(dir / "plot211.txt").find("outside the tyre's load range"), std::string::npos);
+  EXPECT_EQ(slurp(dir / "plot211.txt").find("above the tyre's load range"), std::string::npos);
 }
 
 TEST(MfCommand, PlotWritesPngAndSvg) {
@@ -409,7 +409,7 @@ TEST(MfCommand, RowsClampedAtTheLimitsSayOutOfRange) {
   // FZMAX 18000 N, KPUMAX 1, CAMMAX 0.105 rad in the sample file.
   write(in,
         "Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps\n4000,0.05,0.02,0,16\n30000,0.05,0.02,0,16\n"
-        "4000,5,0.02,0,16\n4000,0.05,0.02,0.5,16\n6000,-0.1,-0.05,0.01,16\n");
+        "4000,5,0.02,0,16\n4000,0.05,0.02,0.5,16\n6000,-0.1,-0.05,0.01,16\n0,0.05,0.02,0,16\n");
   const auto statuses = [&](const std::string& args) {
     const auto out = dir / "limits_out.csv";
     std::filesystem::remove(out);
@@ -426,13 +426,14 @@ TEST(MfCommand, RowsClampedAtTheLimitsSayOutOfRange) {
     }
     return status;
   };
-  const std::vector<std::string> clamped{"ok", "out of range", "out of range", "out of range",
-                                         "ok"};
+  // The last row's wheel is off the ground (Fz = 0, below FZMIN): no forces, not clamped.
+  const std::vector<std::string> clamped{"ok",           "out of range", "out of range",
+                                         "out of range", "ok",           "ok"};
   for (const char* args : {"", "--float", "--batch", "--fixed", "--columns Fx_N,Fy_N,Mz_Nm"}) {
     EXPECT_EQ(statuses(args), clamped) << args;
   }
   const std::vector<std::string> unclamped = statuses("--mode 211 --columns Fx_N");
-  ASSERT_EQ(unclamped.size(), 5U);
+  ASSERT_EQ(unclamped.size(), 6U);
   EXPECT_EQ(unclamped[1], "ok");
 }
 

@@ -101,7 +101,12 @@ TEST(ProfileCsv, TolerantHeaderUnitsAreConvertedToMillimetres) {
         "z [m]; y [m]\n0.001;-0.01\n0.0005;0.02\n0.00025;0.06\n",
         "Y(cm)\tZ(mm)\n-1\t1\n2\t0.5\n6\t0.25\n",
         "z[m];y[m]\n0.001;-0.01\n0.0005;0.02\n0.00025;0.06\n", "y,z\n-10,1\n20,0.5\n60,0.25\n",
-        "x,y\n-10,1\n20,0.5\n60,0.25\n", "y/mm z/mm extra\n-10 1 7\n20 0.5 7\n60 0.25 7\n"}) {
+        "x,y\n-10,1\n20,0.5\n60,0.25\n", "y/mm z/mm extra\n-10 1 7\n20 0.5 7\n60 0.25 7\n",
+        // A suffix that is no unit names no axis: the first two columns, in mm.
+        "y,z,y_err\n-10,1,0\n20,0.5,0\n60,0.25,0\n", "y_wheel,z_wheel\n-10,1\n20,0.5\n60,0.25\n",
+        "y / mm, z / mm\n-10,1\n20,0.5\n60,0.25\n",
+        "\"y_m\",\"z_m\"\n-0.01,0.001\n0.02,0.0005\n0.06,0.00025\n",
+        "y_\u03bcm,z_\u00b5m\n-10000,1000\n20000,500\n60000,250\n"}) {
     SCOPED_TRACE(text);
     const SampledProfile p = read(text);
     ASSERT_EQ(p.y_mm.size(), 3u);
@@ -115,11 +120,18 @@ TEST(ProfileCsv, TolerantHeaderUnitsAreConvertedToMillimetres) {
   EXPECT_DOUBLE_EQ(in.y_mm[1], 25.4);
   EXPECT_DOUBLE_EQ(in.z_mm[1], 12.7);
   try {
-    (void)read("# a comment\ny_ft,z_ft\n0,0\n1,1\n");
+    (void)read("# a comment\ny [ft],z [ft]\n0,0\n1,1\n");
     ADD_FAILURE() << "no error";
   } catch (const std::runtime_error& e) {
     EXPECT_STREQ(e.what(),
-                 "h:2: column 'y_ft': unit 'ft' not known for a profile (mm, m, cm, in, um)");
+                 "h:2: column 'y[ft]': unit 'ft' not known for a profile (mm, m, cm, in, um)");
+  }
+  try {
+    (void)read("Y(in),height\n0,0\n1,1\n");
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(),
+                 "h:1: the header gives the unit of y but names no z column: 'Y(in),height'");
   }
 }
 
