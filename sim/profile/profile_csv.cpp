@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <fstream>
 #include <iomanip>
 #include <ostream>
@@ -129,6 +130,8 @@ ProfilePoints read_profile_csv_points(std::istream& in, const std::string& sourc
       if (y_it != fields.end() && z_it != fields.end()) {
         y_col = static_cast<std::size_t>(y_it - fields.begin());
         z_col = static_cast<std::size_t>(z_it - fields.begin());
+        points.header = {{"y", "column " + std::to_string(y_col + 1) + " 'y_mm'"},
+                         {"z", "column " + std::to_string(z_col + 1) + " 'z_mm'"}};
         n_cols = fields.size();
         have_header = true;
         continue;
@@ -184,6 +187,14 @@ ProfilePoints read_profile_csv_points(std::istream& in, const std::string& sourc
           z_col = z_at;
           y_scale = y_mm_per;
           z_scale = z_mm_per;
+          const auto used = [&](std::size_t at, bool converted, double mm_per) {
+            char factor[32];
+            std::snprintf(factor, sizeof factor, "%g", mm_per);
+            return "column " + std::to_string(at + 1) + " '" + cells[at] + "'" +
+                   (converted ? std::string(", × ") + factor + " to mm" : std::string(", mm"));
+          };
+          points.header = {{"y", used(y_at, y_unit, y_mm_per)},
+                           {"z", used(z_at, z_unit, z_mm_per)}};
           n_cols = std::max(y_at, z_at) + 1;
         }
         have_header = true;

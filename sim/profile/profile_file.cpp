@@ -583,6 +583,7 @@ ProfileFile read_profile_file(const std::filesystem::path& path, ProfileRole rol
     case ProfileFormat::kCsv:
     case ProfileFormat::kAuto:
       points = read_profile_csv_points(in, file, CsvDialect::kTolerant);
+      out.header = points.header;
       break;
   }
   out.points_read = points.y_mm.size();

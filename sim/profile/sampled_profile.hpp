@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace tread::profile {
@@ -23,6 +24,8 @@ struct ProfilePoints {
   std::vector<double> y_mm;
   std::vector<double> z_mm;
   std::vector<std::size_t> line;  ///< same size as y_mm
+  /// What a CSV header named and the reader used: ("y", "column 'y_m', m → mm"), ...
+  std::vector<std::pair<std::string, std::string>> header;
 };
 
 }  // namespace tread::profile

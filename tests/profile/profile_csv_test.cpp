@@ -116,6 +116,15 @@ TEST(ProfileCsv, TolerantHeaderUnitsAreConvertedToMillimetres) {
     }
   }
   EXPECT_THROW((void)read("y_m,z_m\n1e306,0\n2e306,1\n"), std::runtime_error);  // inf in mm
+  {  // what the header named is reported (tread profile --input's "fields used")
+    std::istringstream text("Z [m]; Y [m]\n0.001;-0.01\n0.0005;0.12\n");
+    const ProfilePoints p = read_profile_csv_points(text, "h", CsvDialect::kTolerant);
+    ASSERT_EQ(p.header.size(), 2u);
+    EXPECT_EQ(p.header[0],
+              (std::pair<std::string, std::string>{"y", "column 2 'Y[m]', × 1000 to mm"}));
+    EXPECT_EQ(p.header[1],
+              (std::pair<std::string, std::string>{"z", "column 1 'Z[m]', × 1000 to mm"}));
+  }
   const SampledProfile in = read("y_in,z_in\n0,0\n1,0.5\n");
   EXPECT_DOUBLE_EQ(in.y_mm[1], 25.4);
   EXPECT_DOUBLE_EQ(in.z_mm[1], 12.7);
