@@ -263,8 +263,9 @@ char* format_row(const EvalSetup& setup, const InputRow& row, const mf::MfOutput
       continue;
     }
     if (ok && !std::isfinite(v)) {
-      // Never a NaN or Inf under status ok (or out of range). The core already writes a non-finite output as 0
-      // with Status::non_finite; this is the last check where numbers leave the program.
+      // Never a NaN or Inf under status ok (or out of range). The core already writes a
+      // non-finite output as 0 with Status::non_finite; this is the last check where numbers
+      // leave the program.
       char number[host::kShortestNumberRoom];
       char* end = host::write_shortest(number, v);
       throw tir::TirError(setup.in_name, row.line,
