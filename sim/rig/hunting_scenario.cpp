@@ -22,7 +22,9 @@ HuntingScenario::HuntingScenario(const HuntingSettings& settings) : settings_(se
       contact::build_contact(setup).table(-settings_.ymax_mm, settings_.ymax_mm, settings_.step_mm);
   WheelsetHuntingParams p;
   p.speed_mps = settings_.speed_mps;
-  p.r0_mm = setup.r0_mm;
+  // The wheelset given: r0 the mean of its wheels' nominal radii, e0 = b2b/2 + 70 mm.
+  p.r0_mm = contact::nominal_r0_mm(setup);
+  p.e0_mm = contact::half_contact_base_mm(setup);
   // The centre of the oscillation (EN 15302 Annex B: midway between its turning points; an
   // asymmetric pair need not oscillate about 0 nor about the root of delta r).
   centre_mm_ = contact::equivalent_conicity(reference_, settings_.amplitude_mm[0]).centre_y_mm;

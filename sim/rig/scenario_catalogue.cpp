@@ -72,13 +72,19 @@ std::unique_ptr<RigScenario> make_scenario(const std::string& name,
     setup.friction = context.friction;
     setup.mu = context.mu;
     setup.materials = context.materials;
+    // e0 of the wheelset given (b2b/2 + 70 mm), not the standard gauge's 0.75 m.
+    const double e0_m =
+        contact::half_contact_base_mm(contact::parse_wheelset_profile(setup.wheelset_profile)) /
+        1000.0;
     if (name == "curving") {
       CurvingSettings s;
       s.setup = setup;
+      s.params.half_contact_base_m = e0_m;
       return std::make_unique<CurvingScenario>(s);
     }
     DynamicHuntingSettings s;
     s.setup = setup;
+    s.params.half_contact_base_m = e0_m;
     return std::make_unique<DynamicHuntingScenario>(s);
   }
   std::string known;

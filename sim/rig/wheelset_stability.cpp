@@ -52,8 +52,8 @@ WheelsetContactModel::WheelsetContactModel(const contact::RigidContact& contact,
     : WheelsetContactModel(
           contact, setup.materials, contact::friction_parameters(setup.friction, setup.mu),
           centred_radius_mm(contact), params.wheel_load_n, params.half_contact_base_m,
-          contact::flange_angles(contact::mechanics_table(contact, -setup.ymax_mm, setup.ymax_mm,
-                                                          setup.step_mm, setup.materials))) {}
+          // The profiles' flange angle, not the largest one the table's ±ymax reaches.
+          contact::profile_flange_angles(contact, setup.ymax_mm)) {}
 
 rail::Vector2<double> WheelsetContactModel::force(const rail::WheelsetState<double>& s,
                                                   double speed_m_s) const {

@@ -1,5 +1,6 @@
 #include "runtime/node_runtime.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -8,7 +9,8 @@
 
 namespace tread::host {
 
-void NodeRuntime::build_forces(const contact::RigidContact& contact, const NodeSettings& settings,
+void NodeRuntime::build_forces(const contact::RigidContact& contact,
+                               const contact::ContactSetup& setup, const NodeSettings& settings,
                                double y_first_mm, double y_last_mm, double step_mm) {
   const std::vector<contact::MechanicsRow> table =
       contact::mechanics_table(contact, y_first_mm, y_last_mm, step_mm, settings.materials);
@@ -16,7 +18,10 @@ void NodeRuntime::build_forces(const contact::RigidContact& contact, const NodeS
   mechanics_ = rail::MechanicsTableF32{static_cast<float>(y_first_mm), static_cast<float>(step_mm),
                                        static_cast<std::uint32_t>(mechanics_rows_.size()),
                                        mechanics_rows_.data()};
-  const contact::FlangeAngles flange = contact::flange_angles(table);
+  // Nadal's limit takes the profiles' flange angle, not the largest angle the table's range
+  // happens to reach (the default ±12 mm table can stop short of the flange's steepest point).
+  const contact::FlangeAngles flange =
+      contact::profile_flange_angles(contact, std::max(std::abs(y_first_mm), std::abs(y_last_mm)));
   const rail::PolachParameters<double> p =
       contact::friction_parameters(settings.friction, settings.mu);
   force_settings_.g_mpa = static_cast<float>(settings.materials.g_mpa());
@@ -28,7 +33,8 @@ void NodeRuntime::build_forces(const contact::RigidContact& contact, const NodeS
   // A free axle spins so that it rolls without longitudinal creep at the centred position.
   const contact::ContactState centred = contact.at(0.0);
   force_settings_.r0_mm = static_cast<float>(0.5 * (centred.left.r_mm + centred.right.r_mm));
-  force_settings_.half_contact_base_mm = static_cast<float>(contact::kTrackFrameOrigin_mm);
+  // e0 follows the wheelset given (b2b/2 + 70 mm), as in `tread contact --load`.
+  force_settings_.half_contact_base_mm = static_cast<float>(contact::half_contact_base_mm(setup));
   for (auto& f : forces_) {
     f = node::RailForceTableChannel(mechanics_, force_settings_);
   }
@@ -74,8 +80,8 @@ NodeRuntime::NodeRuntime(const NodeSettings& settings) {
     if (settings.wheelset_profile.empty()) {
       throw std::runtime_error("wheelsets need --wheelset-profile (e.g. wheel=S1002,rail=60E1)");
     }
-    const contact::RigidContact contact =
-        contact::build_contact(parse_wheelset_profile(settings.wheelset_profile));
+    const contact::ContactSetup setup = parse_wheelset_profile(settings.wheelset_profile);
+    const contact::RigidContact contact = contact::build_contact(setup);
     const contact::ContactTable t = contact.table(
         -settings.wheelset_ymax_mm, settings.wheelset_ymax_mm, settings.wheelset_step_mm);
     const std::size_t n = t.y_mm.size();
@@ -123,7 +129,7 @@ NodeRuntime::NodeRuntime(const NodeSettings& settings) {
         throw std::runtime_error(
             "wheel-rail forces (--wheelset-forces) run in float only, not with --fixed");
       }
-      build_forces(contact, settings, t.y_first_mm, t.y_mm.back(), t.y_step_mm);
+      build_forces(contact, setup, settings, t.y_first_mm, t.y_mm.back(), t.y_step_mm);
     }
     for (auto& c : contacts_fixed_) {
       c = node::ContactTableChannelFixed(table_q_);

@@ -86,8 +86,9 @@ class NodeRuntime {
   [[nodiscard]] const node::RailForceSettings& force_settings() const { return force_settings_; }
 
  private:
-  void build_forces(const contact::RigidContact& contact, const NodeSettings& settings,
-                    double y_first_mm, double y_last_mm, double step_mm);
+  void build_forces(const contact::RigidContact& contact, const contact::ContactSetup& setup,
+                    const NodeSettings& settings, double y_first_mm, double y_last_mm,
+                    double step_mm);
 
   mf::MfParameters<double> params_double_{};
   mf::MfParameters<float> params_{};

@@ -9,7 +9,6 @@
 
 #include "contact/contact_mechanics.hpp"
 #include "contact/contact_setup.hpp"
-#include "contact/rail_placement.hpp"
 #include "proto/rig_link.hpp"
 #include "runtime/node_runtime.hpp"
 
@@ -17,14 +16,17 @@ namespace tread {
 namespace {
 
 constexpr std::int64_t kMs = 1'000'000;
+constexpr const char* kStandard = "wheel=S1002,rail=60E1,cant=1:40";
+// Metre gauge: e0 = 925/2 + 70 = 532.5 mm, not the standard wheelset's 750 mm.
+constexpr const char* kMetre = "wheel=S1002,rail=60E1,cant=1:40,gauge=1000,b2b=925";
 
-host::NodeSettings settings(proto::Layout layout) {
+host::NodeSettings settings(proto::Layout layout, const char* spec) {
   host::NodeSettings s;
   s.node.layout = layout;
   s.node.wheels = 0;
   s.node.wheelsets = 2;
   s.node.wheelset_forces = 2;
-  s.wheelset_profile = "wheel=S1002,rail=60E1,cant=1:40";
+  s.wheelset_profile = spec;
   s.wheelset_ymax_mm = 10.0;
   return s;
 }
@@ -41,8 +43,8 @@ proto::WheelsetInput motion(float y_mm, float yaw, float v, float q_left, float 
 }
 
 struct NodeRun {
-  explicit NodeRun(proto::Layout layout, std::uint8_t forces_sent = 2)
-      : runtime(settings(layout)), rig(layout, 0, 2, forces_sent) {}
+  explicit NodeRun(proto::Layout layout, std::uint8_t forces_sent = 2, const char* spec = kStandard)
+      : runtime(settings(layout, spec)), rig(layout, 0, 2, forces_sent) {}
 
   proto::NodeData cycle(std::int64_t now_ns, const proto::RigData& data) {
     std::array<proto::CanFrame, proto::RigLink::kMaxRigFrames> frames{};
@@ -66,45 +68,52 @@ struct NodeRun {
   std::size_t tx_count = 0;
 };
 
-/// The host's double evaluation of the same wheelset state (sim/contact).
-rail::WheelForces<double> reference(bool right, const proto::WheelsetInput& in) {
-  const contact::RigidContact c =
-      contact::build_contact(host::parse_wheelset_profile("wheel=S1002,rail=60E1,cant=1:40"));
+/// The host's double evaluation of the same wheelset state (sim/contact), with the wheelset's own
+/// e0 (b2b/2 + 70 mm) and the profiles' flange angle (not the steepest within the table's 10 mm).
+rail::WheelForces<double> reference(bool right, const proto::WheelsetInput& in,
+                                    const char* spec = kStandard) {
+  const contact::ContactSetup setup = host::parse_wheelset_profile(spec);
+  const contact::RigidContact c = contact::build_contact(setup);
   const contact::ContactMaterials m;
   const contact::MechanicsRow row = contact::mechanics_row(c.at(in.lateral_mm), m);
-  const std::vector<contact::MechanicsRow> table = contact::mechanics_table(c, -10.0, 10.0, 0.1, m);
-  const contact::FlangeAngles flange = contact::flange_angles(table);
+  const contact::FlangeAngles flange = contact::profile_flange_angles(c, 10.0);
   contact::WheelsetState state;
   state.speed_m_s = in.speed_mps;
   state.yaw_rad = in.yaw_rad;
+  state.lateral_velocity_m_s = in.lateral_velocity_mps;
+  state.yaw_rate_rad_s = in.yaw_rate_radps;
   state.load_left_n = in.load_left_n;
   state.load_right_n = in.load_right_n;
   // The node's axle spins at V / r with r the mean rolling radius at y = 0.
-  static const double r_spin = 0.5 * (c.at(0.0).left.r_mm + c.at(0.0).right.r_mm);
+  const double r_spin = 0.5 * (c.at(0.0).left.r_mm + c.at(0.0).right.r_mm);
   return contact::evaluate_wheel(right ? row.right : row.left, right, state, r_spin,
-                                 contact::kTrackFrameOrigin_mm, m,
+                                 contact::half_contact_base_mm(setup), m,
                                  right ? flange.right_rad : flange.left_rad,
                                  contact::friction_parameters("kalker"), contact::CreepLaw::polach);
 }
 
 class RailForceNode : public ::testing::TestWithParam<proto::Layout> {};
 
-TEST_P(RailForceNode, ServesTheHostsForcesWithinTheSignalSteps) {
-  NodeRun run(GetParam());
+void expect_the_hosts_forces(proto::Layout layout, const char* spec) {
+  NodeRun run(layout, 2, spec);
   // Table rows are every 0.1 mm: pick y on a row so interpolation adds nothing.
   for (const float y : {-6.0F, -2.0F, 0.0F, 1.5F, 4.0F, 7.0F}) {
     proto::RigData d;
     d.wheelsets[0] = motion(y, 0.002F, 30.0F, 80000.0F, 76000.0F);
     d.wheelsets[1] = motion(-y, -0.001F, 30.0F, 70000.0F, 72000.0F);
+    // A yaw rate makes e0 count: the longitudinal creepage holds e0 psi' / V.
+    d.wheelsets[0].yaw_rate_radps = 0.02F;
+    d.wheelsets[0].lateral_velocity_mps = 0.01F;
+    d.wheelsets[1].yaw_rate_radps = -0.015F;
     proto::NodeData out{};
     for (int c = 1; c <= 3; ++c) {
       out = run.cycle(c * kMs, d);
     }
-    EXPECT_EQ(run.tx_count, GetParam() == proto::Layout::classic ? 17U : 4U);
+    EXPECT_EQ(run.tx_count, layout == proto::Layout::classic ? 17U : 4U);
     for (std::size_t j = 0; j < 2; ++j) {
       for (std::size_t side = 0; side < 2; ++side) {
         const proto::RailWheelOutput& o = out.rail_wheels[2 * j + side];
-        const rail::WheelForces<double> r = reference(side == 1, d.wheelsets[j]);
+        const rail::WheelForces<double> r = reference(side == 1, d.wheelsets[j], spec);
         const double q = side == 0 ? d.wheelsets[j].load_left_n : d.wheelsets[j].load_right_n;
         const double tol = 2e-3 * q + 8.0;  // float vs double, and the 8 N signal step
         EXPECT_EQ(o.status, 0U) << "y " << y << " wheelset " << j << " side " << side;
@@ -121,6 +130,15 @@ TEST_P(RailForceNode, ServesTheHostsForcesWithinTheSignalSteps) {
       }
     }
   }
+}
+
+TEST_P(RailForceNode, ServesTheHostsForcesWithinTheSignalSteps) {
+  expect_the_hosts_forces(GetParam(), kStandard);
+}
+
+// The creepages take the wheelset's own e0 (a yawed, lateral-moving metre-gauge axle).
+TEST_P(RailForceNode, MetreGaugeWheelsetUsesItsOwnContactBase) {
+  expect_the_hosts_forces(GetParam(), kMetre);
 }
 
 TEST_P(RailForceNode, ForcesGoStaleWithoutTheirInputsWhileTheGeometryGoesOn) {

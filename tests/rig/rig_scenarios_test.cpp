@@ -51,12 +51,13 @@ Csv read_csv(const std::filesystem::path& p) {
 }
 
 TEST(RigScenarios, HuntingWavelengthMatchesKlingelAtTheEquivalentConicity) {
-  // Two wheel/rail pairs, two amplitudes each (the two wheelsets): the wavelength of the motion
+  // Three wheel/rail pairs, two amplitudes each (the two wheelsets): the wavelength of the motion
   // driven by the node's delta r over CAN against Klingel's formula with the EN 15302 equivalent
   // conicity (Annex B, computed by the rig from its own table in double) at the measured
-  // amplitude.
+  // amplitude, and the wheelset's own e0 = b2b/2 + 70 mm and r0 (metre gauge: 532.5 mm, 440 mm).
   for (const std::string profile :
-       {"wheel=S1002,rail=60E1,cant=1:40", "wheel=S1002,rail=60E1,cant=1:20"}) {
+       {"wheel=S1002,rail=60E1,cant=1:40", "wheel=S1002,rail=60E1,cant=1:20",
+        "wheel=S1002,rail=60E1,cant=1:40,gauge=1000,b2b=925,r0=440"}) {
     const DemoResult r = run_demo(demo_settings({"hunting"}, "hunting", profile));
     const ScenarioOutcome* o = find_outcome(r, "hunting");
     ASSERT_NE(o, nullptr);
@@ -68,10 +69,12 @@ TEST(RigScenarios, HuntingWavelengthMatchesKlingelAtTheEquivalentConicity) {
       const double amplitude_mm = metric(*o, w + "amplitude");
       ASSERT_TRUE(std::isfinite(wavelength_m)) << profile;
       // Independently of the scenario's own figure: the conicity from a fresh table.
-      const contact::ContactTable table =
-          contact::build_contact(parse_wheelset_profile(profile)).table(-12.0, 12.0, 0.1);
+      const contact::ContactSetup setup = parse_wheelset_profile(profile);
+      const contact::ContactTable table = contact::build_contact(setup).table(-12.0, 12.0, 0.1);
       const double tan_gamma_e = contact::equivalent_conicity(table, amplitude_mm).tan_gamma_e;
-      const double klingel_m = contact::klingel_wavelength_mm(tan_gamma_e, 460.0, 750.0) / 1000.0;
+      const double e0_mm = 0.5 * setup.back_to_back_mm + 70.0;
+      const double klingel_m =
+          contact::klingel_wavelength_mm(tan_gamma_e, setup.r0_mm, e0_mm) / 1000.0;
       EXPECT_NEAR(wavelength_m / klingel_m, 1.0, 0.02)
           << profile << " wheelset " << j << ": " << wavelength_m << " m vs Klingel " << klingel_m
           << " m at tan(gamma_e) " << tan_gamma_e << ", amplitude " << amplitude_mm;
