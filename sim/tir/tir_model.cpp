@@ -104,6 +104,28 @@ std::string mf50_note(const TirFile& file, const std::string& what) {
   return note;
 }
 
+/// The Magic Formula generation a PROPERTY_FILE_FORMAT names ("5", "6.1", "6.2"), or empty.
+std::string_view version_named_by(const std::string& format) {
+  for (const std::string_view f :
+       {"PAC2002", "PAC-2002", "PAC_2002", "MF52", "MF_05", "MF-05", "MF5"}) {
+    if (format == f) return "MF 5.x / PAC2002";
+  }
+  if (format == "MF61") return "MF 6.1";
+  if (format == "MF62") return "MF 6.2";
+  return {};
+}
+
+std::string_view version_group(TirModel model) {
+  switch (model) {
+    case TirModel::kMf61:
+      return "MF 6.1";
+    case TirModel::kMf62:
+      return "MF 6.2";
+    default:
+      return "MF 5.x / PAC2002";
+  }
+}
+
 [[noreturn]] void not_mf(const TirFile& file, const Entry* at, const std::string& reason) {
   throw TirError(file.origin(), at != nullptr ? at->line : 0,
                  "not a Magic Formula file: " + reason);
@@ -197,6 +219,13 @@ DetectedModel detect_model(const TirFile& file) {
     d.name = std::string(row.name);
     d.keys = row.keys;
     if (row.model == TirModel::kMf50) d.note = mf50_note(file, "FITTYP 5 (MF-Tyre 5.0)");
+    const std::string_view named = version_named_by(format);
+    if (!named.empty() && named != version_group(row.model)) {
+      d.note += std::string(d.note.empty() ? "" : "; ") + "PROPERTY_FILE_FORMAT '" +
+                format_entry->value + "' names " + std::string(named) + " but FITTYP " +
+                std::to_string(code) + " is " + d.name + ": evaluated as " + d.name +
+                " (FITTYP decides)";
+    }
     if (!known_format) {
       d.note += std::string(d.note.empty() ? "" : "; ") + "unknown PROPERTY_FILE_FORMAT '" +
                 format_entry->value + "': read as " + d.name + " from FITTYP";

@@ -9,6 +9,7 @@
 #include "tir/tir_model.hpp"
 #include "tir/tir_units.hpp"
 #include "tyre/mf_parameter_checks.hpp"
+#include "tyre/mf_unmodelled_keys.hpp"
 
 namespace tread::tyre {
 
@@ -108,6 +109,7 @@ MfTirParameters mf_parameters_from_tir(const tir::TirFile& file) {
   result.params.tyre_side =
       side && upper(*side) == "RIGHT" ? mf::TyreSide::right : mf::TyreSide::left;
   check_mf_parameters(result.params, file, result.warning);
+  warn_unmodelled_keys(file, model.name, result.warning);
   return result;
 }
 

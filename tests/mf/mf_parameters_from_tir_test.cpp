@@ -199,3 +199,86 @@ TEST(MfParametersFromTir, NonNumericValueIsAnError) {
 
 }  // namespace
 }  // namespace tread::mf
+
+namespace tread::mf {
+namespace {
+
+// A file's nonzero coefficient that tread's model lacks is named with its line and the value the
+// outputs are for; a neutral one, a transient-only one and a text value are not.
+TEST(MfParametersFromTir, CoefficientsOutsideTheModelAreNamed) {
+  const tir::TirFile f = tir::parse_tir(
+      "[MODEL]\n"                  // 1
+      "FITTYP = 61\n"              // 2
+      "[VERTICAL]\n"               // 3
+      "FNOMIN = 4000\n"            // 4
+      "Q_FZ3 = 0.15\n"             // 5: camber on the vertical stiffness
+      "Q_FZ1 = 9.9\n"              // 6: derived by tread, as by MFeval
+      "BOTTOM_STIFF = 2e6\n"       // 7: bottoming, not steady state
+      "[SCALING_COEFFICIENTS]\n"   // 8
+      "LMUV = 0.2\n"               // 9: friction decay with slip speed
+      "LGYR = 3\n"                 // 10: gyroscopic (transient)
+      "LXAL = 1\n"                 // 11: a known key
+      "LNEW = 1\n"                 // 12: unknown but neutral
+      "LOTHER = 0.5\n"             // 13: unknown, not neutral
+      "[ALIGNING_COEFFICIENTS]\n"  // 14
+      "QBZ1 = 10\n"                // 15
+      "QBZ6 = 0\n"                 // 16: unknown, neutral
+      "QBZ7 = -0.1\n"              // 17: unknown, not neutral
+      "QNOTE = 'text'\n"           // 18: text
+      "[LATERAL_COEFFICIENTS]\n"   // 19
+      "PCY1 = 1.3\n"               // 20
+      "[STRUCTURAL]\n"             // 21
+      "PCMZ1 = 0.5\n",             // 22: structural: transient
+      "u.tir");
+  const tyre::MfTirParameters r = tyre::mf_parameters_from_tir(f);
+  for (const char* expected :
+       {"u.tir:5: Q_FZ3 = 0.15 is not in tread's MF 6.1 model (vertical stiffness change with "
+        "camber): the outputs are those of Q_FZ3 = 0",
+        "u.tir:9: LMUV = 0.2 is not in tread's MF 6.1 model (friction decay with slip speed): the "
+        "outputs are those of LMUV = 0",
+        "u.tir:13: LOTHER = 0.5 is not in tread's MF 6.1 model ([SCALING_COEFFICIENTS]: a key "
+        "tread does not know): the outputs are those of LOTHER = 1",
+        "u.tir:17: QBZ7 = -0.1 is not in tread's MF 6.1 model ([ALIGNING_COEFFICIENTS]: a key "
+        "tread does not know): the outputs are those of QBZ7 = 0"}) {
+    EXPECT_NE(r.warning.find(expected), std::string::npos) << expected << "\nin:\n" << r.warning;
+  }
+  for (const char* quiet : {"Q_FZ1", "BOTTOM_STIFF", "LGYR", "LXAL", "LNEW", "QBZ6", "QNOTE",
+                            "PCMZ1", "QBZ1", "PCY1"}) {
+    EXPECT_EQ(r.warning.find(std::string(quiet) + " = "), std::string::npos) << quiet;
+  }
+}
+
+// The shipped files carry only neutral or transient-only extras: no such warning.
+TEST(MfParametersFromTir, ShippedFilesHaveNoCoefficientsOutsideTheModel) {
+  for (const char* name :
+       {"MagicFormula52_Parameters.tir", "MagicFormula61_Parameters.tir",
+        "MagicFormula62_Parameters.tir", "PacejkaBook_Defaults.tir", "reference_tire_tvd3.tir",
+        "chrono_Sedan_Pac02Tire.tir", "chrono_VW_mf_185_80R14_PAC2002.tir",
+        "chrono_feda_335_65R22_5_G275MSA_60psi.tir"}) {
+    const tyre::MfTirParameters r = tyre::load_mf_parameters(testing::tyre_file(name));
+    EXPECT_EQ(r.warning.find("is not in tread's"), std::string::npos) << name << ": " << r.warning;
+  }
+}
+
+// A PROPERTY_FILE_FORMAT that names another generation than FITTYP: FITTYP decides, and says so.
+TEST(MfParametersFromTir, FormatNamingAnotherVersionThanFittypIsSaid) {
+  const tir::TirFile f = tir::parse_tir(
+      "[MODEL]\nPROPERTY_FILE_FORMAT = 'PAC2002'\nFITTYP = 61\n[VERTICAL]\nFNOMIN = 4000\n"
+      "[LATERAL_COEFFICIENTS]\nPCY1 = 1.3\n",
+      "v.tir");
+  const tyre::MfTirParameters r = tyre::mf_parameters_from_tir(f);
+  EXPECT_EQ(r.params.fit_type, FitType::mf61);
+  EXPECT_NE(r.warning.find("PROPERTY_FILE_FORMAT 'PAC2002' names MF 5.x / PAC2002 but FITTYP 61 "
+                           "is MF 6.1: evaluated as MF 6.1 (FITTYP decides)"),
+            std::string::npos)
+      << r.warning;
+  // The same generation: nothing said.
+  const tyre::MfTirParameters same = tyre::mf_parameters_from_tir(tir::parse_tir(
+      "[MODEL]\nPROPERTY_FILE_FORMAT = 'PAC2002'\nFITTYP = 6\n[VERTICAL]\nFNOMIN = 4000\n"
+      "[LATERAL_COEFFICIENTS]\nPCY1 = 1.3\n",
+      "w.tir"));
+  EXPECT_EQ(same.warning.find("FITTYP decides"), std::string::npos) << same.warning;
+}
+
+}  // namespace
+}  // namespace tread::mf
