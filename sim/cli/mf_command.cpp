@@ -116,6 +116,7 @@ void run_mf_eval(const MfEvalArgs& args) {
     for (const std::string& c : report.ignored) std::cerr << " '" << c << "'";
     std::cerr << '\n';
   }
+  for (const std::string& w : report.warnings) std::cerr << "tread mf eval: warning: " << w << '\n';
   for (const tyre::MfRangeCount& c : report.out_of_range) {
     std::cerr << "tread mf eval: warning: " << c.rows
               << " rows outside the model's range: " << c.limit << " (first: " << args.input << ':'

@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "io/line_chunks.hpp"
@@ -138,6 +139,34 @@ struct EvalSetup {
   std::array<double, kInputQuantityCount> low{};
   std::array<double, kInputQuantityCount> high{};
 };
+
+// The coefficients through which the inflation pressure acts that are nonzero, as "KEY = value"
+// (QSY8 only in MF 6.x, whose rolling resistance has the pressure power).
+std::vector<std::string> pressure_terms(const mf::MfParameters<double>& p, bool mf5x) {
+  const std::array<std::pair<const char*, double>, 16> terms{{
+      {"PFZ1", p.pfz1},
+      {"PPX1", p.ppx1},
+      {"PPX2", p.ppx2},
+      {"PPX3", p.ppx3},
+      {"PPX4", p.ppx4},
+      {"PPY1", p.ppy1},
+      {"PPY2", p.ppy2},
+      {"PPY3", p.ppy3},
+      {"PPY4", p.ppy4},
+      {"PPY5", p.ppy5},
+      {"PPZ1", p.ppz1},
+      {"PPZ2", p.ppz2},
+      {"PPMX1", p.ppmx1},
+      {"QSY8", mf5x ? 0.0 : p.qsy8},
+      {"PCFX3", p.pcfx3},
+      {"PCFY3", p.pcfy3},
+  }};
+  std::vector<std::string> nonzero;
+  for (const auto& [key, v] : terms) {
+    if (std::fabs(v) > 0.0) nonzero.push_back(std::string(key) + " = " + short_number(v));
+  }
+  return nonzero;
+}
 
 // Fills setup.low and setup.high from setup.limits (the pressure's only where the table has a
 // pressure column).
@@ -357,6 +386,24 @@ MfCsvReport evaluate_csv(const mf::MfParameters<double>& params, const mf::MfOpt
   InputTable table(in, in_name, csv.table);
   MfCsvReport report;
   report.ignored = table.ignored_columns();
+  // What a pressure column does where the model has no pressure terms of its own: the user should
+  // hear it rather than read the output as a pressure study.
+  if (table.has(InputQuantity::pressure)) {
+    const bool mf5x = params.fit_type != mf::FitType::mf61 && params.fit_type != mf::FitType::mf62;
+    const std::vector<std::string> terms = pressure_terms(params, mf5x);
+    if (terms.empty()) {
+      report.warnings.emplace_back(
+          "the pressure column changes no output: the tyre's pressure coefficients (PFZ1, PPX1-4, "
+          "PPY1-5, PPZ1-2, PPMX1, QSY8, PCFX3, PCFY3) are all 0");
+    } else if (mf5x) {
+      std::string list;
+      for (const std::string& t : terms) list += (list.empty() ? "" : ", ") + t;
+      report.warnings.push_back(
+          "this tyre is MF 5.x / PAC2002, which has no pressure terms of its own: the pressure "
+          "column acts only through MF 6.1's coefficients " +
+          list + " (MF 6.1 defaults where the file does not give them, as MFeval takes them)");
+    }
+  }
 
   using Q = InputQuantity;
   const std::array<Limit, kLimitCount> limits = {{

@@ -68,6 +68,7 @@ struct MfCsvReport {
   std::vector<std::string> mapping;        ///< InputTable::mapping()
   std::vector<std::string> ignored;        ///< header cells that name no input
   std::vector<MfRangeCount> out_of_range;  ///< limits with at least one row outside
+  std::vector<std::string> warnings;       ///< inputs read but not used by the tyre's model
 };
 
 /// Evaluates every row of `in` (named `in_name` in messages) and writes `out`.

@@ -15,6 +15,7 @@
 #include "golden_path.hpp"
 #include "test_dir.hpp"
 #include "tir/tir_file.hpp"
+#include "tir/tir_model.hpp"
 
 namespace {
 
@@ -622,6 +623,63 @@ TEST(MfCommand, NoNonFiniteOutputUnderStatusOk) {
     }
   }
   EXPECT_EQ(rows, 2);
+}
+
+}  // namespace
+
+namespace {
+
+// A pressure column on a tyre with no pressure terms of its own is said, not silently taken as a
+// pressure study; on MF 6.1 with pressure terms nothing is said.
+TEST(MfCommand, PressureColumnWithoutPressureTermsIsSaid) {
+  const auto dir = tmp_dir();
+  const auto in = dir / "pressure.csv";
+  write(in,
+        "Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps,P_kPa\n4000,0.05,0.02,0,16,180\n"
+        "4000,0.05,0.02,0,16,260\n");
+  const auto log_of = [&](const std::string& tyre) {
+    const auto log = dir / (tyre + ".txt");
+    EXPECT_EQ(run("mf eval --tir " + tread::testing::tyre_file(tyre).string() + " --input " +
+                      in.string() + " --output " + (dir / "out.csv").string(),
+                  log),
+              0)
+        << slurp(log);
+    return slurp(log);
+  };
+  const std::string mf52 = log_of("MagicFormula52_Parameters.tir");
+  EXPECT_NE(mf52.find("warning: this tyre is MF 5.x / PAC2002, which has no pressure terms of its "
+                      "own: the pressure column acts only through MF 6.1's coefficients PFZ1 = "
+                      "0.8, PCFX3 = 0.2, PCFY3 = 0.5"),
+            std::string::npos)
+      << mf52;
+  EXPECT_EQ(mf52.find("QSY8"), std::string::npos) << mf52;  // MF 5.x's My has no pressure power
+  EXPECT_EQ(log_of("MagicFormula61_Parameters.tir").find("pressure column"), std::string::npos);
+  // An MF 6.1 file whose pressure coefficients are all 0.
+  tread::tir::TirFile f = tread::tir::read_tyre_property_file(
+      tread::testing::tyre_file("MagicFormula61_Parameters.tir"));
+  for (const char* key : {"PFZ1", "PPX1", "PPX2", "PPX3", "PPX4", "PPY1", "PPY2", "PPY3", "PPY4",
+                          "PPY5", "PPZ1", "PPZ2", "PPMX1", "QSY8", "PCFX3", "PCFY3"}) {
+    tread::tir::Entry* e = nullptr;
+    for (auto& s : f.sections()) {
+      if (e == nullptr) e = s.find(key);
+    }
+    ASSERT_NE(e, nullptr) << key;
+    e->value = "0";
+    e->source.clear();
+  }
+  const auto flat = dir / "flat.tir";
+  {
+    std::ofstream o(flat);
+    o << tread::tir::write_tir(f);
+  }
+  const auto log = dir / "flat.txt";
+  ASSERT_EQ(run("mf eval --tir " + flat.string() + " --input " + in.string() + " --output " +
+                    (dir / "flat.csv").string(),
+                log),
+            0)
+      << slurp(log);
+  EXPECT_NE(slurp(log).find("warning: the pressure column changes no output"), std::string::npos)
+      << slurp(log);
 }
 
 }  // namespace
