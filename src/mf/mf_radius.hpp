@@ -966,6 +966,12 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target,
       rl = if_else(none, lo_end, rl);
     }
   }
+  // No root above Romega either (Fz62 > Fz at Romega and still at Romega + w: the camber alone
+  // carries more than Fz there, as on a light, cambered wheel): Romega, the free radius, not the
+  // bracket's end a tyre width above it (where Fz62 rises with Rl, the usual case, this is also
+  // where Fz62 comes nearest Fz, MFeval's least-squares answer). ρz afresh there: the camber's.
+  const auto no_root_above = beyond && !(rl < hi_end);
+  rl = if_else(no_root_above, c.romega, rl);
   // ρz at the root from its Taylor polynomial about the last point evaluated (a step away at most,
   // where ρz is smooth: the camber part a quartic in Rl, the free-rolling part linear below
   // Romega), so that it is ready with Rl instead of after it, and is not limited to the deflections
@@ -984,7 +990,7 @@ LoadedRadius62<T> loaded_radius62(const Fz62Curve<T, P>& c, const T& fz_target,
   const auto at_romega = !(rl_at < c.romega) && !(rl_at > c.romega);
   const auto from_romega = at_romega && below && !(rho_at > T(0)) && !(c.camber_scale < T(0));
   const auto afresh =
-      active || collapsed ||
+      active || collapsed || no_root_above ||
       (((below && !below_at) || (below_at && !below) || !(rho_at > T(0))) && !from_romega);
   if (any_lane(afresh)) {
     T unused = T(0);

@@ -499,9 +499,10 @@ std::vector<EnvelopePoint> envelope(const MfParameters<double>& p) {
 
 /// Rl with the least deflection: loading the tyre from Romega, the first Rl where Fz62 reaches Fz.
 /// Below Romega: the largest root in [0, Romega]; above it (where the camber alone carries more
-/// than Fz at Romega), the smallest in [Romega, Romega + w]; the end of that interval if none. A
-/// scan away from Romega in steps of 10 µm finds the first crossing, bisection (100 halvings) the
-/// root.
+/// than Fz at Romega), the smallest in [Romega, Romega + w]. Without a root on the branch: 0 below
+/// Romega (Fz beyond a fully squashed tyre), Romega above it (the camber alone carries more than
+/// Fz: the free radius, not the end a tyre width above it). A scan away from Romega in steps of
+/// 10 µm finds the first crossing, bisection (100 halvings) the root.
 double rl_least_deflection(const MfParameters<double>& p, const MfOutput<double>& out, double dpi,
                            double fz_target) {
   const double romega = romega_at(p, out.omega_radps);
@@ -518,7 +519,7 @@ double rl_least_deflection(const MfParameters<double>& p, const MfOutput<double>
     far = near + step;
     if (beyond ? far >= end : far <= end) {
       far = end;
-      if (above(far) == beyond) return end;  // no root on this branch
+      if (above(far) == beyond) return beyond ? romega : end;  // no root on this branch
       break;
     }
     if (above(far) != beyond) break;
@@ -998,8 +999,9 @@ TEST(Mf62LoadedRadius, RootJustBelowRomegaKeepsItsFreeDeflection) {
 // prints them. The camber deflection (rtw/8)·|tan γ|·(num/den)² had been computed as
 // γ²·(rtw/8)·|tan γ| / den², whose numerator (1e-10 at γ = 0.00165 for the MF 6.2 sample) is
 // below Q31.32's resolution (2.3e-10): it became 0, the wheel lost its camber deflection, and at
-// Fz = 6 N, γ = 0.00165, p = 175 kPa Rl was 0.3942 m where double gives 0.6493 m (the root above
-// Romega that camber alone carries), with status ok. γ now cancels before anything is rounded.
+// Fz = 6 N, γ = 0.00165, p = 175 kPa Rl was 0.3942 m, ρz too small, with status ok (double: Romega,
+// 0.3944 m, where the camber alone carries more than Fz; see NoRootAboveRomegaIsRomega). γ now
+// cancels before anything is rounded.
 TEST(Mf62LoadedRadius, FixedPointKeepsASmallCambersDeflection) {
   const MfParameters<double> p = load("MagicFormula62_Parameters.tir");
   const MfParameters<Fixed64> px = to_fixed_parameters(p);
@@ -1033,6 +1035,63 @@ TEST(Mf62LoadedRadius, FixedPointKeepsASmallCambersDeflection) {
   std::printf("fixed point at light cambered loads: |Rl - double| <= %.1e m; %d roots above R0\n",
               worst, above_romega);
   EXPECT_GT(above_romega, 0);  // the case that was lost is among them
+}
+
+MfInput<float> to_float(const MfInput<double>& in) {
+  return {static_cast<float>(in.fz_n),      static_cast<float>(in.kappa),
+          static_cast<float>(in.alpha_rad), static_cast<float>(in.gamma_rad),
+          static_cast<float>(in.vx_mps),    static_cast<float>(in.phit_1pm),
+          static_cast<float>(in.p_pa)};
+}
+
+// Where the camber alone carries more than Fz at Romega and Fz62 only rises above it (light,
+// cambered wheels: the MF 6.2 sample at 0.1–20 N; a 245/60 R16 MF-Tool file at 100 N and 0.02 rad),
+// Fz62(Rl) = Fz has no root: Rl is Romega, where Fz62 comes nearest Fz, and ρz the camber's
+// deflection there, (rtw/8)·|tan γ|, in every path. It had been the bracket's end, Romega + w
+// (0.649 m for this 0.394 m tyre), under status ok.
+TEST(Mf62LoadedRadius, NoRootAboveRomegaIsRomega) {
+  const MfParameters<double> p = load("MagicFormula62_Parameters.tir");
+  const MfParameters<float> pf = convert_parameters<float>(p);
+  const MfParameters<Fixed64> px = to_fixed_parameters(p);
+  const MfOptions o = options_from_use_mode(111).value;
+  int checked = 0;
+  for (const double fz : {0.1, 1.0, 6.0, 20.0}) {
+    for (const double gamma : {-0.01, 0.00165, 0.01}) {
+      MfInput<double> in = at_load(fz, 0.0, 0.0, gamma);
+      in.p_pa = 260000.0;
+      const MfOutput<double> d = evaluate(p, in, o);
+      const double romega = romega_at(p, d.omega_radps);
+      const double dpi = (d.p_pa - p.nompres_pa) / p.nompres_pa;
+      const auto fz62 = [&](double rl) {
+        return fz62_reference(p, d.gamma_rad, d.omega_radps, dpi, d.fx_n, d.fy_n, rl);
+      };
+      // Only the points without a root on either side of Romega.
+      if (!(fz62(romega) > fz) || !(fz62(romega + p.width_m) > fz)) continue;
+      bool rising = true;
+      for (double rl = romega; rl < romega + p.width_m; rl += 1e-3) {
+        rising = rising && fz62(rl + 1e-3) >= fz62(rl);
+      }
+      ASSERT_TRUE(rising) << "Fz " << fz << " gamma " << gamma;
+      const std::string where = "Fz " + std::to_string(fz) + " gamma " + std::to_string(gamma);
+      const double rtw = (1.075 - 0.5 * p.aspect_ratio) * p.width_m;
+      const double rho_camber = rtw / 8.0 * std::fabs(std::tan(d.gamma_rad));
+      EXPECT_NEAR(d.rl_m, romega, 1e-12) << where;
+      EXPECT_NEAR(d.rho_m, rho_camber, 1e-9 * rho_camber + 1e-15) << where;
+      const MfOutput<float> f = evaluate(pf, to_float(in), o);
+      EXPECT_NEAR(f.rl_m, romega, 1e-6) << where;
+      EXPECT_NEAR(f.rho_m, rho_camber, 1e-3 * rho_camber) << where;
+      const MfOutput<Fixed64> x = evaluate(px, testing::to_fixed(in), o);
+      EXPECT_NEAR(x.rl_m.to_double(), romega, 5e-5) << where;
+      std::array<MfInput<float>, 4> four_in{};
+      four_in.fill(to_float(in));
+      std::array<MfOutput<float>, 4> four{};
+      evaluate_four(pf, four_in, o, std::array<MountedSide, 4>{}, four);
+      EXPECT_NEAR(four[0].rl_m, romega, 1e-6) << where;
+      EXPECT_NEAR(four[0].rho_m, rho_camber, 1e-3 * rho_camber) << where;
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 6);
 }
 
 // A file with PFZ1 > 1 at a low pressure: MF 6.2 sample file with PFZ1 = 1.5, pressures down to
