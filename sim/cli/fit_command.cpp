@@ -5,9 +5,11 @@
 //    coefficient set (sim/fit/mf_staged_fit.hpp) into a copy of --start START.tir; report, plots.
 //  - --synthesize FROM.tir: writes synthetic measurements (the test-rig grid of
 //    sim/fit/synthetic_measurements.hpp, Gaussian noise --noise × peak, seeded by --seed) as CSV.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -15,10 +17,12 @@
 #include "cli/commands.hpp"
 #include "fit/measurement.hpp"
 #include "fit/mf61_from_mf52.hpp"
+#include "fit/mf_coefficients.hpp"
 #include "fit/mf_staged_fit.hpp"
 #include "fit/simple_fit.hpp"
 #include "fit/synthetic_measurements.hpp"
 #include "tir/tir_file.hpp"
+#include "tir/tir_units.hpp"
 #include "tyre/input_table.hpp"
 #include "tyre/mf_parameters_from_tir.hpp"
 
@@ -56,6 +60,25 @@ void run_synthesize(const FitCliState& s) {
   std::cerr << "tread fit: " << data.points.size() << " synthetic points -> " << s.output << "\n";
 }
 
+// The columns the fit does not read, said rather than dropped silently; a pressure column above
+// all: every point is fitted as if measured at the start file's INFLPRES.
+void report_ignored(const fit::MeasurementSet& data,
+                    const std::optional<mf::MfParameters<double>>& start) {
+  if (data.ignored_columns.empty()) return;
+  std::cerr << "tread fit: ignored columns:";
+  for (const std::string& c : data.ignored_columns) std::cerr << " '" << c << "'";
+  std::cerr << "\n";
+  if (data.has_pressure) {
+    std::cerr << "tread fit: warning: the pressure column is not used: every point is fitted as if "
+                 "measured at "
+              << (start ? "the start file's INFLPRES (" + tir::format_number(start->inflpres_pa) +
+                              " Pa); data at another pressure need a fit of their own with "
+                              "INFLPRES set to it"
+                        : "one pressure")
+              << "\n";
+  }
+}
+
 void run_staged(const FitCliState& s) {
   const fit::MfFitModel model =
       s.model == "mf61" ? fit::MfFitModel::mf61 : fit::MfFitModel::pac2002;
@@ -83,6 +106,8 @@ void run_staged(const FitCliState& s) {
   const fit::MeasurementSet data = fit::load_measurements(s.input, convention_of(s));
   std::cerr << "tread fit: " << data.points.size() << " points from " << data.source << "; staged "
             << s.model << " fit\n";
+  report_ignored(data, start);
+  fit::check_rolling(data);
   const fit::StagedFit result = fit::fit_mf_staged(data, start, model, progress_line);
   if (result.stages.empty()) {
     throw std::runtime_error(data.source + ": no pure-slip sweep with enough points to fit");
@@ -96,6 +121,27 @@ void run_staged(const FitCliState& s) {
     }
   }
   fit::set_fitted_coefficients(file, result);
+  if (s.neutral_start) {
+    // The coefficients --neutral-start set to their book values but no stage had data for: the
+    // later stages and the fit errors below assume those values, so the file takes them too.
+    std::vector<std::string> unfitted;
+    for (const std::string& key : fit::fitted_keys(model)) {
+      bool fitted = false;
+      for (const auto& stage : result.stages) {
+        fitted = fitted || std::find(stage.keys.begin(), stage.keys.end(), key) != stage.keys.end();
+      }
+      if (fitted) continue;
+      unfitted.push_back(key);
+      const int index = fit::required_coefficient_index(key);
+      tir::set_si(file, fit::coefficient_section(index), key,
+                  fit::coefficient(result.params, index));
+    }
+    if (!unfitted.empty()) {
+      std::cerr << "tread fit: warning: --neutral-start: no stage fitted";
+      for (const std::string& k : unfitted) std::cerr << ' ' << k;
+      std::cerr << " (no data for them): written at their book values, which the fit used\n";
+    }
+  }
   tir::write_tir(file, s.output);
   std::cerr << "tread fit: " << result.stages.size() << " stages in " << result.seconds << " s -> "
             << s.output << "\n";
@@ -134,6 +180,7 @@ void run_fit(const FitCliState& s) {
   }
   const fit::MeasurementSet data = fit::load_measurements(s.input, convention_of(s));
   std::cerr << "tread fit: " << data.points.size() << " points from " << data.source << "\n";
+  report_ignored(data, std::nullopt);
   fit::SimpleFitSettings settings;
   settings.asymmetric_e = s.asymmetric_e;
   const fit::SimpleFit result = fit::fit_simple(data, settings, progress_line);

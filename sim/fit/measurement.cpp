@@ -127,20 +127,30 @@ std::optional<CsvColumn> csv_column(const std::string& header, tyre::SignConvent
         return std::nullopt;  // not held by MeasurementPoint
     }
   }
-  // Measured forces and moments: SI names, TTC names (FX, FY, MZ in N and N m), TYDEX channels.
-  static const std::map<std::string, std::pair<Field, tyre::MeasuredQuantity>> outputs = {
-      {"FX_N", {Field::fx, tyre::MeasuredQuantity::fx}},
-      {"FX", {Field::fx, tyre::MeasuredQuantity::fx}},
-      {"FXW", {Field::fx, tyre::MeasuredQuantity::fx}},
-      {"FY_N", {Field::fy, tyre::MeasuredQuantity::fy}},
-      {"FY", {Field::fy, tyre::MeasuredQuantity::fy}},
-      {"FYW", {Field::fy, tyre::MeasuredQuantity::fy}},
-      {"MZ_NM", {Field::mz, tyre::MeasuredQuantity::mz}},
-      {"MZ", {Field::mz, tyre::MeasuredQuantity::mz}},
-      {"MZW", {Field::mz, tyre::MeasuredQuantity::mz}}};
+  // Measured forces and moments: SI names, kN names, TTC names (FX, FY, MZ in N and N m), TYDEX
+  // channels.
+  struct Output {
+    Field field;
+    tyre::MeasuredQuantity quantity;
+    double to_si;
+  };
+  static const std::map<std::string, Output> outputs = {
+      {"FX_N", {Field::fx, tyre::MeasuredQuantity::fx, 1.0}},
+      {"FX", {Field::fx, tyre::MeasuredQuantity::fx, 1.0}},
+      {"FXW", {Field::fx, tyre::MeasuredQuantity::fx, 1.0}},
+      {"FX_KN", {Field::fx, tyre::MeasuredQuantity::fx, 1000.0}},
+      {"FY_N", {Field::fy, tyre::MeasuredQuantity::fy, 1.0}},
+      {"FY", {Field::fy, tyre::MeasuredQuantity::fy, 1.0}},
+      {"FYW", {Field::fy, tyre::MeasuredQuantity::fy, 1.0}},
+      {"FY_KN", {Field::fy, tyre::MeasuredQuantity::fy, 1000.0}},
+      {"MZ_NM", {Field::mz, tyre::MeasuredQuantity::mz, 1.0}},
+      {"MZ", {Field::mz, tyre::MeasuredQuantity::mz, 1.0}},
+      {"MZW", {Field::mz, tyre::MeasuredQuantity::mz, 1.0}},
+      {"MZ_KNM", {Field::mz, tyre::MeasuredQuantity::mz, 1000.0}}};
   const auto it = outputs.find(upper(trim(header)));
   if (it == outputs.end()) return std::nullopt;
-  return CsvColumn{it->second.first, tyre::output_sign(convention, it->second.second)};
+  return CsvColumn{it->second.field,
+                   it->second.to_si * tyre::output_sign(convention, it->second.quantity)};
 }
 
 MeasurementSet read_measurement_csv(std::istream& in, const std::string& name,
@@ -165,7 +175,13 @@ MeasurementSet read_measurement_csv(std::istream& in, const std::string& name,
       header_cells = cells.size();
       for (std::size_t i = 0; i < cells.size(); ++i) {
         const std::optional<CsvColumn> c = csv_column(cells[i], convention);
-        if (!c) continue;
+        if (!c) {
+          set.ignored_columns.push_back(trim(cells[i]));
+          const auto input = tyre::recognise_input_column(cells[i]);
+          set.has_pressure =
+              set.has_pressure || (input && input->quantity == tyre::InputQuantity::pressure);
+          continue;
+        }
         if (!columns.emplace(c->field, i).second) {
           host::text::fail_at(name, line, "repeated column '" + trim(cells[i]) + "'");
         }
@@ -322,6 +338,16 @@ MeasurementSet read_tydex(std::istream& in, const std::string& name) {
   }
   if (!seen_data) host::text::fail_at(name, line, "no **MEASURDATA section");
   return set;
+}
+
+void check_rolling(const MeasurementSet& set) {
+  for (const MeasurementPoint& p : set.points) {
+    if (!(std::fabs(p.vx_mps) > 0.0)) {
+      host::text::fail_at(set.source, p.line,
+                          "Vx = 0 (no Vx column or channel, or a wheel at standstill): the Magic "
+                          "Formula's slips divide by the rolling speed, so every point needs one");
+    }
+  }
 }
 
 MeasurementSet load_measurements(const std::filesystem::path& path,

@@ -46,11 +46,18 @@ struct MeasurementPoint {
 struct MeasurementSet {
   std::string source;  ///< file name (for messages and reports)
   std::vector<MeasurementPoint> points;
+  /// CSV header cells that are not read (the fit takes no pressure, turn slip or other column).
+  std::vector<std::string> ignored_columns;
+  bool has_pressure = false;  ///< a pressure column was among them
 };
 
 MeasurementSet read_measurement_csv(std::istream& in, const std::string& name,
                                     tyre::SignConvention convention = tyre::SignConvention::iso_w);
 MeasurementSet read_tydex(std::istream& in, const std::string& name);
+
+/// Throws (file:line of the first) if a point has Vx = 0: the staged Magic Formula fit needs the
+/// rolling speed (its residuals and their derivatives are not finite at standstill).
+void check_rolling(const MeasurementSet& set);
 
 /// Reads `path` as TYDEX if it ends in .tdx (any case; TYDEX W axes), otherwise as CSV in
 /// `convention`.

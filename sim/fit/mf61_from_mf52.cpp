@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "fit/mf_coefficients.hpp"
+#include "tir/tir_units.hpp"
 
 namespace tread::fit {
 
@@ -76,7 +77,9 @@ std::vector<std::string> rewrite_as_mf61(tir::TirFile& file, const mf::MfParamet
     const std::string key = coefficient_key(i);
     if (listed(mf52_only_keys(), key) || listed(mf62_only_keys(), key)) continue;
     if (file.find_any(key) != nullptr) continue;
-    file.set(coefficient_section(i), key, coefficient(p, i));
+    // In the file's own units ([UNITS] may be mm, kN, kPa): NOMPRES, the structural stiffnesses
+    // and BOTTOM_OFFST are dimensional.
+    tir::set_si(file, coefficient_section(i), key, coefficient(p, i));
   }
   return removed;
 }

@@ -336,7 +336,11 @@ StageResult fit_stage(const StageSpec& spec, const std::vector<StageSample>& sam
   ceres::Covariance covariance(co);
   const std::vector<std::pair<const double*, const double*>> blocks = {{k.data(), k.data()}};
   std::vector<double> c(n * n);
-  if (covariance.Compute(blocks, &problem) &&
+  // Only for a usable, finite solution: Ceres's covariance does not check the Jacobian (a NaN in
+  // it crashed the SVD).
+  const bool finite = std::isfinite(final_cost) &&
+                      std::all_of(k.begin(), k.end(), [](double v) { return std::isfinite(v); });
+  if (best.IsSolutionUsable() && finite && covariance.Compute(blocks, &problem) &&
       covariance.GetCovarianceBlock(k.data(), k.data(), c.data())) {
     // The residuals are weighted: the variance of a weighted residual scales the covariance.
     const double s2 = 2.0 * final_cost / static_cast<double>(samples.size() - n);

@@ -15,12 +15,16 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "fit/mf_staged_fit.hpp"
 #include "golden_path.hpp"
 #include "mf/mf_evaluate.hpp"
 #include "test_dir.hpp"
 #include "tir/tir_file.hpp"
+#include "tir/tir_keys.hpp"
+#include "tir/tir_units.hpp"
 #include "tyre/mf_parameters_from_tir.hpp"
 
 namespace {
@@ -393,6 +397,145 @@ TEST(FitCommand, Mf61RefitOfAPac2002File) {
   const tread::mf::MfParameters<double> fitted = tread::tyre::load_mf_parameters(out_tir).params;
   EXPECT_EQ(fitted.fit_type, tread::mf::FitType::mf61);
   expect_pure_curves_within_1_percent(truth, fitted, {2000.0, 4000.0, 5500.0});
+}
+
+// A PAC2002 start whose [UNITS] are mm, kN and kPa, refitted as MF 6.1: the keys MF 6.1 adds
+// (NOMPRES, the structural stiffnesses, BOTTOM_OFFST) are written in the file's units, so the
+// fitted file reads back as the SI start's fit does (they had been written as SI numbers: NOMPRES
+// 220000 read as 220 MPa).
+TEST(FitCommand, Mf61RefitWritesAddedKeysInTheStartsUnits) {
+  const auto tir = tread::testing::tyre_file("chrono_VW_mf_185_80R14_PAC2002.tir");
+  const auto dir = tmp_dir();
+  const auto err = dir / "stderr.txt";
+  const auto mm_tir = dir / "start_mm.tir";
+  {
+    // Every dimensional value rewritten in mm, kN and kPa, [UNITS] saying so.
+    tread::tir::TirFile file = tread::tir::read_tir(tir);
+    const tread::tir::UnitSystem si = tread::tir::read_units(file);
+    std::vector<std::pair<std::string, std::pair<std::string, double>>> values;
+    for (const tread::tir::Section& section : file.sections()) {
+      if (section.is_table()) continue;
+      for (const tread::tir::Entry* e : section.entries()) {
+        const tread::tir::KeyInfo* info = tread::tir::find_key_info(e->key);
+        if (info == nullptr || e->is_quoted() || info->dimension.is_none()) continue;
+        values.push_back(
+            {section.name, {e->key, *tread::tir::number_si(file, si, section.name, e->key)}});
+      }
+    }
+    file.set_text("UNITS", "LENGTH", "mm");
+    file.set_text("UNITS", "FORCE", "kN");
+    file.set_text("UNITS", "PRESSURE", "kPa");
+    for (const auto& [section, kv] : values) tread::tir::set_si(file, section, kv.first, kv.second);
+    tread::tir::write_tir(file, mm_tir);
+  }
+  const auto data = dir / "data.csv";
+  ASSERT_EQ(run("fit --synthesize " + tir.string() + " --seed 3 --output " + data.string(), err), 0)
+      << slurp(err);
+  const auto fitted = [&](const std::filesystem::path& start, const char* name) {
+    const auto out = dir / name;
+    EXPECT_EQ(run("fit --model mf61 --start " + start.string() + " --input " + data.string() +
+                      " --output " + out.string(),
+                  err),
+              0)
+        << slurp(err);
+    return tread::tyre::load_mf_parameters(out).params;
+  };
+  const tread::mf::MfParameters<double> si = fitted(tir, "si.tir");
+  const tread::mf::MfParameters<double> mm = fitted(mm_tir, "mm.tir");
+  EXPECT_NEAR(mm.nompres_pa, si.nompres_pa, 1e-9 * si.nompres_pa);
+  EXPECT_NEAR(mm.inflpres_pa, si.inflpres_pa, 1e-9 * si.inflpres_pa);
+  EXPECT_NEAR(mm.longitudinal_stiffness_npm, si.longitudinal_stiffness_npm,
+              1e-9 * si.longitudinal_stiffness_npm);
+  EXPECT_NEAR(mm.lateral_stiffness_npm, si.lateral_stiffness_npm, 1e-9 * si.lateral_stiffness_npm);
+  EXPECT_NEAR(mm.bottom_offst_m, si.bottom_offst_m, 1e-12);
+}
+
+// The staged fit: a point at Vx = 0 (or a file without Vx) is an error naming its line, not a
+// crash in the covariance (a NaN Jacobian); a pressure column and other unread columns are said;
+// an Fx_kN column is read in kN.
+TEST(FitCommand, StagedFitInputsAreCheckedAndSaid) {
+  const auto tir = tread::testing::tyre_file("MagicFormula61_Parameters.tir");
+  const tread::mf::MfParameters<double> truth = tread::tyre::load_mf_parameters(tir).params;
+  const auto dir = tmp_dir();
+  const auto err = dir / "stderr.txt";
+  const auto write_csv = [&](const char* name, const char* header, double vx_first) {
+    const auto path = dir / name;
+    std::ofstream in(path);
+    in.precision(17);
+    in << header << '\n';
+    int row = 0;
+    for (double fz : {2000.0, 4000.0, 6000.0}) {
+      for (int i = -40; i <= 40; ++i, ++row) {
+        const double alpha = i * 0.005;
+        in << fz << ",0," << alpha << ",0," << (row == 5 ? vx_first : 16.6) << ','
+           << fy_of(truth, fz, alpha) / 1000.0 << ",220\n";
+      }
+    }
+    return path;
+  };
+  const auto stopped =
+      write_csv("stopped.csv", "Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps,Fy_kN,P_kPa", 0.0);
+  EXPECT_NE(run("fit --model mf61 --start " + tir.string() + " --input " + stopped.string() +
+                    " --output " + (dir / "x.tir").string(),
+                err),
+            0);
+  EXPECT_NE(slurp(err).find("stopped.csv:7: Vx = 0"), std::string::npos) << slurp(err);
+  EXPECT_FALSE(std::filesystem::exists(dir / "x.tir"));
+
+  const auto good =
+      write_csv("good.csv", "Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps,Fy_kN,P_kPa", 16.6);
+  ASSERT_EQ(run("fit --model mf61 --start " + tir.string() + " --input " + good.string() +
+                    " --output " + (dir / "good.tir").string(),
+                err),
+            0)
+      << slurp(err);
+  const std::string e = slurp(err);
+  EXPECT_NE(e.find("ignored columns: 'P_kPa'"), std::string::npos) << e;
+  EXPECT_NE(e.find("warning: the pressure column is not used: every point is fitted as if "
+                   "measured at the start file's INFLPRES (260000 Pa)"),
+            std::string::npos)
+      << e;
+  // The kN column is the Fy fitted (near-exact on noise-free data).
+  EXPECT_NE(e.find("fit error Fy at Fz = 4000 N"), std::string::npos) << e;
+  const tread::mf::MfParameters<double> fitted =
+      tread::tyre::load_mf_parameters(dir / "good.tir").params;
+  EXPECT_NEAR(fy_of(fitted, 4000.0, 0.05), fy_of(truth, 4000.0, 0.05),
+              1e-3 * std::fabs(fy_of(truth, 4000.0, 0.05)));
+}
+
+// --neutral-start with data for some stages only: the coefficients no stage fitted are written at
+// the book values the fit used, so that the reported fit error describes the written file.
+TEST(FitCommand, NeutralStartWritesWhatTheFitErrorDescribes) {
+  const auto tir = tread::testing::tyre_file("MagicFormula61_Parameters.tir");
+  const tread::mf::MfParameters<double> truth = tread::tyre::load_mf_parameters(tir).params;
+  const auto dir = tmp_dir();
+  const auto err = dir / "stderr.txt";
+  const auto in_csv = dir / "lateral.csv";
+  {
+    std::ofstream in(in_csv);
+    in.precision(17);
+    in << "Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps,Fy_N\n";
+    for (double fz : {2000.0, 4000.0, 6000.0}) {
+      for (int i = -40; i <= 40; ++i) {
+        in << fz << ",0," << i * 0.005 << ",0,16.6," << fy_of(truth, fz, i * 0.005) << '\n';
+      }
+    }
+  }
+  const auto out = dir / "neutral.tir";
+  ASSERT_EQ(run("fit --model mf61 --neutral-start --start " + tir.string() + " --input " +
+                    in_csv.string() + " --output " + out.string(),
+                err),
+            0)
+      << slurp(err);
+  const std::string e = slurp(err);
+  EXPECT_NE(e.find("warning: --neutral-start: no stage fitted"), std::string::npos) << e;
+  // Fx had no data: its coefficients are the book's in the file, as in the fit.
+  const tread::mf::MfParameters<double> fitted = tread::tyre::load_mf_parameters(out).params;
+  const tread::mf::MfParameters<double> book =
+      tread::fit::neutral_start(truth, tread::fit::MfFitModel::mf61);
+  EXPECT_EQ(fitted.pdx1, book.pdx1);
+  EXPECT_EQ(fitted.pkx1, book.pkx1);
+  EXPECT_NE(fitted.pdx1, truth.pdx1);
 }
 
 }  // namespace
