@@ -63,6 +63,8 @@ tir::PacCoefficients load_pac(const std::string& json, const std::string& tir_pa
               << " coefficients missing, taken as 0 (" << missing89
               << " of them PAC89's; first: " << coeff.missing.front() << ")\n";
   }
+  if (!coeff.note.empty())
+    std::cerr << command << ": note: " << source << ": " << coeff.note << '\n';
   return coeff;
 }
 
@@ -79,6 +81,11 @@ tir::PacModel model_for(const tir::PacCoefficients& coeff, int model, bool given
   if (from_tir && coeff.pac94 && model == 89) {
     std::cerr << "tread pac: warning: the file is PAC94; --model 89 ignores its A14…A17, B11…B13, "
                  "C18…C20\n";
+  }
+  if (from_tir && !coeff.pac94 && model == 94) {
+    std::cerr
+        << "tread pac: warning: the file is PAC89; --model 94 reads its A8…A13, B8…B10 and "
+           "C11…C17 with PAC94's meanings, which differ (the shifts' load and camber terms)\n";
   }
   return model == 94 ? tir::PacModel::kPac94 : tir::PacModel::kPac89;
 }

@@ -2,9 +2,13 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
+#include <string>
 
 #include "tir/tir_model.hpp"
 #include "tir/tir_units.hpp"
@@ -44,6 +48,46 @@ double optional_any(const TirFile& f, const char* key, std::vector<std::string>&
   return 0.0;
 }
 
+// The file's own input limits where it gives them (FZMAX, KPUMIN/KPUMAX, ALPMIN/ALPMAX,
+// CAMMIN/CAMMAX; else the core's defaults): inputs beyond them are clamped and said `out of range`.
+// The core's limits are symmetric (|κ| ≤ κmax): an asymmetric range takes its smaller side, so
+// that nothing outside the file's range is evaluated as `ok`; said in the note.
+void read_limits(const TirFile& file, PacCoefficients& out) {
+  const UnitSystem units = read_units(file);
+  const auto value = [&](const char* key) { return number_si(file, units, "", key); };
+  std::string asymmetric;
+  const auto symmetric = [&](const char* min_key, const char* max_key, double& limit) {
+    const std::optional<double> lo = value(min_key);
+    const std::optional<double> hi = value(max_key);
+    if (!lo && !hi) return;
+    double m = std::numeric_limits<double>::infinity();
+    if (lo) m = std::min(m, -*lo);
+    if (hi) m = std::min(m, *hi);
+    if (!(m > 0.0)) {
+      const Entry* e = file.find_any(hi ? max_key : min_key);
+      throw TirError(file.origin(), e != nullptr ? e->line : 0,
+                     std::string(min_key) + "…" + max_key + " does not contain 0");
+    }
+    if (lo && hi && std::fabs(-*lo - *hi) > 1e-12 * m) {
+      asymmetric += std::string(asymmetric.empty() ? "" : ", ") + min_key + "…" + max_key;
+    }
+    limit = std::min(limit, m);
+  };
+  if (const auto fzmax = value("FZMAX")) {
+    if (!(*fzmax > 0.0)) {
+      throw TirError(file.origin(), file.find_any("FZMAX")->line, "FZMAX must be > 0");
+    }
+    out.params.fz_max_n = std::min(out.params.fz_max_n, *fzmax);
+  }
+  symmetric("KPUMIN", "KPUMAX", out.params.kappa_max);
+  symmetric("ALPMIN", "ALPMAX", out.params.alpha_max_rad);
+  symmetric("CAMMIN", "CAMMAX", out.params.gamma_max_rad);
+  if (!asymmetric.empty()) {
+    out.note += std::string(out.note.empty() ? "" : "; ") + asymmetric +
+                ": PAC89/PAC94 limits are symmetric, the smaller side is taken both ways";
+  }
+}
+
 }  // namespace
 
 PacCoefficients pac_from_tir(const TirFile& file) {
@@ -56,6 +100,7 @@ PacCoefficients pac_from_tir(const TirFile& file) {
   }
   PacCoefficients out;
   out.pac94 = model.model == TirModel::kPac94;
+  out.note = model.note;
   read_set(file, kLat, 'A', out.params.a, out.missing);
   read_set(file, kLon, 'B', out.params.b, out.missing);
   read_set(file, kAli, 'C', out.params.c, out.missing);
@@ -73,6 +118,7 @@ PacCoefficients pac_from_tir(const TirFile& file) {
   out.params.unloaded_radius_m = optional_any(file, "UNLOADED_RADIUS", out.missing);
   out.params.rolling_resistance = optional_any(file, "ROLLING_RESISTANCE", out.missing);
   out.params.lateral_stiffness_npm = optional_any(file, "LATERAL_STIFFNESS", out.missing);
+  read_limits(file, out);
   if (const auto side = file.text_any("TYRESIDE")) {
     for (const char c : *side)
       out.tyreside += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));

@@ -25,7 +25,9 @@ namespace tread::tir {
 struct PacCoefficients {
   pac::PacParams<double> params;
   std::vector<std::string> missing;  ///< keys that took their default (0)
-  bool pac94 = false;  ///< the .tir says PAC94 (PROPERTY_FILE_FORMAT, or A14…/B11…/C18… present)
+  /// The .tir says PAC94 (PROPERTY_FILE_FORMAT, or without it a nonzero A14…/B11…/C18…).
+  bool pac94 = false;
+  std::string note;  ///< how the model was decided, where the file does not say (else empty)
   /// TYRESIDE from the .tir in upper case ('LEFT', 'RIGHT', 'SYMMETRIC'), empty if absent; apply
   /// pac::mirror_pac89/mirror_pac94 (pac/pac_mirror.hpp) for a tyre on the other side.
   std::string tyreside;

@@ -131,6 +131,16 @@ std::string_view version_group(TirModel model) {
                  "not a Magic Formula file: " + reason);
 }
 
+bool has_nonzero(const TirFile& file, std::initializer_list<std::string_view> keys) {
+  for (const auto k : keys) {
+    const Entry* e = file.find_any(k);
+    if (e == nullptr || e->is_quoted()) continue;
+    const std::optional<double> v = parse_number(e->value);
+    if (!v || std::fabs(*v) > 0.0) return true;  // not a number: said where it is read
+  }
+  return false;
+}
+
 bool has_any(const TirFile& file, std::initializer_list<std::string_view> keys) {
   for (const auto k : keys) {
     if (file.find_any(k) != nullptr) return true;
@@ -172,8 +182,12 @@ DetectedModel detect_model(const TirFile& file) {
              "PROPERTY_FILE_FORMAT '" + format_entry->value + "' is " + std::string(f.what));
     }
   }
-  const bool pac94_keys =
-      has_any(file, {"A14", "A15", "A16", "A17", "B11", "B12", "B13", "C18", "C19", "C20"});
+  // PAC94's own coefficients decide a file that does not say which it is: where they are all 0
+  // (a PAC89 file listing them, as Adams writes it), the terms A8…A13, B8…B10 and C11…C17 mean
+  // what PAC89 makes them, which PAC94 reads otherwise.
+  const std::initializer_list<std::string_view> pac94_only = {"A14", "A15", "A16", "A17", "B11",
+                                                              "B12", "B13", "C18", "C19", "C20"};
+  const bool pac94_keys = has_nonzero(file, pac94_only);
   if (kind == Format::kPac89) return pac(false);
   if (kind == Format::kPac94) return pac(true);
 
@@ -181,7 +195,15 @@ DetectedModel detect_model(const TirFile& file) {
   const bool mf_keys =
       has_any(file, {"PCX1", "PDX1", "PKX1", "PCY1", "PDY1", "PKY1", "QBZ1", "QCZ1", "QDZ1"});
   if (fittyp_entry == nullptr) {
-    if (!mf_keys && has_any(file, {"A0", "B0", "C0"})) return pac(pac94_keys);
+    if (!mf_keys && has_any(file, {"A0", "B0", "C0"})) {
+      DetectedModel d = pac(pac94_keys);
+      d.note = pac94_keys ? "no PROPERTY_FILE_FORMAT: read as PAC94 (a PAC94 coefficient is not 0)"
+               : has_any(file, pac94_only)
+                   ? "no PROPERTY_FILE_FORMAT: read as PAC89 (PAC94's A14…A17, B11…B13, "
+                     "C18…C20 are all 0; PAC94 would read A8…A13 otherwise)"
+                   : "no PROPERTY_FILE_FORMAT: read as PAC89 (no PAC94 coefficients)";
+      return d;
+    }
     if (!mf_keys) {
       not_mf(file, format_entry,
              "no FITTYP and none of the Magic Formula coefficients (PCX1, PDY1, PKY1, QBZ1, …)");

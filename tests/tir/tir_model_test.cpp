@@ -8,6 +8,7 @@
 #include <string>
 
 #include "golden_path.hpp"
+#include "pac/pac89.hpp"
 #include "tir/pac_coefficients.hpp"
 
 namespace tread::tir {
@@ -42,9 +43,10 @@ TEST(TirModel, FormatAndFittypTable) {
             TirModel::kMf50);
   EXPECT_EQ(detect("[M]\nPROPERTY_FILE_FORMAT = 'pac94'\n").model, TirModel::kPac94);
   EXPECT_EQ(detect("[M]\nPROPERTY_FILE_FORMAT = 'PAC89'\nFITTYP = 61\n").model, TirModel::kPac89);
-  // No header at all: the coefficient names decide.
+  // No header at all: the coefficients decide, a PAC94-only one by being nonzero.
   EXPECT_EQ(detect("[LATERAL_COEFFICIENTS]\nA0 = 1.3\n").model, TirModel::kPac89);
-  EXPECT_EQ(detect("[LATERAL_COEFFICIENTS]\nA0 = 1.3\nA17 = 0\n").model, TirModel::kPac94);
+  EXPECT_EQ(detect("[LATERAL_COEFFICIENTS]\nA0 = 1.3\nA17 = 0\n").model, TirModel::kPac89);
+  EXPECT_EQ(detect("[LATERAL_COEFFICIENTS]\nA0 = 1.3\nA17 = 0.2\n").model, TirModel::kPac94);
   const DetectedModel odd = detect("[M]\nPROPERTY_FILE_FORMAT = 'ACME'\nFITTYP = 61\nPCX1 = 1\n");
   EXPECT_EQ(odd.model, TirModel::kMf61);
   EXPECT_NE(odd.note.find("unknown PROPERTY_FILE_FORMAT 'ACME'"), std::string::npos);
@@ -72,6 +74,51 @@ TEST(TirModel, OtherModelsAreRefusedWithTheReason) {
   EXPECT_EQ(error_of("[M]\nWIDTH = 0.2\n"),
             "d.tir:0: not a Magic Formula file: no FITTYP and none of the Magic Formula "
             "coefficients (PCX1, PDY1, PKY1, QBZ1, …)");
+}
+
+// Without PROPERTY_FILE_FORMAT, PAC94's own coefficients decide: listed but all 0 (as the PAC89
+// files Adams writes list them), the file is PAC89, whose A8…A13 PAC94 would read otherwise.
+TEST(TirModel, PacWithoutFormatIsPac94OnlyWithANonzeroPac94Coefficient) {
+  std::string text = "[LATERAL_COEFFICIENTS]\n";
+  for (int i = 0; i <= 17; ++i)
+    text += "A" + std::to_string(i) + " = " + (i == 9 ? "0.1" : "0") + "\n";
+  text += "[LONGITUDINAL_COEFFICIENTS]\nB0 = 1.5\n[ALIGNING_COEFFICIENTS]\nC0 = 2.3\n";
+  const TirFile zeros = parse_tir(text, "z.tir");
+  EXPECT_EQ(detect_model(zeros).model, TirModel::kPac89);
+  EXPECT_NE(detect_model(zeros).note.find("read as PAC89 (PAC94's A14…A17"), std::string::npos);
+  EXPECT_FALSE(pac_from_tir(zeros).pac94);
+  std::string with94 = text;
+  with94.replace(with94.find("A15 = 0"), 7, "A15 = 0.3");
+  EXPECT_EQ(detect_model(parse_tir(with94, "n.tir")).model, TirModel::kPac94);
+}
+
+// The file's own limits: inputs beyond FZMAX, KPUMIN…KPUMAX, ALPMIN…ALPMAX, CAMMIN…CAMMAX are
+// clamped (`out of range`), in its units; an asymmetric range takes its smaller side, said.
+TEST(TirModel, PacFileLimitsAreApplied) {
+  const PacCoefficients none = pac_from_tir(read_tyre_property_file(variant("pac89_header.tir")));
+  EXPECT_DOUBLE_EQ(none.params.fz_max_n, 100000.0);  // the core's default
+  TirFile f = read_tyre_property_file(variant("pac89_header.tir"));
+  f.set("VERTICAL_FORCE_RANGE", "FZMAX", 25000.0);
+  f.set("LONG_SLIP_RANGE", "KPUMIN", -0.5);
+  f.set("LONG_SLIP_RANGE", "KPUMAX", 0.4);
+  f.set("SLIP_ANGLE_RANGE", "ALPMIN", -0.2);
+  f.set("SLIP_ANGLE_RANGE", "ALPMAX", 0.2);
+  const PacCoefficients p = pac_from_tir(f);
+  EXPECT_DOUBLE_EQ(p.params.fz_max_n, 25000.0);
+  EXPECT_DOUBLE_EQ(p.params.kappa_max, 0.4);
+  EXPECT_DOUBLE_EQ(p.params.alpha_max_rad, 0.2);
+  EXPECT_DOUBLE_EQ(p.params.gamma_max_rad, 0.5);  // not given: the default
+  EXPECT_NE(p.note.find("KPUMIN…KPUMAX: PAC89/PAC94 limits are symmetric"), std::string::npos)
+      << p.note;
+  const auto status = [&](double fz, double kappa, double alpha) {
+    return pac::pac89_eval(p.params, pac::PacInput<double>{fz, kappa, alpha, 0.0},
+                           pac::Slip::kCombined)
+        .status;
+  };
+  EXPECT_EQ(status(20000.0, 0.1, 0.1), Status::ok);
+  EXPECT_EQ(status(30000.0, 0.1, 0.1), Status::out_of_range);
+  EXPECT_EQ(status(20000.0, 0.8, 0.1), Status::out_of_range);
+  EXPECT_EQ(status(20000.0, 0.1, 0.5), Status::out_of_range);
 }
 
 TEST(TirModel, PacLoaderRoutesAndRefuses) {
