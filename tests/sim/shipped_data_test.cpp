@@ -1,5 +1,5 @@
 // The data the project ships (data/tyres, tests/data) against the originals it was made from
-// (TREAD_REFDATA_DIR, by default ../shared/refdata; see data/PROVENANCE.md and
+// (TREAD_REFDATA_DIR, none by default; see data/PROVENANCE.md and
 // scripts/import-refdata.sh): every number carried over unchanged, no third-party comment
 // carried over. Without the originals beside the clone the comparisons skip with that reason; the
 // checks of the shipped files themselves always run.
