@@ -1,6 +1,7 @@
 #include "tyre/mf_parameter_checks.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 namespace tread::tyre {
 
@@ -63,6 +64,22 @@ void check_mf_parameters(const mf::MfParameters<double>& p, const tir::TirFile& 
   if (is_zero(p.breff) && is_zero(p.dreff) && is_zero(p.freff)) {
     fail(file, "BREFF",
          "BREFF, DREFF and FREFF are all 0: the effective rolling radius law is undefined");
+  }
+  positive(file, "Q_RE0", p.q_re0, "the free radius R0·Q_RE0 sets the rolling and loaded radii");
+  {
+    // Re at FNOMIN standing still: R0·Q_RE0 − (Fz0/Cz)·(DREFF·atan(BREFF) + FREFF). At or below
+    // 0 the rolling radius and ω of every load about the nominal one are nonsense.
+    const double deflection_m =
+        (p.fnomin_n / p.vertical_stiffness_npm) * (p.dreff * std::atan(p.breff) + p.freff);
+    const double re_m = p.unloaded_radius_m * p.q_re0 - deflection_m;
+    if (!(re_m > 0.0)) {
+      char re_text[32];
+      std::snprintf(re_text, sizeof re_text, "%.4g", re_m);
+      fail(file, file.find_any("Q_RE0") != nullptr ? "Q_RE0" : "UNLOADED_RADIUS",
+           "the effective rolling radius at FNOMIN, UNLOADED_RADIUS·Q_RE0 − (FNOMIN/"
+           "VERTICAL_STIFFNESS)·(DREFF·atan(BREFF) + FREFF) = " +
+               std::string(re_text) + " m, is not above 0");
+    }
   }
   if (is_zero(p.pcx1 * p.lcx)) {
     fail(file, "PCX1", "PCX1 · LCX = 0: the Fx stiffness factor Bx = Kx/(Cx·Dx) divides by it");

@@ -7,7 +7,8 @@
 // all 0 (no effective rolling radius law); PCX1·LCX or PCY1·LCY = 0 (B = K/(C·D) divides by it);
 // a range whose maximum is not above its minimum (FZMIN/FZMAX, KPUMIN/KPUMAX, ALPMIN/ALPMAX,
 // CAMMIN/CAMMAX, PRESMIN/PRESMAX); MF 6.x: NOMPRES or INFLPRES ≤ 0 (the pressure terms divide by
-// NOMPRES). Warnings: VXLOW ≤ 0, WIDTH ≤ 0 (MF 6.x contact width), FNOMIN outside FZMIN…FZMAX.
+// NOMPRES); Q_RE0 ≤ 0, or an effective rolling radius ≤ 0 at FNOMIN. Warnings: VXLOW ≤ 0,
+// WIDTH ≤ 0 (MF 6.x contact width), FNOMIN outside FZMIN…FZMAX.
 #include <string>
 
 #include "mf/mf_parameters.hpp"

@@ -182,6 +182,14 @@ TEST(MfParametersFromTir, DefectiveParametersAreRefused) {
   EXPECT_EQ(refused("[M]\nFITTYP = 6\nPCX1 = 1.6\nFNOMIN = 20000\nFZMIN = 12000\n"),
             "d.tir:5: FZMAX = 10000 (absent: default) is not above FZMIN = 12000 (the range is "
             "empty)");
+  // Q_RE0 = 0 (a public FSAE file) made Re negative and Rl 0 under `ok`.
+  EXPECT_EQ(refused("[M]\nFITTYP = 6\nPCX1 = 1.6\nQ_RE0 = 0\n"),
+            "d.tir:4: Q_RE0 = 0 must be > 0 (the free radius R0·Q_RE0 sets the rolling and "
+            "loaded radii)");
+  // A rolling-radius law deflecting the tyre by more than its radius at the nominal load.
+  EXPECT_EQ(refused("[M]\nFITTYP = 61\nPCX1 = 1.6\nUNLOADED_RADIUS = 0.3\nFREFF = 300\n"),
+            "d.tir:4: the effective rolling radius at FNOMIN, UNLOADED_RADIUS·Q_RE0 − "
+            "(FNOMIN/VERTICAL_STIFFNESS)·(DREFF·atan(BREFF) + FREFF) = -5.707 m, is not above 0");
   // MF 5.2 has no pressure terms: a zero NOMPRES there is not an error.
   EXPECT_EQ(refused("[M]\nFITTYP = 6\nPCX1 = 1.6\nNOMPRES = 0\n"), "accepted");
   const tyre::MfTirParameters w = tyre::mf_parameters_from_tir(
