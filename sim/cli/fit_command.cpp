@@ -6,6 +6,8 @@
 //  - --synthesize FROM.tir: writes synthetic measurements (the test-rig grid of
 //    sim/fit/synthetic_measurements.hpp, Gaussian noise --noise × peak, seeded by --seed) as CSV.
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -20,6 +22,7 @@
 #include "fit/mf_coefficients.hpp"
 #include "fit/mf_staged_fit.hpp"
 #include "fit/simple_fit.hpp"
+#include "fit/slope_signs.hpp"
 #include "fit/synthetic_measurements.hpp"
 #include "tir/tir_file.hpp"
 #include "tir/tir_units.hpp"
@@ -48,6 +51,10 @@ void progress_line(const std::string& line) {
 }
 
 void run_synthesize(const FitCliState& s) {
+  if (!(s.noise >= 0.0) || !std::isfinite(s.noise)) {
+    throw std::runtime_error("--noise " + tir::format_number(s.noise) +
+                             ": the noise level must be a finite number ≥ 0");
+  }
   const tyre::MfTirParameters truth = tyre::load_mf_parameters(s.synthesize);
   fit::SyntheticGrid grid;
   grid.noise_rel = s.noise;
@@ -58,6 +65,33 @@ void run_synthesize(const FitCliState& s) {
   fit::write_measurement_csv(data, out);
   if (!out) throw std::runtime_error(s.output + ": cannot write");
   std::cerr << "tread fit: " << data.points.size() << " synthetic points -> " << s.output << "\n";
+}
+
+// Points with Fz ≤ 0 are not fitted (or the whole file is refused: see fit::drop_unloaded).
+void drop_unloaded(fit::MeasurementSet& data) {
+  std::size_t first_line = 0;
+  const std::size_t dropped = fit::drop_unloaded(data, first_line);
+  if (dropped > 0) {
+    std::cerr << "tread fit: warning: " << dropped << " points with Fz ≤ 0 (a wheel off the "
+              << "ground) are not fitted; the first at " << data.source << ":" << first_line
+              << "\n";
+  }
+}
+
+std::string significant(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", v);
+  return text;
+}
+
+// Fits worse than the mean of their points (R² < 0) are failures, not results.
+void check_r2(const std::vector<std::string>& failed) {
+  if (failed.empty()) return;
+  std::string what;
+  for (const std::string& f : failed) what += "\n  " + f;
+  throw std::runtime_error(
+      "the fit failed: R² < 0 (worse than the points' mean) for" + what +
+      "\nno result written (a --report or --plots asked for show the failed fit)");
 }
 
 // The columns the fit does not read, said rather than dropped silently; a pressure column above
@@ -103,10 +137,11 @@ void run_staged(const FitCliState& s) {
   }
   fit::check_model(start, model, s.start);
   if (s.neutral_start) start = fit::neutral_start(start, model);
-  const fit::MeasurementSet data = fit::load_measurements(s.input, convention_of(s));
+  fit::MeasurementSet data = fit::load_measurements(s.input, convention_of(s));
   std::cerr << "tread fit: " << data.points.size() << " points from " << data.source << "; staged "
             << s.model << " fit\n";
   report_ignored(data, start);
+  drop_unloaded(data);
   fit::check_rolling(data);
   const fit::StagedFit result = fit::fit_mf_staged(data, start, model, progress_line);
   if (result.stages.empty()) {
@@ -142,14 +177,16 @@ void run_staged(const FitCliState& s) {
       std::cerr << " (no data for them): written at their book values, which the fit used\n";
     }
   }
-  tir::write_tir(file, s.output);
-  std::cerr << "tread fit: " << result.stages.size() << " stages in " << result.seconds << " s -> "
-            << s.output << "\n";
+  std::vector<std::string> failed;
   for (const auto& st : fit::final_stats(result, data)) {
     std::cerr << "tread fit: fit error " << fit::fit_channel_name(st.channel)
               << " at Fz = " << st.fz_n << " N: RMS " << st.rms << ' '
               << fit::fit_channel_unit(st.channel) << ", R² " << st.r2 << " (" << st.points
               << " points)\n";
+    if (!(st.r2 >= 0.0)) {
+      failed.push_back(std::string(fit::fit_channel_name(st.channel)) + " at Fz = " +
+                       tir::format_number(st.fz_n) + " N (R² " + significant(st.r2) + ")");
+    }
   }
   if (!s.report.empty()) {
     std::ofstream out(s.report);
@@ -160,6 +197,13 @@ void run_staged(const FitCliState& s) {
     fit::plot_staged_fit(result, data, s.plots);
     std::cerr << "tread fit: plots in " << s.plots << "\n";
   }
+  for (const std::string& d : fit::sign_doubts(result, data)) {
+    std::cerr << "tread fit: warning: " << d << "\n";
+  }
+  check_r2(failed);
+  tir::write_tir(file, s.output);
+  std::cerr << "tread fit: " << result.stages.size() << " stages in " << result.seconds << " s -> "
+            << s.output << "\n";
 }
 
 void run_fit(const FitCliState& s) {
@@ -178,19 +222,15 @@ void run_fit(const FitCliState& s) {
                              ": --model simple writes the per-load constants as .csv (a .tir needs "
                              "a full coefficient set: --model mf61 or pac2002)");
   }
-  const fit::MeasurementSet data = fit::load_measurements(s.input, convention_of(s));
+  fit::MeasurementSet data = fit::load_measurements(s.input, convention_of(s));
   std::cerr << "tread fit: " << data.points.size() << " points from " << data.source << "\n";
   report_ignored(data, std::nullopt);
+  drop_unloaded(data);
   fit::SimpleFitSettings settings;
   settings.asymmetric_e = s.asymmetric_e;
   const fit::SimpleFit result = fit::fit_simple(data, settings, progress_line);
   if (result.fits.empty()) {
     throw std::runtime_error(data.source + ": no pure-slip sweep with enough points to fit");
-  }
-  {
-    std::ofstream out(s.output);
-    fit::write_simple_fit_csv(result, out);
-    if (!out) throw std::runtime_error(s.output + ": cannot write");
   }
   if (!s.report.empty()) {
     std::ofstream out(s.report);
@@ -201,6 +241,28 @@ void run_fit(const FitCliState& s) {
     fit::plot_simple_fit(result, s.plots);
     std::cerr << "tread fit: plots in " << s.plots << "\n";
   }
+  std::vector<std::string> failed;
+  for (const fit::ChannelFit& f : result.fits) {
+    if (!(f.r2 >= 0.0)) {
+      failed.push_back(std::string(fit::channel_name(f.channel)) + " at Fz = " +
+                       tir::format_number(f.fz_n) + " N (R² " + significant(f.r2) + ")");
+    }
+  }
+  for (const fit::Channel c : fit::kChannels) {
+    std::vector<fit::LoadSlope> slopes;
+    for (const fit::ChannelFit& f : result.fits) {
+      if (f.channel == c) slopes.push_back({f.fz_n, fit::slope_at_origin(f.constants)});
+    }
+    const fit::SlopeOf which = c == fit::Channel::fx_kappa   ? fit::SlopeOf::fx_kappa
+                               : c == fit::Channel::fy_alpha ? fit::SlopeOf::fy_alpha
+                                                             : fit::SlopeOf::mz_alpha;
+    const std::string d = fit::slope_sign_doubt(which, slopes);
+    if (!d.empty()) std::cerr << "tread fit: warning: " << d << "\n";
+  }
+  check_r2(failed);
+  std::ofstream out(s.output);
+  fit::write_simple_fit_csv(result, out);
+  if (!out) throw std::runtime_error(s.output + ": cannot write");
 }
 
 void add_fit_command(CLI::App& app) {
@@ -224,9 +286,11 @@ void add_fit_command(CLI::App& app) {
       ->check(CLI::IsMember({"simple", "pac2002", "mf61"}))
       ->capture_default_str();
   fit->add_option("--input", state.input,
-                  "measurements: .tdx, or .csv with Fx_N|FX|FXW, Fy_N|FY|FYW, Mz_Nm|MZ|MZW [N, "
-                  "N m] and the inputs: " +
-                      tyre::input_column_help())
+                  "measurements: .tdx, or .csv read as tread mf eval reads it (',', ';' or tab; "
+                  "decimal commas with ';' or tab; a units row under the header) with Fx_N|FX|FXW, "
+                  "Fy_N|FY|FYW [N], Fx_kN, Fy_kN [kN], Mz_Nm|MZ|MZW [N m], Mz_kNm [kN m] and the "
+                  "inputs: " +
+                      tyre::input_column_help() + ". Points with Fz <= 0 are not fitted")
       ->check(CLI::ExistingFile);
   fit->add_option("--output", state.output,
                   "result: per-load constants (.csv) for simple, a .tir for mf61/pac2002, the "

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <istream>
 #include <map>
@@ -38,15 +39,6 @@ std::optional<double> parse_number(const std::string& text) {
     return std::nullopt;
   }
   return value;
-}
-
-std::vector<std::string> split(const std::string& line, char sep) {
-  std::vector<std::string> cells;
-  std::string cell;
-  std::istringstream s(line);
-  while (std::getline(s, cell, sep)) cells.push_back(cell);
-  if (!line.empty() && line.back() == sep) cells.emplace_back();
-  return cells;
 }
 
 std::vector<std::string> split_ws(const std::string& line) {
@@ -88,10 +80,6 @@ void set_field(MeasurementPoint& p, Field f, double v) {
   }
 }
 
-bool is_output(Field f) {
-  return f == Field::fx || f == Field::fy || f == Field::mz;
-}
-
 void check_has_output(const std::map<Field, std::size_t>& columns, const std::string& name,
                       std::size_t line, const char* what) {
   if (columns.count(Field::fx) + columns.count(Field::fy) + columns.count(Field::mz) == 0) {
@@ -101,126 +89,42 @@ void check_has_output(const std::map<Field, std::size_t>& columns, const std::st
 
 }  // namespace
 
-// A CSV column: the inputs by tyre::recognise_input_column (the names `tread mf eval` accepts), the
-// measured outputs by the names below; the factor takes the cell to SI and ISO-W.
-struct CsvColumn {
-  Field field;
-  double factor;
-};
-
-std::optional<CsvColumn> csv_column(const std::string& header, tyre::SignConvention convention) {
-  if (const auto input = tyre::recognise_input_column(header)) {
-    const double sign = tyre::iso_w_sign(convention, input->quantity);
-    switch (input->quantity) {
-      case tyre::InputQuantity::fz:
-        return CsvColumn{Field::fz, input->to_si * sign};
-      case tyre::InputQuantity::kappa:
-        return CsvColumn{Field::kappa, input->to_si * sign};
-      case tyre::InputQuantity::alpha:
-        return CsvColumn{Field::alpha, input->to_si * sign};
-      case tyre::InputQuantity::gamma:
-        return CsvColumn{Field::gamma, input->to_si * sign};
-      case tyre::InputQuantity::vx:
-        return CsvColumn{Field::vx, input->to_si * sign};
-      case tyre::InputQuantity::phit:
-      case tyre::InputQuantity::pressure:
-        return std::nullopt;  // not held by MeasurementPoint
-    }
-  }
-  // Measured forces and moments: SI names, kN names, TTC names (FX, FY, MZ in N and N m), TYDEX
-  // channels.
-  struct Output {
-    Field field;
-    tyre::MeasuredQuantity quantity;
-    double to_si;
-  };
-  static const std::map<std::string, Output> outputs = {
-      {"FX_N", {Field::fx, tyre::MeasuredQuantity::fx, 1.0}},
-      {"FX", {Field::fx, tyre::MeasuredQuantity::fx, 1.0}},
-      {"FXW", {Field::fx, tyre::MeasuredQuantity::fx, 1.0}},
-      {"FX_KN", {Field::fx, tyre::MeasuredQuantity::fx, 1000.0}},
-      {"FY_N", {Field::fy, tyre::MeasuredQuantity::fy, 1.0}},
-      {"FY", {Field::fy, tyre::MeasuredQuantity::fy, 1.0}},
-      {"FYW", {Field::fy, tyre::MeasuredQuantity::fy, 1.0}},
-      {"FY_KN", {Field::fy, tyre::MeasuredQuantity::fy, 1000.0}},
-      {"MZ_NM", {Field::mz, tyre::MeasuredQuantity::mz, 1.0}},
-      {"MZ", {Field::mz, tyre::MeasuredQuantity::mz, 1.0}},
-      {"MZW", {Field::mz, tyre::MeasuredQuantity::mz, 1.0}},
-      {"MZ_KNM", {Field::mz, tyre::MeasuredQuantity::mz, 1000.0}}};
-  const auto it = outputs.find(upper(trim(header)));
-  if (it == outputs.end()) return std::nullopt;
-  return CsvColumn{it->second.field,
-                   it->second.to_si * tyre::output_sign(convention, it->second.quantity)};
-}
-
 MeasurementSet read_measurement_csv(std::istream& in, const std::string& name,
                                     tyre::SignConvention convention) {
+  using tyre::InputQuantity;
+  using tyre::MeasuredQuantity;
+  tyre::InputTableOptions options;
+  options.convention = convention;
+  options.required = {InputQuantity::fz, InputQuantity::kappa, InputQuantity::alpha};
+  options.measured = true;
+  tyre::InputTable table(in, name, options);
+  if (!table.has(MeasuredQuantity::fx) && !table.has(MeasuredQuantity::fy) &&
+      !table.has(MeasuredQuantity::mz)) {
+    host::text::fail_at(name, static_cast<std::size_t>(table.header_line()),
+                        "no measured column (Fx_N, Fy_N or Mz_Nm, or one of their other names)");
+  }
   MeasurementSet set;
   set.source = name;
-  std::map<Field, std::size_t> columns;
-  std::map<Field, double> factors;
-  std::size_t header_cells = 0;
-  bool have_header = false;
-  std::string raw;
-  std::size_t line = 0;
-  while (std::getline(in, raw)) {
-    ++line;
-    if (!raw.empty() && raw.back() == '\r') raw.pop_back();
-    if (line == 1 && raw.rfind("\xEF\xBB\xBF", 0) == 0) raw.erase(0, 3);  // UTF-8 BOM
-    const std::string t = trim(raw);
-    if (t.empty() || t.front() == '#') continue;
-    const std::vector<std::string> cells = split(t, ',');
-    if (!have_header) {
-      have_header = true;
-      header_cells = cells.size();
-      for (std::size_t i = 0; i < cells.size(); ++i) {
-        const std::optional<CsvColumn> c = csv_column(cells[i], convention);
-        if (!c) {
-          set.ignored_columns.push_back(trim(cells[i]));
-          const auto input = tyre::recognise_input_column(cells[i]);
-          set.has_pressure =
-              set.has_pressure || (input && input->quantity == tyre::InputQuantity::pressure);
-          continue;
-        }
-        if (!columns.emplace(c->field, i).second) {
-          host::text::fail_at(name, line, "repeated column '" + trim(cells[i]) + "'");
-        }
-        factors[c->field] = c->factor;
-      }
-      if (columns.count(Field::fz) == 0) host::text::fail_at(name, line, "missing column 'Fz_N'");
-      if (columns.count(Field::kappa) == 0)
-        host::text::fail_at(name, line, "missing column 'kappa'");
-      if (columns.count(Field::alpha) == 0)
-        host::text::fail_at(name, line, "missing column 'alpha_rad'");
-      check_has_output(columns, name, line, "column (Fx_N, Fy_N or Mz_Nm)");
-      continue;
-    }
-    if (cells.size() != header_cells) {
-      host::text::fail_at(name, line,
-                          "expected " + std::to_string(header_cells) + " cells, found " +
-                              std::to_string(cells.size()));
-    }
+  set.ignored_columns = table.ignored_columns();
+  // Inputs the fit does not take (MeasurementPoint holds none of them).
+  for (const InputQuantity q : {InputQuantity::phit, InputQuantity::pressure}) {
+    if (table.has(q)) set.ignored_columns.push_back(table.column_name(q));
+  }
+  set.has_pressure = table.has(InputQuantity::pressure);
+  tyre::MeasuredValues measured{};
+  while (const std::optional<tyre::InputRow> row = table.next(&measured)) {
     MeasurementPoint p;
-    p.line = line;
-    for (const auto& [field, index] : columns) {
-      const std::string& cell = cells[index];
-      if (is_output(field) && trim(cell).empty()) continue;  // not measured here
-      const std::optional<double> v = parse_number(cell);
-      if (!v)
-        host::text::fail_at(
-            name, line,
-            "cell " + std::to_string(index + 1) + " '" + trim(cell) + "' is not a finite number");
-      const double si = *v * factors[field];
-      if (!std::isfinite(si)) {
-        host::text::fail_at(name, line,
-                            "cell " + std::to_string(index + 1) + " '" + trim(cell) +
-                                "' is out of range once converted to SI units");
-      }
-      set_field(p, field, si);
-    }
+    p.line = static_cast<std::size_t>(row->line);
+    p.fz_n = (*row)[InputQuantity::fz];
+    p.kappa = (*row)[InputQuantity::kappa];
+    p.alpha_rad = (*row)[InputQuantity::alpha];
+    p.gamma_rad = (*row)[InputQuantity::gamma];
+    p.vx_mps = (*row)[InputQuantity::vx];
+    p.fx_n = measured[static_cast<std::size_t>(MeasuredQuantity::fx)];
+    p.fy_n = measured[static_cast<std::size_t>(MeasuredQuantity::fy)];
+    p.mz_nm = measured[static_cast<std::size_t>(MeasuredQuantity::mz)];
     set.points.push_back(p);
   }
-  if (!have_header) host::text::fail_at(name, line, "no header row");
   return set;
 }
 
@@ -348,6 +252,31 @@ void check_rolling(const MeasurementSet& set) {
                           "Formula's slips divide by the rolling speed, so every point needs one");
     }
   }
+}
+
+std::size_t drop_unloaded(MeasurementSet& set, std::size_t& first_line) {
+  std::size_t unloaded = 0;
+  first_line = 0;
+  for (const MeasurementPoint& p : set.points) {
+    if (p.fz_n > 0.0) continue;
+    if (unloaded++ == 0) first_line = p.line;
+  }
+  if (unloaded == 0) return 0;
+  if (2 * unloaded >= set.points.size()) {
+    const auto first = std::find_if(set.points.begin(), set.points.end(),
+                                    [](const MeasurementPoint& p) { return !(p.fz_n > 0.0); });
+    char fz[32];
+    std::snprintf(fz, sizeof fz, "%g", first->fz_n);
+    host::text::fail_at(set.source, first_line,
+                        "Fz = " + std::string(fz) + " N: " + std::to_string(unloaded) + " of " +
+                            std::to_string(set.points.size()) +
+                            " points have a load ≤ 0; the fit takes ISO-W axes (z up, Fz > 0): "
+                            "data with z down (SAE J670, e.g. FSAE TTC) need --convention sae");
+  }
+  set.points.erase(std::remove_if(set.points.begin(), set.points.end(),
+                                  [](const MeasurementPoint& p) { return !(p.fz_n > 0.0); }),
+                   set.points.end());
+  return unloaded;
 }
 
 MeasurementSet load_measurements(const std::filesystem::path& path,

@@ -2,14 +2,13 @@
 // Tyre measurements for the fitter (host side: allocates, throws).
 //
 // Two formats:
-//  - CSV with the input column names `tread mf eval` accepts (tyre::recognise_input_column: Fz_N,
-//    kappa, alpha_rad and their other names and units, e.g. FZ, SL, SA [deg], IA [deg], V [km/h];
-//    gamma and Vx optional, default 0), and the measured outputs Fx_N|FX|FXW, Fy_N|FY|FYW,
-//    Mz_Nm|MZ|MZW (N, N m; any subset, at least one), in the file's sign convention (converted to
-//    ISO-W as tyre::InputTable does: the outputs by tyre::output_sign). Unknown columns are ignored (so
-//    an `mf eval` output file, whose inputs are named in_*, can be read after renaming). Blank
-//    lines and lines starting with
-//    '#' are skipped; an empty cell means "not measured" for an output column.
+//  - CSV read by tyre::InputTable, as `tread mf eval` reads it (the same input names and units,
+//    e.g. FZ, SL, SA [deg], IA [deg], V [km/h]; ',', ';' or tab separators, decimal commas with
+//    ';' or tab; a units row under the header), with InputTableOptions::measured: the measured
+//    outputs Fx_N|FX|FXW, Fy_N|FY|FYW, Mz_Nm|MZ|MZW (and kN names; any subset, at least one),
+//    converted from the file's sign convention to ISO-W by tyre::output_sign. Fz_N, kappa and
+//    alpha_rad are required; gamma and Vx default to 0. Other columns (and pressure, turn slip)
+//    are listed as ignored. An empty cell of a measured column means "not measured there".
 //  - TYDEX (.tdx): the **MEASURCHANNELS section names the channels (name, description, unit,
 //    conversion factor, measurement offset, physical offset) and **MEASURDATA holds one row per
 //    sample in that order. Channels used: FZW (vertical load), LONGSLIP, SLIPANGL, INCLANGL,
@@ -17,7 +16,7 @@
 //    A sample's physical value is (raw − measurement offset) · factor + physical offset, in the
 //    channel's unit (our reading of TYDEX 1.3; files written by MFeval use 1, 0, 0).
 // Errors: std::runtime_error with `file:line: message` (a bad cell, a row with the wrong number of
-// cells, a missing required column/channel, an unknown unit).
+// cells, a missing required column/channel, a repeated column, an unknown unit).
 
 #include <cstddef>
 #include <filesystem>
@@ -58,6 +57,12 @@ MeasurementSet read_tydex(std::istream& in, const std::string& name);
 /// Throws (file:line of the first) if a point has Vx = 0: the staged Magic Formula fit needs the
 /// rolling speed (its residuals and their derivatives are not finite at standstill).
 void check_rolling(const MeasurementSet& set);
+
+/// Removes the points with Fz ≤ 0 (a wheel off the ground: the Magic Formula has no force there)
+/// and returns how many there were (`first_line`: the first's line). Throws (file:line of the
+/// first) if they are half the points or more: loads written with z down (SAE J670, FSAE TTC
+/// data) read as ISO-W, for which the message names --convention sae.
+std::size_t drop_unloaded(MeasurementSet& set, std::size_t& first_line);
 
 /// Reads `path` as TYDEX if it ends in .tdx (any case; TYDEX W axes), otherwise as CSV in
 /// `convention`.

@@ -34,7 +34,7 @@ void aligning_start(const std::vector<StageSample>& mz, const std::vector<double
     qdz.push_back(-mz_slope / kya * fz0 / (fz * p.unloaded_radius_m * p.ltr));
   }
   if (dfz.empty()) return;
-  std::tie(p.qdz1, p.qdz2) = fit_line(dfz, qdz);
+  std::tie(p.qdz1, p.qdz2) = fit_line(dfz, qdz, p.qdz2);
 }
 
 }  // namespace

@@ -67,12 +67,18 @@ void lateral_staged_start(const MeasurementSet& data, mf::MfParameters<double>& 
   double csum = 0.0;
   for (double v : c) csum += v;
   p.pcy1 = csum / static_cast<double>(c.size());
-  std::tie(p.pdy1, p.pdy2) = fit_line(dfz, mu);
-  std::tie(p.pey1, p.pey2) = fit_line(dfz, e);
+  std::tie(p.pdy1, p.pdy2) = fit_line(dfz, mu, p.pdy2);
+  std::tie(p.pey1, p.pey2) = fit_line(dfz, e, p.pey2);
   p.pey3 = 0.0;
-  std::tie(p.phy1, p.phy2) = fit_line(dfz, sh);
-  std::tie(p.pvy1, p.pvy2) = fit_line(dfz, svfz);
-  // Kya/Fz0 = PKY1 sin(PKY4 atan(Fz/(PKY2 Fz0))): a few starts for PKY2, best kept.
+  std::tie(p.phy1, p.phy2) = fit_line(dfz, sh, p.phy2);
+  std::tie(p.pvy1, p.pvy2) = fit_line(dfz, svfz, p.pvy2);
+  // Kya/Fz0 = PKY1 sin(PKY4 atan(Fz/(PKY2 Fz0))): a few starts for PKY2, best kept. One load
+  // does not tell PKY2 and PKY4 apart from PKY1: the start file's are kept, PKY1 matches Kya.
+  if (fzr.size() < 2) {
+    const double shape = std::sin(p.pky4 * std::atan(fzr.front() / p.pky2));
+    if (std::fabs(shape) > 1e-6) p.pky1 = kyar.front() / shape;
+    return;
+  }
   double best = std::numeric_limits<double>::infinity();
   for (double pky2 : {1.0, 2.0, 3.0, 5.0}) {
     std::array<double, 3> k = {kyar.back(), pky2, 2.0};

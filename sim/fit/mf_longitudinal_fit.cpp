@@ -40,14 +40,14 @@ void longitudinal_staged_start(const MeasurementSet& data, mf::MfParameters<doub
   double csum = 0.0;
   for (double v : c) csum += v;
   p.pcx1 = csum / static_cast<double>(c.size());
-  std::tie(p.pdx1, p.pdx2) = fit_line(dfz, mu);
-  std::tie(p.pex1, p.pex2) = fit_line(dfz, e);
+  std::tie(p.pdx1, p.pdx2) = fit_line(dfz, mu, p.pdx2);
+  std::tie(p.pex1, p.pex2) = fit_line(dfz, e, p.pex2);
   p.pex3 = 0.0;
   p.pex4 = 0.0;
-  std::tie(p.pkx1, p.pkx2) = fit_line(dfz, kxfz);
+  std::tie(p.pkx1, p.pkx2) = fit_line(dfz, kxfz, p.pkx2);
   p.pkx3 = 0.0;
-  std::tie(p.phx1, p.phx2) = fit_line(dfz, sh);
-  std::tie(p.pvx1, p.pvx2) = fit_line(dfz, svfz);
+  std::tie(p.phx1, p.phx2) = fit_line(dfz, sh, p.phx2);
+  std::tie(p.pvx1, p.pvx2) = fit_line(dfz, svfz, p.pvx2);
 }
 
 std::vector<StageResult> fit_longitudinal_stages(

@@ -2,11 +2,15 @@
 
 #include <ceres/ceres.h>
 #include <ceres/dynamic_autodiff_cost_function.h>
+#include <ceres/manifold.h>
+
+#include <Eigen/Dense>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
@@ -90,9 +94,51 @@ class Progress : public ceres::IterationCallback {
   const std::function<void(const std::string&)>& f_;
 };
 
+/// The columns of `problem`'s Jacobian (its one parameter block, at its current values) that
+/// are, after scaling each to unit norm, within 1e-6 of the span of the columns before them, or
+/// zero: Gram–Schmidt in the block's order (see fit_stage).
+std::vector<int> dependent_columns(ceres::Problem& problem, std::size_t n) {
+  ceres::CRSMatrix crs;
+  double cost = 0.0;
+  if (!problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, nullptr, nullptr, &crs))
+    return {};
+  Eigen::MatrixXd j = Eigen::MatrixXd::Zero(crs.num_rows, crs.num_cols);
+  for (int r = 0; r < crs.num_rows; ++r) {
+    for (int at = crs.rows[static_cast<std::size_t>(r)];
+         at < crs.rows[static_cast<std::size_t>(r) + 1]; ++at) {
+      j(r, crs.cols[static_cast<std::size_t>(at)]) = crs.values[static_cast<std::size_t>(at)];
+    }
+  }
+  if (!j.allFinite()) return {};
+  double largest = 0.0;
+  for (Eigen::Index c = 0; c < j.cols(); ++c) largest = std::max(largest, j.col(c).norm());
+  std::vector<int> dependent;
+  std::vector<Eigen::VectorXd> basis;
+  for (std::size_t c = 0; c < n && static_cast<Eigen::Index>(c) < j.cols(); ++c) {
+    Eigen::VectorXd v = j.col(static_cast<Eigen::Index>(c));
+    const double norm = v.norm();
+    if (!(norm > 1e-12 * largest)) {
+      dependent.push_back(static_cast<int>(c));
+      continue;
+    }
+    v /= norm;
+    for (int pass = 0; pass < 2; ++pass) {  // twice: classical Gram–Schmidt's lost orthogonality
+      for (const Eigen::VectorXd& b : basis) v -= b.dot(v) * b;
+    }
+    const double rest = v.norm();
+    if (!(rest > 1e-6)) {
+      dependent.push_back(static_cast<int>(c));
+      continue;
+    }
+    basis.push_back(v / rest);
+  }
+  return dependent;
+}
+
 }  // namespace
 
-std::pair<double, double> fit_line(const std::vector<double>& u, const std::vector<double>& v) {
+std::pair<double, double> fit_line(const std::vector<double>& u, const std::vector<double>& v,
+                                   double single_slope) {
   const double n = static_cast<double>(u.size());
   double su = 0, sv = 0, suu = 0, suv = 0;
   for (std::size_t i = 0; i < u.size(); ++i) {
@@ -102,7 +148,7 @@ std::pair<double, double> fit_line(const std::vector<double>& u, const std::vect
     suv += u[i] * v[i];
   }
   const double den = n * suu - su * su;
-  const double b = u.size() > 1 && std::fabs(den) > 0.0 ? (n * suv - su * sv) / den : 0.0;
+  const double b = u.size() > 1 && std::fabs(den) > 0.0 ? (n * suv - su * sv) / den : single_slope;
   return {(sv - b * su) / n, b};
 }
 
@@ -252,6 +298,7 @@ StageResult fit_stage(const StageSpec& spec, const std::vector<StageSample>& sam
   result.start = k;
   const mf::MfParameters<double> base = params;
   const StageResidual residual{&base, &samples, &indices, fit_options()};
+  std::vector<int> held;  // indices into spec.keys, held at their start values
   auto make_problem = [&](ceres::Problem& problem, std::vector<double>& x) {
     ceres::CostFunction* cost = nullptr;
     if (n <= static_cast<std::size_t>(kSmallStride)) {
@@ -277,6 +324,8 @@ StageResult fit_stage(const StageSpec& spec, const std::vector<StageSample>& sam
         problem.SetParameterUpperBound(x.data(), static_cast<int>(i), b.upper);
       }
     }
+    if (!held.empty())
+      problem.SetManifold(x.data(), new ceres::SubsetManifold(static_cast<int>(n), held));
   };
   ceres::Solver::Options so;
   so.linear_solver_type = ceres::DENSE_QR;
@@ -318,10 +367,24 @@ StageResult fit_stage(const StageSpec& spec, const std::vector<StageSample>& sam
     }
     k = chosen;
   }
+  const std::vector<double> chosen_start = k;
   ceres::Solver::Summary best;
-  ceres::Problem problem;
-  make_problem(problem, k);
-  ceres::Solve(so, &problem, &best);
+  auto problem = std::make_unique<ceres::Problem>();
+  make_problem(*problem, k);
+  ceres::Solve(so, problem.get(), &best);
+  held = dependent_columns(*problem, n);
+  if (!held.empty() && held.size() < n) {
+    // Solved again from the chosen start, the undetermined keys held at the stage's start values.
+    k = chosen_start;
+    for (const int i : held)
+      k[static_cast<std::size_t>(i)] = result.start[static_cast<std::size_t>(i)];
+    problem = std::make_unique<ceres::Problem>();
+    make_problem(*problem, k);
+    ceres::Solve(so, problem.get(), &best);
+  } else {
+    held.clear();
+  }
+  for (const int i : held) result.held.push_back(spec.keys[static_cast<std::size_t>(i)]);
   const double final_cost = best.final_cost;
   result.iterations = static_cast<int>(best.iterations.size());
   result.converged = best.termination_type == ceres::CONVERGENCE;
@@ -340,12 +403,13 @@ StageResult fit_stage(const StageSpec& spec, const std::vector<StageSample>& sam
   // it crashed the SVD).
   const bool finite = std::isfinite(final_cost) &&
                       std::all_of(k.begin(), k.end(), [](double v) { return std::isfinite(v); });
-  if (best.IsSolutionUsable() && finite && covariance.Compute(blocks, &problem) &&
+  if (best.IsSolutionUsable() && finite && covariance.Compute(blocks, problem.get()) &&
       covariance.GetCovarianceBlock(k.data(), k.data(), c.data())) {
     // The residuals are weighted: the variance of a weighted residual scales the covariance.
     const double s2 = 2.0 * final_cost / static_cast<double>(samples.size() - n);
     for (std::size_t i = 0; i < n; ++i)
       result.stddev[i] = std::sqrt(std::max(0.0, c[i * n + i] * s2));
+    for (const int i : held) result.stddev[static_cast<std::size_t>(i)] = kNaN;
   }
   result.stats = channel_load_stats(params, samples, levels);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -27,8 +27,10 @@ enum class MfFitModel { mf61, pac2002 };
 /// |slip| (and |γ| in rad) up to which a point counts as pure slip / zero camber.
 inline constexpr double kPureTolerance = 1e-3;
 
-/// Least-squares line v = a + b·u as {a, b}; b = 0 with a single point.
-std::pair<double, double> fit_line(const std::vector<double>& u, const std::vector<double>& v);
+/// Least-squares line v = a + b·u as {a, b}; where the points do not give a slope (a single
+/// point, or every u the same) b = `single_slope` and a = mean(v − b·u).
+std::pair<double, double> fit_line(const std::vector<double>& u, const std::vector<double>& v,
+                                   double single_slope = 0.0);
 
 enum class FitChannel { fx, fy, mz };
 const char* fit_channel_name(FitChannel c);  ///< "Fx", "Fy", "Mz"
@@ -70,7 +72,11 @@ struct ChannelLoadStats {
 struct StageResult {
   std::string name;
   std::vector<std::string> keys;
-  std::vector<double> start, values, stddev;  ///< stddev NaN where not available
+  std::vector<double> start, values, stddev;  ///< stddev NaN where not available (and held)
+  /// Coefficients the stage's points do not determine (a column of the Jacobian that is a
+  /// combination of earlier keys' columns, e.g. PDX2 beside PDX1 at a single load level, or
+  /// without effect, e.g. a camber term on uncambered points): held at their start values.
+  std::vector<std::string> held;
   std::size_t points = 0;
   int iterations = 0;
   bool converged = false;  ///< Ceres reported convergence (false: iteration limit)
@@ -87,8 +93,12 @@ struct StageSpec {
   std::vector<std::vector<std::pair<std::string, double>>> other_starts = {};
 };
 
-/// Fits spec.keys to `samples` starting from (and writing back into) `params`. Throws
-/// std::runtime_error if there are not more samples than coefficients.
+/// Fits spec.keys to `samples` starting from (and writing back into) `params`. A key whose
+/// Jacobian column at the solution is, to 1e-6 of its norm, a combination of the columns of the
+/// keys before it (spec.keys's order: the main coefficients first) is not determined by these
+/// points: the stage is solved again with such keys held at their start values (StageResult::held,
+/// standard deviation NaN). Throws std::runtime_error if there are not more samples than
+/// coefficients.
 StageResult fit_stage(const StageSpec& spec, const std::vector<StageSample>& samples,
                       const std::vector<double>& levels, mf::MfParameters<double>& params,
                       const std::function<void(const std::string&)>& progress);

@@ -17,6 +17,7 @@
 #include "fit/mf_combined_fit.hpp"
 #include "fit/mf_lateral_fit.hpp"
 #include "fit/mf_longitudinal_fit.hpp"
+#include "fit/slope_signs.hpp"
 #include "io/text_line.hpp"
 #include "plot/gnuplot.hpp"
 #include "tir/tir_units.hpp"
@@ -84,6 +85,13 @@ StagedFit fit_mf_staged(const MeasurementSet& data, const mf::MfParameters<doubl
                  std::to_string(s.iterations) + " iterations" +
                  (s.converged ? "" : " (iteration limit)") + ", " +
                  format_significant(s.seconds, 3) + " s");
+        if (!s.held.empty()) {
+          std::string keys;
+          for (const std::string& k : s.held) keys += " " + k;
+          progress("warning: " + s.name +
+                   ": not determined by these points, held at their values before the stage:" +
+                   keys + (fit.levels.size() < 2 ? " (one load level)" : ""));
+        }
       }
       fit.stages.push_back(std::move(s));
     }
@@ -122,15 +130,49 @@ std::vector<ChannelLoadStats> final_stats(const StagedFit& fit, const Measuremen
   return channel_load_stats(fit.params, all, fit.levels);
 }
 
+double fitted_slope(const StagedFit& fit, FitChannel channel, double fz_n, double vx_mps) {
+  StageSample q;
+  q.fz_n = fz_n;
+  q.vx_mps = vx_mps;
+  q.channel = channel;
+  const double h = 1e-5;
+  double& slip = channel == FitChannel::fx ? q.kappa : q.alpha_rad;
+  slip = h;
+  const double up = model_value(fit.params, q);
+  slip = -h;
+  return (up - model_value(fit.params, q)) / (2 * h);
+}
+
+std::vector<std::string> sign_doubts(const StagedFit& fit, const MeasurementSet& data) {
+  std::vector<std::string> doubts;
+  if (data.points.empty()) return doubts;
+  const double vx = data.points.front().vx_mps;
+  for (const FitChannel c : {FitChannel::fx, FitChannel::fy, FitChannel::mz}) {
+    const bool measured = std::any_of(data.points.begin(), data.points.end(), [c](const auto& m) {
+      return std::isfinite(c == FitChannel::fx ? m.fx_n : c == FitChannel::fy ? m.fy_n : m.mz_nm);
+    });
+    if (!measured) continue;
+    const SlopeOf which = c == FitChannel::fx   ? SlopeOf::fx_kappa
+                          : c == FitChannel::fy ? SlopeOf::fy_alpha
+                                                : SlopeOf::mz_alpha;
+    std::vector<LoadSlope> slopes;
+    for (const double fz : fit.levels) slopes.push_back({fz, fitted_slope(fit, c, fz, vx)});
+    std::string d = slope_sign_doubt(which, slopes);
+    if (!d.empty()) doubts.push_back(std::move(d));
+  }
+  return doubts;
+}
+
 void write_staged_report(const StagedFit& fit, const MeasurementSet& data, std::ostream& out) {
   out << "# tread fit --model " << model_name(fit.model) << " (staged)\n\nInput: `" << data.source
       << "`, " << data.points.size() << " points; load levels (N):";
   for (double fz : fit.levels) out << ' ' << format_significant(fz, 6);
   out << ". Whole staged fit: " << format_significant(fit.seconds, 3)
       << " s. Each stage is a separate Ceres problem through the templated core (combined slip, "
-         "limits on); standard deviations from the Ceres covariance (pseudo-inverse: a "
-         "coefficient without effect on the stage's points gets 0) scaled by the residual "
-         "variance.\n";
+         "limits on); standard deviations from the Ceres covariance scaled by the residual "
+         "variance. A coefficient the stage's points do not determine (without effect, or "
+         "acting only as the coefficients before it do, e.g. a load term at one load level) is "
+         "held at its start value: \"held\".\n";
   for (const auto& s : fit.stages) {
     out << "\n## " << s.name << "\n\n"
         << s.points << " points, " << s.iterations << " iterations ("
@@ -139,8 +181,11 @@ void write_staged_report(const StagedFit& fit, const MeasurementSet& data, std::
         << " s.\n\n| coefficient | start | fitted | standard deviation |\n"
         << "|---|---|---|---|\n";
     for (std::size_t i = 0; i < s.keys.size(); ++i) {
+      const bool held = std::find(s.held.begin(), s.held.end(), s.keys[i]) != s.held.end();
       out << "| " << s.keys[i] << " | " << format_significant(s.start[i]) << " | "
-          << format_significant(s.values[i]) << " | " << format_significant(s.stddev[i], 3)
+          << format_significant(s.values[i]) << " | "
+          << (held ? std::string("held (not determined by these points)")
+                   : format_significant(s.stddev[i], 3))
           << " |\n";
     }
     out << "\n| channel | Fz (N) | points | RMS | R² |\n|---|---|---|---|---|\n";
@@ -165,9 +210,8 @@ void write_staged_report(const StagedFit& fit, const MeasurementSet& data, std::
       q.alpha_rad = alpha;
       return model_value(fit.params, q);
     };
-    const double h = 1e-5;
-    const double kx = (at(FitChannel::fx, h, 0) - at(FitChannel::fx, -h, 0)) / (2 * h);
-    const double ky = (at(FitChannel::fy, 0, h) - at(FitChannel::fy, 0, -h)) / (2 * h);
+    const double kx = fitted_slope(fit, FitChannel::fx, fz, vx);
+    const double ky = fitted_slope(fit, FitChannel::fy, fz, vx);
     double fx_peak = 0.0, fy_peak = 0.0;
     for (int i = -300; i <= 300; ++i) {
       fx_peak = std::max(fx_peak, std::fabs(at(FitChannel::fx, i * 1e-3, 0)));

@@ -50,6 +50,14 @@ void set_fitted_coefficients(tir::TirFile& file, const StagedFit& fit);
 /// RMS / R² of the fitted set per channel and load level, on every point of `data`.
 std::vector<ChannelLoadStats> final_stats(const StagedFit& fit, const MeasurementSet& data);
 
+/// The fitted set's slope at the origin (γ = 0, at `fz_n` and `vx_mps`): dFx/dκ at α = 0 for
+/// FitChannel::fx, dFy/dα and dMz/dα at κ = 0 for fy and mz.
+double fitted_slope(const StagedFit& fit, FitChannel channel, double fz_n, double vx_mps);
+
+/// slope_sign_doubt for each load level and each channel the data measure (fitted_slope at the
+/// first point's Vx): the warnings of a fit that mirrors the tyre.
+std::vector<std::string> sign_doubts(const StagedFit& fit, const MeasurementSet& data);
+
 /// Markdown report: per stage the coefficients ± standard deviations, iterations, time, and RMS /
 /// R² per channel and load; the fitted set's slip stiffnesses and peak friction per load; then
 /// RMS / R² of the final set on every point.

@@ -1,8 +1,10 @@
 #include "tyre/input_table.hpp"
 
 #include <cctype>
+#include <cmath>
 #include <cstring>
 #include <istream>
+#include <limits>
 
 #include "io/csv_number.hpp"
 #include "io/text_line.hpp"
@@ -98,6 +100,48 @@ constexpr UnitName kUnits[] = {
     {"psi", InputQuantity::pressure, 6894.757293168361, "psi"},
 };
 
+struct MeasuredAlias {
+  std::string_view name;  // matched without regard to case
+  MeasuredQuantity quantity;
+  double to_si;
+  std::string_view unit;
+};
+
+constexpr double kFootPound = 1.3558179483314004;  // 1 ft·lbf in N m
+
+constexpr MeasuredAlias kMeasuredAliases[] = {
+    {"Fx_N", MeasuredQuantity::fx, 1.0, "N"},    {"FX", MeasuredQuantity::fx, 1.0, "N"},
+    {"FXW", MeasuredQuantity::fx, 1.0, "N"},     {"Fx_kN", MeasuredQuantity::fx, 1000.0, "kN"},
+    {"Fy_N", MeasuredQuantity::fy, 1.0, "N"},    {"FY", MeasuredQuantity::fy, 1.0, "N"},
+    {"FYW", MeasuredQuantity::fy, 1.0, "N"},     {"Fy_kN", MeasuredQuantity::fy, 1000.0, "kN"},
+    {"Mz_Nm", MeasuredQuantity::mz, 1.0, "N m"}, {"MZ", MeasuredQuantity::mz, 1.0, "N m"},
+    {"MZW", MeasuredQuantity::mz, 1.0, "N m"},   {"Mz_kNm", MeasuredQuantity::mz, 1000.0, "kN m"},
+};
+
+// Units a units row may name for a measured output (lower case).
+constexpr MeasuredAlias kMeasuredUnits[] = {
+    {"n", MeasuredQuantity::fx, 1.0, "N"},
+    {"kn", MeasuredQuantity::fx, 1000.0, "kN"},
+    {"lbf", MeasuredQuantity::fx, 4.4482216152605, "lbf"},
+    {"n", MeasuredQuantity::fy, 1.0, "N"},
+    {"kn", MeasuredQuantity::fy, 1000.0, "kN"},
+    {"lbf", MeasuredQuantity::fy, 4.4482216152605, "lbf"},
+    {"n m", MeasuredQuantity::mz, 1.0, "N m"},
+    {"nm", MeasuredQuantity::mz, 1.0, "N m"},
+    {"n-m", MeasuredQuantity::mz, 1.0, "N m"},
+    {"n·m", MeasuredQuantity::mz, 1.0, "N m"},
+    {"n*m", MeasuredQuantity::mz, 1.0, "N m"},
+    {"kn m", MeasuredQuantity::mz, 1000.0, "kN m"},
+    {"knm", MeasuredQuantity::mz, 1000.0, "kN m"},
+    {"kn-m", MeasuredQuantity::mz, 1000.0, "kN m"},
+    {"kn·m", MeasuredQuantity::mz, 1000.0, "kN m"},
+    {"ft-lbf", MeasuredQuantity::mz, kFootPound, "ft-lbf"},
+    {"lbf-ft", MeasuredQuantity::mz, kFootPound, "ft-lbf"},
+};
+
+constexpr std::array<std::string_view, kMeasuredQuantityCount> kMeasuredSiNames = {
+    "Fx_N", "Fy_N", "Fz_N", "Mx_Nm", "My_Nm", "Mz_Nm"};
+
 constexpr std::array<std::string_view, kInputQuantityCount> kSiNames = {
     "Fz_N", "kappa", "alpha_rad", "gamma_rad", "Vx_mps", "phit_1pm", "P_Pa"};
 
@@ -125,6 +169,14 @@ std::optional<InputColumn> recognise_input_column(std::string_view name) {
   const std::string key = lower(trim(name));
   for (const Alias& a : kAliases) {
     if (lower(a.name) == key) return InputColumn{a.quantity, a.to_si, a.unit};
+  }
+  return std::nullopt;
+}
+
+std::optional<MeasuredColumn> recognise_measured_column(std::string_view name) {
+  const std::string key = lower(trim(name));
+  for (const MeasuredAlias& a : kMeasuredAliases) {
+    if (lower(a.name) == key) return MeasuredColumn{a.quantity, a.to_si, a.unit};
   }
   return std::nullopt;
 }
@@ -202,6 +254,7 @@ double output_sign(SignConvention c, MeasuredQuantity q) {
 InputTable::InputTable(std::istream& in, std::string name, InputTableOptions options)
     : in_(in), name_(std::move(name)), options_(std::move(options)) {
   column_.fill(-1);
+  measured_column_.fill(-1);
   std::string line;
   while (std::getline(in_, line)) {
     ++line_;
@@ -222,10 +275,26 @@ InputTable::InputTable(std::istream& in, std::string name, InputTableOptions opt
     header_ = split(t);
     cells_ = header_.size();
     quantity_of_cell_.assign(cells_, -1);
+    header_line_ = line_;
     for (std::size_t i = 0; i < header_.size(); ++i) {
       const std::optional<InputColumn> c = recognise_input_column(header_[i]);
       if (!c) {
-        ignored_.push_back(header_[i]);
+        const std::optional<MeasuredColumn> m =
+            options_.measured ? recognise_measured_column(header_[i]) : std::nullopt;
+        if (!m) {
+          ignored_.push_back(header_[i]);
+          continue;
+        }
+        const auto mq = static_cast<std::size_t>(m->quantity);
+        if (measured_column_[mq] >= 0) {
+          throw tir::TirError(
+              name_, line_,
+              "columns '" + header_[static_cast<std::size_t>(measured_column_[mq])] + "' and '" +
+                  header_[i] + "' both give " + std::string(kMeasuredSiNames[mq]));
+        }
+        measured_column_[mq] = static_cast<int>(i);
+        measured_spec_[mq] = *m;
+        quantity_of_cell_[i] = static_cast<int>(kInputQuantityCount + mq);
         continue;
       }
       const std::size_t q = index(c->quantity);
@@ -240,6 +309,9 @@ InputTable::InputTable(std::istream& in, std::string name, InputTableOptions opt
     }
     for (std::size_t q = 0; q < kInputQuantityCount; ++q) {
       sign_[q] = iso_w_sign(options_.convention, static_cast<InputQuantity>(q));
+    }
+    for (std::size_t q = 0; q < kMeasuredQuantityCount; ++q) {
+      measured_sign_[q] = output_sign(options_.convention, static_cast<MeasuredQuantity>(q));
     }
     for (InputQuantity q : options_.required) {
       if (!has(q)) {
@@ -266,24 +338,55 @@ std::vector<std::string> InputTable::split(std::string_view line) const {
   return cells;
 }
 
+namespace {
+
+/// A units row's cell in lower case, without surrounding [] or ().
+std::string unit_of_cell(const std::string& cell) {
+  std::string unit = lower(cell);
+  if (unit.size() >= 2 && (unit.front() == '[' || unit.front() == '(')) {
+    unit = trim(std::string_view(unit).substr(1, unit.size() - 2));
+  }
+  return unit;
+}
+
+}  // namespace
+
 bool InputTable::apply_units_row(const std::vector<std::string>& cells, int line_no) {
-  // A units row: every input column holds text that is not a number (or "1").
+  // A units row: every input (and measured) column holds text that is not a number (or "1").
   bool any = false;
-  for (std::size_t q = 0; q < kInputQuantityCount; ++q) {
-    if (column_[q] < 0) continue;
-    const std::string& cell = cells[static_cast<std::size_t>(column_[q])];
+  for (std::size_t i = 0; i < cells_; ++i) {
+    if (quantity_of_cell_[i] < 0) continue;
+    const std::string& cell = cells[i];
     if (cell == "1") continue;  // the unit of a ratio, or a number: decided by the others
     double number = 0.0;
     if (cell.empty() || host::read_csv_number(cell, separator_ != ',', number)) return false;
     any = true;
   }
   if (!any) return false;
+  for (std::size_t q = 0; q < kMeasuredQuantityCount; ++q) {
+    if (measured_column_[q] < 0) continue;
+    const std::string& cell = cells[static_cast<std::size_t>(measured_column_[q])];
+    const std::string unit = unit_of_cell(cell);
+    const MeasuredAlias* found = nullptr;
+    std::string expected;
+    for (const MeasuredAlias& u : kMeasuredUnits) {
+      if (static_cast<std::size_t>(u.quantity) != q) continue;
+      if (u.name == unit) found = &u;
+      expected += (expected.empty() ? "" : ", ") + std::string(u.name);
+    }
+    if (found == nullptr) {
+      throw tir::TirError(name_, line_no,
+                          "unit '" + cell + "' of column '" +
+                              header_[static_cast<std::size_t>(measured_column_[q])] +
+                              "' is not a unit of " + std::string(kMeasuredSiNames[q]) +
+                              " (expected " + expected + ")");
+    }
+    measured_spec_[q].to_si = found->to_si;
+    measured_spec_[q].unit = found->unit;
+  }
   for (std::size_t q = 0; q < kInputQuantityCount; ++q) {
     if (column_[q] < 0) continue;
-    std::string unit = lower(cells[static_cast<std::size_t>(column_[q])]);
-    if (unit.size() >= 2 && (unit.front() == '[' || unit.front() == '(')) {
-      unit = trim(std::string_view(unit).substr(1, unit.size() - 2));
-    }
+    const std::string unit = unit_of_cell(cells[static_cast<std::size_t>(column_[q])]);
     const UnitName* found = nullptr;
     std::string expected;
     for (const UnitName& u : kUnits) {
@@ -304,7 +407,7 @@ bool InputTable::apply_units_row(const std::vector<std::string>& cells, int line
   return true;
 }
 
-std::optional<InputRow> InputTable::next() {
+std::optional<InputRow> InputTable::next(MeasuredValues* measured) {
   std::string line;
   while (std::getline(in_, line)) {
     ++line_;
@@ -315,7 +418,7 @@ std::optional<InputRow> InputTable::next() {
       if (take_units_row(t, line_)) continue;
     }
     InputRow row;
-    parse_row(t, line_, row);
+    parse_row(t, line_, row, measured);
     return row;
   }
   return std::nullopt;
@@ -333,30 +436,47 @@ void InputTable::wrong_cell_count(std::size_t found, int line_no) const {
       "expected " + std::to_string(cells_) + " cells, found " + std::to_string(found));
 }
 
-bool InputTable::parse_row(std::string_view line, int line_no, InputRow& row) const {
+bool InputTable::parse_row(std::string_view line, int line_no, InputRow& row,
+                           MeasuredValues* measured) const {
   const std::string_view t = host::text::trim_blanks(line);
   if (t.empty() || t.front() == '#') return false;
   row.line = line_no;
-  if (separator_ == ',' && read_comma_row(t, row)) return true;
+  if (measured == nullptr && separator_ == ',' && read_comma_row(t, row)) return true;
   row.value.fill(0.0);
-  // The cell count is checked first, so the first bad number is only noted on the way.
+  MeasuredValues scratch;
+  MeasuredValues& out = measured != nullptr ? *measured : scratch;
+  out.fill(std::numeric_limits<double>::quiet_NaN());
+  // The cell count is checked first, so the first bad cell is only noted on the way.
   std::size_t cell = 0;
   std::size_t start = 0;
-  std::size_t bad_quantity = kInputQuantityCount;
+  std::size_t bad_cell = cells_;
   std::string_view bad_text;
+  const char* bad_why = "";
   while (true) {
     const std::size_t end = t.find(separator_, start);
     if (cell < cells_ && quantity_of_cell_[cell] >= 0) {
       const auto q = static_cast<std::size_t>(quantity_of_cell_[cell]);
+      const bool is_measured = q >= kInputQuantityCount;
       const std::string_view text = host::text::trim_blanks(
           t.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start));
       // With ';' or tab separators a cell without a '.' may have a decimal comma.
       double v = 0.0;
-      if (host::read_csv_number(text, separator_ != ',', v)) {
-        row.value[q] = v * spec_[q].to_si * sign_[q];
-      } else if (bad_quantity == kInputQuantityCount) {
-        bad_quantity = q;
+      if (is_measured && text.empty()) {
+        // not measured in this row: stays NaN
+      } else if (host::read_csv_number(text, separator_ != ',', v)) {
+        const double si = is_measured ? v * measured_spec_[q - kInputQuantityCount].to_si *
+                                            measured_sign_[q - kInputQuantityCount]
+                                      : v * spec_[q].to_si * sign_[q];
+        if (!std::isfinite(si) && bad_cell == cells_) {
+          bad_cell = cell;
+          bad_text = text;
+          bad_why = "' is out of range once converted to SI units";
+        }
+        (is_measured ? out[q - kInputQuantityCount] : row.value[q]) = si;
+      } else if (bad_cell == cells_) {
+        bad_cell = cell;
         bad_text = text;
+        bad_why = "' is not a finite number";
       }
     }
     ++cell;
@@ -364,10 +484,9 @@ bool InputTable::parse_row(std::string_view line, int line_no, InputRow& row) co
     start = end + 1;
   }
   if (cell != cells_) wrong_cell_count(cell, line_no);
-  if (bad_quantity != kInputQuantityCount) {
+  if (bad_cell != cells_) {
     throw tir::TirError(name_, line_no,
-                        header_[static_cast<std::size_t>(column_[bad_quantity])] + ": '" +
-                            std::string(bad_text) + "' is not a finite number");
+                        header_[bad_cell] + ": '" + std::string(bad_text) + bad_why);
   }
   return true;
 }
@@ -394,6 +513,7 @@ bool InputTable::read_comma_row(std::string_view t, InputRow& row) const noexcep
     while (p != end && host::text::is_blank(*p)) ++p;
     const auto qi = static_cast<std::size_t>(q);
     row.value[qi] = v * spec_[qi].to_si * sign_[qi];
+    if (!std::isfinite(row.value[qi])) return false;  // a unit's factor overflowed: say where
   }
   return p == end;
 }
@@ -410,6 +530,19 @@ std::vector<std::string> InputTable::mapping() const {
                : std::string(spec_[q].unit) + " → " +
                      std::string(recognise_input_column(kSiNames[q])->unit);
     if (iso_w_sign(options_.convention, quantity) < 0.0) {
+      line += ", sign changed from " + std::string(to_string(options_.convention)) + " to ISO-W";
+    }
+    lines.push_back(line + ")");
+  }
+  for (std::size_t q = 0; q < kMeasuredQuantityCount; ++q) {
+    if (measured_column_[q] < 0) continue;
+    const std::string_view si_unit = q < 3 ? "N" : "N m";
+    std::string line = "'" + header_[static_cast<std::size_t>(measured_column_[q])] + "' → " +
+                       std::string(kMeasuredSiNames[q]) + " (";
+    line += measured_spec_[q].unit == si_unit
+                ? "in " + std::string(si_unit)
+                : std::string(measured_spec_[q].unit) + " → " + std::string(si_unit);
+    if (measured_sign_[q] < 0.0) {
       line += ", sign changed from " + std::string(to_string(options_.convention)) + " to ISO-W";
     }
     lines.push_back(line + ")");

@@ -24,8 +24,8 @@
 // Separator: ',' (default), ';' or tab, chosen with `separator` or detected from the header line
 // (';' or tab when the header holds no ','). With ';' or tab a cell's decimal comma is read as a
 // point ("0,05" = 0.05). A UTF-8 byte order mark (spreadsheet exports) is skipped, as are blank
-// lines and lines starting with '#'. Columns that name no
-// input are ignored (and listed by ignored_columns()).
+// lines and lines starting with '#'. Columns that name no input (nor, with
+// InputTableOptions::measured, a measured output) are ignored (and listed by ignored_columns()).
 //
 // Sign conventions (the file's, converted to ISO-W = TYDEX W, the axes of MFeval and of every
 // tread tyre command). ISO-W: x forward in the wheel plane, y left, z up; the load Fz is positive;
@@ -80,8 +80,23 @@ std::string_view to_string(SignConvention c);
 double iso_w_sign(SignConvention c, InputQuantity q);
 
 enum class MeasuredQuantity { fx, fy, fz, mx, my, mz };
+inline constexpr std::size_t kMeasuredQuantityCount = 6;
 /// Factor (±1) taking a measured force or moment written in `c` to ISO-W.
 double output_sign(SignConvention c, MeasuredQuantity q);
+
+/// A measured output's column (the fitter's): Fx_N|FX|FXW [N], Fx_kN [kN]; Fy_N|FY|FYW [N], Fy_kN
+/// [kN]; Mz_Nm|MZ|MZW [N m], Mz_kNm [kN m] (case-insensitive). A units row may name N, kN, lbf for
+/// the forces and N m (Nm, N-m, N·m, N*m), kN m (kNm, kN-m, kN·m), ft-lbf (lbf-ft) for Mz.
+struct MeasuredColumn {
+  MeasuredQuantity quantity = MeasuredQuantity::fx;
+  double to_si = 1.0;
+  std::string_view unit;
+};
+std::optional<MeasuredColumn> recognise_measured_column(std::string_view name);
+
+/// Measured values of one row, in SI units and ISO-W signs, indexed by MeasuredQuantity: NaN where
+/// the table has no column or the cell is empty (not measured there).
+using MeasuredValues = std::array<double, kMeasuredQuantityCount>;
 
 struct InputTableOptions {
   char separator = '\0';  ///< ',', ';' or '\t'; '\0': detect from the header line
@@ -90,6 +105,9 @@ struct InputTableOptions {
   std::vector<InputQuantity> required = {InputQuantity::fz, InputQuantity::kappa,
                                          InputQuantity::alpha, InputQuantity::gamma,
                                          InputQuantity::vx};
+  /// Also read the measured outputs' columns (recognise_measured_column; next() and parse_row()
+  /// give them to a MeasuredValues). Without it they are ignored columns.
+  bool measured = false;
 };
 
 /// One row, in SI units and ISO-W signs. Inputs without a column are 0.
@@ -108,8 +126,9 @@ class InputTable {
  public:
   InputTable(std::istream& in, std::string name, InputTableOptions options);
 
-  /// The next data row; std::nullopt at the end of the input.
-  std::optional<InputRow> next();
+  /// The next data row; std::nullopt at the end of the input. `measured`, if given, receives the
+  /// row's measured values (see InputTableOptions::measured).
+  std::optional<InputRow> next(MeasuredValues* measured = nullptr);
 
   // For a reader that takes the lines from the stream itself, after construction (`tread mf
   // eval` reads large files in chunks and parses them on several threads): next() is these two.
@@ -122,9 +141,13 @@ class InputTable {
   bool take_units_row(std::string_view line, int line_no);
   /// Reads a data line (without its '\n') into `row`: false for a blank or '#' line. Throws as
   /// next() does. Does not change the table: safe to call from several threads at once.
-  bool parse_row(std::string_view line, int line_no, InputRow& row) const;
+  bool parse_row(std::string_view line, int line_no, InputRow& row,
+                 MeasuredValues* measured = nullptr) const;
 
   bool has(InputQuantity q) const { return column_[static_cast<std::size_t>(q)] >= 0; }
+  bool has(MeasuredQuantity q) const { return measured_column_[static_cast<std::size_t>(q)] >= 0; }
+  /// The number of the header's line.
+  int header_line() const { return header_line_; }
   char separator() const { return separator_; }
   const std::string& name() const { return name_; }
   /// One line per mapped column: "SA → alpha_rad (deg → rad, sign from sae)".
@@ -158,7 +181,12 @@ class InputTable {
   std::array<int, kInputQuantityCount> column_{};
   std::array<InputColumn, kInputQuantityCount> spec_{};
   std::array<double, kInputQuantityCount> sign_{};  ///< iso_w_sign of each input
-  std::vector<int> quantity_of_cell_;               ///< input of each cell, -1 for none
+  std::array<int, kMeasuredQuantityCount> measured_column_{};
+  std::array<MeasuredColumn, kMeasuredQuantityCount> measured_spec_{};
+  std::array<double, kMeasuredQuantityCount> measured_sign_{};  ///< output_sign of each
+  /// Input of each cell, kInputQuantityCount + a MeasuredQuantity for a measured output, -1 for none.
+  std::vector<int> quantity_of_cell_;
+  int header_line_ = 0;
   std::vector<std::string> ignored_;
 };
 

@@ -182,7 +182,8 @@ TEST(FitCommand, BadInputFailsWithFileAndLine) {
   const auto err = dir / "stderr_bad.txt";
   EXPECT_NE(run("fit --input " + in_csv.string() + " --output " + (dir / "x.csv").string(), err),
             0);
-  EXPECT_NE(slurp(err).find("bad.csv:3: cell 3 'zero' is not a finite number"), std::string::npos)
+  EXPECT_NE(slurp(err).find("bad.csv:3: alpha_rad: 'zero' is not a finite number"),
+            std::string::npos)
       << slurp(err);
   EXPECT_NE(run("fit --input " + in_csv.string() + " --output " + (dir / "x.tir").string(), err),
             0);
@@ -536,6 +537,102 @@ TEST(FitCommand, NeutralStartWritesWhatTheFitErrorDescribes) {
   EXPECT_EQ(fitted.pdx1, book.pdx1);
   EXPECT_EQ(fitted.pkx1, book.pkx1);
   EXPECT_NE(fitted.pdx1, truth.pdx1);
+}
+
+// Numbers the fit would print or write silently wrong: loads with z down read as ISO-W, points off
+// the ground, a mirror-image tyre (α or Fy in another convention), a load level so alone that the
+// load terms are not determined (held at the start's values, said, "held" in the report), a fit
+// worse than the mean (nothing written) and a non-finite --noise.
+TEST(FitCommand, DataTheFitCannotTakeAsWrittenAreSaid) {
+  const auto tir = tread::testing::tyre_file("MagicFormula61_Parameters.tir");
+  const tread::mf::MfParameters<double> truth = tread::tyre::load_mf_parameters(tir).params;
+  const auto dir = tmp_dir();
+  const auto err = dir / "stderr.txt";
+  // sign_fz, sign_alpha: the file's signs; unloaded: every 20th point gets Fz = 0; flip_level:
+  // that load's Fy is written mirrored.
+  const auto write_csv = [&](const char* name, std::initializer_list<double> loads, double sign_fz,
+                             double sign_alpha, bool unloaded, double flip_level) {
+    const auto path = dir / name;
+    std::ofstream in(path);
+    in.precision(17);
+    in << "Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps,Fy_N\n";
+    int row = 0;
+    for (double fz : loads) {
+      for (int i = -40; i <= 40; ++i, ++row) {
+        const double alpha = i * 0.005;
+        const double fy = fy_of(truth, fz, alpha) * (std::fabs(fz - flip_level) < 0.5 ? -1.0 : 1.0);
+        in << (unloaded && row % 20 == 7 ? 0.0 : sign_fz * fz) << ",0," << sign_alpha * alpha
+           << ",0,16.6," << fy << '\n';
+      }
+    }
+    return path;
+  };
+  const std::string start = " --start " + tir.string();
+  const auto sae = write_csv("sae.csv", {2000.0, 4000.0, 6000.0}, -1.0, 1.0, false, 0.0);
+  EXPECT_NE(run("fit --model mf61" + start + " --input " + sae.string() + " --output " +
+                    (dir / "sae.tir").string(),
+                err),
+            0);
+  EXPECT_NE(slurp(err).find("sae.csv:2: Fz = -2000 N: 243 of 243 points have a load ≤ 0"),
+            std::string::npos)
+      << slurp(err);
+  EXPECT_NE(slurp(err).find("--convention sae"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(dir / "sae.tir"));
+
+  const auto lifted = write_csv("lifted.csv", {2000.0, 4000.0, 6000.0}, 1.0, 1.0, true, 0.0);
+  ASSERT_EQ(
+      run("fit --input " + lifted.string() + " --output " + (dir / "lifted.csv").string(), err), 0)
+      << slurp(err);
+  EXPECT_NE(slurp(err).find("warning: 12 points with Fz ≤ 0 (a wheel off the ground) are not "
+                            "fitted; the first at " +
+                            lifted.string() + ":9"),
+            std::string::npos)
+      << slurp(err);
+
+  const auto mirrored = write_csv("mirror.csv", {2000.0, 4000.0}, 1.0, -1.0, false, 0.0);
+  ASSERT_EQ(run("fit --input " + mirrored.string() + " --output " + (dir / "m.csv").string(), err),
+            0)
+      << slurp(err);
+  EXPECT_NE(slurp(err).find("warning: the fitted dFy/dalpha is "), std::string::npos) << slurp(err);
+  EXPECT_NE(slurp(err).find("--convention adapted-iso"), std::string::npos) << slurp(err);
+
+  // One load level: PDY2, PKY2, ... act only as PDY1, PKY1, ... do there.
+  const auto one = write_csv("one.csv", {4000.0}, 1.0, 1.0, false, 0.0);
+  const auto report = dir / "one.md";
+  ASSERT_EQ(run("fit --model mf61" + start + " --input " + one.string() + " --output " +
+                    (dir / "one.tir").string() + " --report " + report.string(),
+                err),
+            0)
+      << slurp(err);
+  EXPECT_NE(slurp(err).find("not determined by these points, held at their values before the stage: PDY2"),
+            std::string::npos)
+      << slurp(err);
+  EXPECT_NE(slurp(report).find("| PDY2 | "), std::string::npos);
+  EXPECT_NE(slurp(report).find("held (not determined by these points)"), std::string::npos);
+  const tread::mf::MfParameters<double> one_fit =
+      tread::tyre::load_mf_parameters(dir / "one.tir").params;
+  EXPECT_EQ(one_fit.pdy2, truth.pdy2);
+  EXPECT_NEAR(fy_of(one_fit, 4000.0, 0.05), fy_of(truth, 4000.0, 0.05),
+              1e-3 * std::fabs(fy_of(truth, 4000.0, 0.05)));
+
+  // The 6000 N level written mirrored: no coefficient set fits all three; R² < 0 is a failure.
+  const auto mixed = write_csv("mixed.csv", {2000.0, 4000.0, 6000.0}, 1.0, 1.0, false, 6000.0);
+  EXPECT_NE(run("fit --model mf61" + start + " --input " + mixed.string() + " --output " +
+                    (dir / "mixed.tir").string(),
+                err),
+            0);
+  EXPECT_NE(slurp(err).find("the fit failed: R² < 0"), std::string::npos) << slurp(err);
+  EXPECT_FALSE(std::filesystem::exists(dir / "mixed.tir"));
+
+  for (const char* noise : {"nan", "inf", "-0.1"}) {
+    EXPECT_NE(run("fit --synthesize " + tir.string() + " --noise " + noise + " --output " +
+                      (dir / "noise.csv").string(),
+                  err),
+              0)
+        << noise;
+    EXPECT_NE(slurp(err).find("the noise level must be a finite number ≥ 0"), std::string::npos)
+        << slurp(err);
+  }
 }
 
 }  // namespace

@@ -77,20 +77,57 @@ TEST(MeasurementCsv, TtcNamesInSaeAxes) {
 
 TEST(MeasurementCsv, BadRowsNameFileAndLine) {
   EXPECT_EQ(error_of("Fz_N,kappa,alpha_rad,Fx_N\n1,2,3,4\n1,x,3,4\n", false),
-            "m.csv:3: cell 2 'x' is not a finite number");
+            "m.csv:3: kappa: 'x' is not a finite number");
   EXPECT_EQ(error_of("Fz_N,kappa,alpha_rad,Fx_N\n1,2,3\n", false),
             "m.csv:2: expected 4 cells, found 3");
   EXPECT_EQ(error_of("Fz_N,kappa,alpha_rad,Fx_N\n1,2,3,inf\n", false),
-            "m.csv:2: cell 4 'inf' is not a finite number");
-  EXPECT_EQ(error_of("# x\nkappa,alpha_rad,Fx_N\n", false), "m.csv:2: missing column 'Fz_N'");
+            "m.csv:2: Fx_N: 'inf' is not a finite number");
+  EXPECT_EQ(error_of("# x\nkappa,alpha_rad,Fx_N\n", false),
+            "m.csv:2: missing column 'Fz_N' (or one of its other names; see --help)");
   EXPECT_EQ(error_of("Fz_N,kappa,alpha_rad\n", false),
-            "m.csv:1: no measured column (Fx_N, Fy_N or Mz_Nm)");
+            "m.csv:1: no measured column (Fx_N, Fy_N or Mz_Nm, or one of their other names)");
   EXPECT_EQ(error_of("Fz_N,kappa,kappa,alpha_rad,Fx_N\n", false),
-            "m.csv:1: repeated column 'kappa'");
+            "m.csv:1: columns 'kappa' and 'kappa' both give kappa");
+  EXPECT_EQ(error_of("Fz_N,kappa,alpha_rad,FY,Fy_N\n", false),
+            "m.csv:1: columns 'FY' and 'Fy_N' both give Fy_N");
   EXPECT_EQ(error_of("", false), "m.csv:0: no header row");
   // Finite as written, infinite once in SI units (found by fuzzing): refused, not carried as inf.
   EXPECT_EQ(error_of("Fz_kN,kappa,alpha_rad,Fx_N\n1e308,0,0,1\n", false),
-            "m.csv:2: cell 1 '1e308' is out of range once converted to SI units");
+            "m.csv:2: Fz_kN: '1e308' is out of range once converted to SI units");
+}
+
+// The fitter reads CSV as `tread mf eval` does (one reader, tyre::InputTable): ';' or tab
+// separators with decimal commas, a units row under the header (FSAE TTC run files), which also
+// sets the measured columns' units.
+TEST(MeasurementCsv, SeparatorsDecimalCommasAndUnitsRowAsMfEval) {
+  std::istringstream semicolon("Fz_N;kappa;alpha_deg;Fy_N;Mz_Nm\n4000;0,02;-2,5;1234,5;-7,25\n");
+  const MeasurementSet a = read_measurement_csv(semicolon, "s.csv");
+  ASSERT_EQ(a.points.size(), 1u);
+  EXPECT_DOUBLE_EQ(a.points[0].kappa, 0.02);
+  EXPECT_DOUBLE_EQ(a.points[0].alpha_rad, -2.5 * std::numbers::pi / 180.0);
+  EXPECT_DOUBLE_EQ(a.points[0].fy_n, 1234.5);
+  EXPECT_DOUBLE_EQ(a.points[0].mz_nm, -7.25);
+  std::istringstream tab("FZ\tSL\tSA\tFX\n-1000\t0,1\t0\t2,5\n");
+  const MeasurementSet b = read_measurement_csv(tab, "t.csv", tyre::SignConvention::sae);
+  EXPECT_DOUBLE_EQ(b.points[0].fz_n, 1000.0);
+  EXPECT_DOUBLE_EQ(b.points[0].fx_n, 2.5);
+  // A TTC-style units row: lbf for the load and Fy, N-m for Mz, kph, psi (pressure: not fitted).
+  std::istringstream units(
+      "ET,V,SA,IA,FZ,FY,MZ,SL,P\n"
+      "s,kph,deg,deg,lbf,lbf,N-m,1,psi\n"
+      "1.5,40,-4,2,-250,500,-30,0.02,12\n");
+  const MeasurementSet c = read_measurement_csv(units, "u.csv", tyre::SignConvention::sae);
+  ASSERT_EQ(c.points.size(), 1u);
+  EXPECT_DOUBLE_EQ(c.points[0].fz_n, 250.0 * 4.4482216152605);
+  EXPECT_DOUBLE_EQ(c.points[0].fy_n, -500.0 * 4.4482216152605);
+  EXPECT_DOUBLE_EQ(c.points[0].mz_nm, 30.0);
+  EXPECT_EQ(c.points[0].line, 3u);
+  EXPECT_TRUE(c.has_pressure);
+  EXPECT_EQ(c.ignored_columns, (std::vector<std::string>{"ET", "P"}));
+  // A unit the measured column cannot have is an error at the units row.
+  EXPECT_EQ(error_of("FZ,SL,SA,MZ\nN,1,deg,N\n", false),
+            "m.csv:2: unit 'N' of column 'MZ' is not a unit of Mz_Nm (expected n m, nm, n-m, "
+            "n·m, n*m, kn m, knm, kn-m, kn·m, ft-lbf, lbf-ft)");
 }
 
 const char* const kTydex =

@@ -226,6 +226,38 @@ TEST(InputTable, ErrorsNameFileAndLine) {
   expect_error("FZ,SL,SA,IA,V\n1,2,inf,0,5\n", 2, "SA: 'inf' is not a finite number");
   // A ',' file does not take decimal commas: the cell count is wrong instead.
   expect_error("FZ,SL,SA,IA,V\n1,0,5,2,0,5\n", 2, "expected 5 cells, found 6");
+  // Finite as written, infinite in SI units: an error, not an inf input (either reader).
+  expect_error("Fz_kN,SL,SA,IA,V\n1e308,0,0,0,5\n", 2,
+               "Fz_kN: '1e308' is out of range once converted to SI units");
+  expect_error("Fz_kN;SL;SA;IA;V\n1e308;0;0;0;5\n", 2,
+               "Fz_kN: '1e308' is out of range once converted to SI units");
+}
+
+// With InputTableOptions::measured the fitter's measured columns are read too (empty: NaN);
+// without it they are ignored columns.
+TEST(InputTable, MeasuredColumnsOnlyWhenAsked) {
+  const std::string text = "FZ,SL,SA,IA,V,FY,Mz_kNm\n1000,0,1,0,40,-500,\n";
+  {
+    std::istringstream in(text);
+    InputTable table(in, "m.csv", InputTableOptions{});
+    EXPECT_EQ(table.ignored_columns(), (std::vector<std::string>{"FY", "Mz_kNm"}));
+  }
+  std::istringstream in(text);
+  InputTableOptions options;
+  options.convention = SignConvention::sae;
+  options.measured = true;
+  InputTable table(in, "m.csv", options);
+  EXPECT_TRUE(table.ignored_columns().empty());
+  EXPECT_TRUE(table.has(tread::tyre::MeasuredQuantity::fy));
+  tread::tyre::MeasuredValues measured{};
+  const auto row = table.next(&measured);
+  ASSERT_TRUE(row.has_value());
+  EXPECT_DOUBLE_EQ((*row)[InputQuantity::fz], -1000.0);
+  EXPECT_DOUBLE_EQ(measured[static_cast<std::size_t>(tread::tyre::MeasuredQuantity::fy)], 500.0);
+  EXPECT_TRUE(std::isnan(measured[static_cast<std::size_t>(tread::tyre::MeasuredQuantity::mz)]));
+  EXPECT_TRUE(std::isnan(measured[static_cast<std::size_t>(tread::tyre::MeasuredQuantity::fx)]));
+  const std::vector<std::string> map = table.mapping();
+  EXPECT_EQ(map.back(), "'Mz_kNm' → Mz_Nm (kN m → N m, sign changed from sae to ISO-W)");
 }
 
 // A ',' row is read in one pass (InputTable::read_comma_row) and, where that declines, cell by
