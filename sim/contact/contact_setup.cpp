@@ -193,6 +193,45 @@ double nominal_r0_mm(const ContactSetup& setup) {
   return 0.5 * (setup.r0_mm + setup.r0_right_mm.value_or(setup.r0_mm));
 }
 
+void check_wheelset_dimensions(const ContactSetup& setup) {
+  const auto text = [](double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.6g", v);
+    return std::string(b);
+  };
+  // A wheel's rolling radius: from small tram and bogie wheels (some 150 mm) to the largest
+  // driving wheels (about 1 m); outside this range the value is in another unit or a slip.
+  constexpr double kR0Min_mm = 100.0, kR0Max_mm = 1500.0;
+  const auto radius = [&](const char* option, double r0_mm) {
+    if (!(r0_mm >= kR0Min_mm && r0_mm <= kR0Max_mm)) {
+      throw std::invalid_argument(std::string(option) + " " + text(r0_mm) +
+                                  ": a wheel's rolling radius in mm lies within " +
+                                  text(kR0Min_mm) + " … " + text(kR0Max_mm) + " mm");
+    }
+  };
+  radius("--r0", setup.r0_mm);
+  if (setup.r0_right_mm) radius("--r0-right", *setup.r0_right_mm);
+  if (!(setup.gauge_mm > 0.0) || !(setup.back_to_back_mm > 0.0)) {
+    throw std::invalid_argument("--gauge " + text(setup.gauge_mm) + ", --b2b " +
+                                text(setup.back_to_back_mm) + ": both must be > 0 (mm)");
+  }
+  if (setup.rail_frame == "track") return;  // the rails are placed already: --gauge not used
+  if (!(setup.back_to_back_mm < setup.gauge_mm)) {
+    throw std::invalid_argument("--b2b " + text(setup.back_to_back_mm) +
+                                " mm is not below --gauge " + text(setup.gauge_mm) +
+                                " mm: the wheels' backs would stand outside the rails");
+  }
+  if (!setup.wheel_spec.empty() && setup.wheel_file.empty()) {
+    const double e = parse_wheel_spec(setup.wheel_spec).flange_thickness_mm;
+    if (!(setup.back_to_back_mm + 2.0 * e < setup.gauge_mm)) {
+      throw std::invalid_argument(
+          "--b2b " + text(setup.back_to_back_mm) + " mm with two flanges of e = " + text(e) +
+          " mm (" + text(setup.back_to_back_mm + 2.0 * e) + " mm) does not fit in --gauge " +
+          text(setup.gauge_mm) + " mm: the wheelset has no lateral play");
+    }
+  }
+}
+
 RigidContact build_contact(const ContactSetup& setup) {
   std::vector<std::string> ignored;
   return build_contact(setup, ignored);
@@ -212,6 +251,7 @@ RigidContact build_contact(const ContactSetup& setup, std::vector<std::string>& 
   if (setup.rail_frame == "track" && setup.rail_file.empty()) {
     throw std::invalid_argument("--rail-frame track applies to --rail-file only");
   }
+  check_wheelset_dimensions(setup);
   const double cant_rad = parse_cant_rad(setup.cant);  // validated even where it does not apply
   using profile::ProfileRole;
   profile::SampledProfile left =

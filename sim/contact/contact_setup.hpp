@@ -55,6 +55,12 @@ profile::WheelParameters parse_wheel_spec(const std::string& spec);
 /// with N below 5 (steeper than any rail is canted).
 double parse_cant_rad(const std::string& text);
 
+/// Throws std::invalid_argument naming the option if a dimension cannot be a wheelset's: --r0 or
+/// --r0-right outside 100 … 1500 mm, --gauge or --b2b ≤ 0, and (rails placed by --gauge) --b2b
+/// not below --gauge or, for a built-in wheel, b2b + 2·e not below it (no lateral play).
+/// build_contact calls it first.
+void check_wheelset_dimensions(const ContactSetup& setup);
+
 /// Reads the profiles (profile::read_profile_file) and builds the contact. Throws
 /// std::runtime_error / std::invalid_argument with a message naming the offending option or file.
 /// `warnings` receives what the file reader changed or assumed, and a warning when a rail file

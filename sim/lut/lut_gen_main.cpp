@@ -12,7 +12,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> pairs;
   std::string output;
   double max_error_um = 1.0;
-  app.add_option("--profile", profiles, "built-in wheel, e.g. S1002:h=28,e=32.5,slope=1:40");
+  app.add_option("--profile", profiles, "built-in wheel, e.g. S1002:h=28,e=32.5,slope=1:15");
   app.add_option("--contact", pairs, "wheel/rail pair, e.g. wheel=S1002,rail=60E1,cant=1:40");
   app.add_option("--max-error-um", max_error_um, "r(y) interpolation error bound")
       ->capture_default_str();

@@ -51,5 +51,35 @@ TEST(ContactSpec, WheelsetProfileValuesAreWholeFiniteNumbers) {
   }
 }
 
+// Dimensions no wheelset has are refused before any table is built (a negative r0 gave a contact
+// table, the LUT generator wrote r0 = 1e12 mm, a b2b wider than the gauge was taken).
+TEST(ContactSpec, WheelsetDimensionsAreAWheelsets) {
+  const auto error = [](const std::string& spec) {
+    try {
+      contact::check_wheelset_dimensions(contact::parse_wheelset_profile(spec));
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(error("wheel=S1002,rail=60E1"), "accepted");
+  EXPECT_EQ(error("wheel=S1002,rail=60E1,gauge=1000,b2b=925"), "accepted");
+  EXPECT_EQ(error("wheel=S1002,rail=60E1,r0=-5"),
+            "--r0 -5: a wheel's rolling radius in mm lies within 100 … 1500 mm");
+  EXPECT_EQ(error("wheel=S1002,rail=60E1,r0=0.46"),
+            "--r0 0.46: a wheel's rolling radius in mm lies within 100 … 1500 mm");
+  EXPECT_EQ(error("wheel=S1002,rail=60E1,r0-right=1e12"),
+            "--r0-right 1e+12: a wheel's rolling radius in mm lies within 100 … 1500 mm");
+  EXPECT_EQ(error("wheel=S1002,rail=60E1,gauge=0"), "--gauge 0, --b2b 1360: both must be > 0 (mm)");
+  EXPECT_EQ(error("wheel=S1002,rail=60E1,b2b=1500"),
+            "--b2b 1500 mm is not below --gauge 1435 mm: the wheels' backs would stand outside the "
+            "rails");
+  // A built-in wheel's flanges must leave play: 1375 + 2 · 28.5 = 1432 < 1435, 1380 + 65 is not.
+  EXPECT_EQ(error("wheel=S1002:e=28.5,rail=60E1,b2b=1375"), "accepted");
+  EXPECT_EQ(error("wheel=S1002,rail=60E1,b2b=1380"),
+            "--b2b 1380 mm with two flanges of e = 32.5 mm (1445 mm) does not fit in --gauge 1435 "
+            "mm: the wheelset has no lateral play");
+}
+
 }  // namespace
 }  // namespace tread
