@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -70,10 +71,25 @@ char separator(const std::string& sep) {
   throw std::runtime_error("--sep " + sep + ": expected auto, ',', ';' or tab");
 }
 
+/// Each line of `text` (warnings, one per line) as "PREFIX: warning: line".
+void print_warnings(const char* prefix, const std::string& text) {
+  std::istringstream lines(text);
+  std::string line;
+  while (std::getline(lines, line)) {
+    if (!line.empty()) std::cerr << prefix << ": warning: " << line << '\n';
+  }
+}
+
 void run_mf_eval(const MfEvalArgs& args) {
   const tyre::MfTirParameters loaded = tyre::load_mf_parameters(args.tir);
-  if (!loaded.warning.empty()) std::cerr << "tread mf eval: warning: " << loaded.warning << '\n';
+  print_warnings("tread mf eval", loaded.warning);
   mf::MfOptions o = options_for(args.mode, "tread mf eval");
+  // What `tread tir info` says of the curves (a negative slip stiffness, friction beyond reason):
+  // at FNOMIN and LONGVL, in the mode asked for.
+  for (const std::string& w :
+       tyre::curve_warnings(loaded.params, o, {loaded.params.fnomin_n}, loaded.params.longvl_mps)) {
+    std::cerr << "tread mf eval: warning: " << args.tir << ": at FNOMIN and LONGVL: " << w << '\n';
+  }
   if (args.side == "left") o.side = mf::MountedSide::left;
   if (args.side == "right") o.side = mf::MountedSide::right;
   tyre::MfCsvOptions csv;
@@ -135,7 +151,7 @@ struct MfPlotArgs {
 
 void run_mf_plot(const MfPlotArgs& args) {
   const tyre::MfTirParameters loaded = tyre::load_mf_parameters(args.tir);
-  if (!loaded.warning.empty()) std::cerr << "tread mf plot: warning: " << loaded.warning << '\n';
+  print_warnings("tread mf plot", loaded.warning);
   const mf::MfOptions options = options_for(args.mode, "tread mf plot");
   for (double fz : args.loads) {
     if (!(fz > 0.0)) {

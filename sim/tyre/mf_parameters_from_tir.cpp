@@ -105,9 +105,53 @@ MfTirParameters mf_parameters_from_tir(const tir::TirFile& file) {
     }
   }
 
+  // MF 5.2 and PAC2002 files may list NOMPRES = 0 (no pressure terms in the model), which the
+  // core's dpi = (p − NOMPRES)/NOMPRES cannot take: the pressure terms are switched off instead.
+  if (model.model != tir::TirModel::kMf61 && model.model != tir::TirModel::kMf62 &&
+      (!(result.params.nompres_pa > 0.0) || !(result.params.inflpres_pa > 0.0))) {
+    const tir::Entry* e = file.find_any(!(result.params.nompres_pa > 0.0) ? "NOMPRES" : "INFLPRES");
+    add_line(result.warning,
+             file.origin() + ":" + std::to_string(e != nullptr ? e->line : 0) +
+                 ": NOMPRES = " + tir::format_number(result.params.nompres_pa) + ", INFLPRES = " +
+                 tir::format_number(result.params.inflpres_pa) + ": " + model.name +
+                 " has no pressure terms; evaluated without them (both taken as 220000 Pa)");
+    result.params.nompres_pa = 220000.0;
+    result.params.inflpres_pa = 220000.0;
+  }
+  // MF 5.2 and PAC2002 have no pressure terms, but the core (as MFeval) applies MF 6.1's to a
+  // file whose INFLPRES differs from its NOMPRES: said, with the coefficients that act.
+  if (model.model != tir::TirModel::kMf61 && model.model != tir::TirModel::kMf62 &&
+      file.find_any("INFLPRES") != nullptr && file.find_any("NOMPRES") != nullptr &&
+      std::fabs(result.params.inflpres_pa - result.params.nompres_pa) >
+          1e-9 * std::fabs(result.params.nompres_pa)) {
+    std::string given;
+    for (const char* key :
+         {"PFZ1", "PCFX1", "PCFX2", "PCFX3", "PCFY1", "PCFY2", "PCFY3", "PPX1", "PPX2", "PPX3",
+          "PPX4", "PPMX1", "PPY1", "PPY2", "PPY3", "PPY4", "PPY5", "PPZ1", "PPZ2"}) {
+      const std::optional<double> v = file.number_any(key);
+      if (v && std::fabs(*v) > 0.0) given += std::string(given.empty() ? "" : ", ") + key;
+    }
+    const tir::Entry* e = file.find_any("INFLPRES");
+    add_line(result.warning,
+             file.origin() + ":" + std::to_string(e->line) + ": " + model.name +
+                 " has no pressure terms, but INFLPRES (" +
+                 tir::format_number(result.params.inflpres_pa) + " Pa) differs from NOMPRES (" +
+                 tir::format_number(result.params.nompres_pa) +
+                 " Pa): evaluated with MF 6.1's pressure terms at INFLPRES, as MFeval does (" +
+                 (given.empty() ? std::string("the file gives none: MF 6.1's defaults")
+                                : "the file's " + given + "; MF 6.1's defaults for the rest") +
+                 "); INFLPRES = NOMPRES gives the model itself");
+  }
+
   const std::optional<std::string> side = file.text_any("TYRESIDE");
   result.params.tyre_side =
       side && upper(*side) == "RIGHT" ? mf::TyreSide::right : mf::TyreSide::left;
+  if (side && upper(*side) != "RIGHT" && upper(*side) != "LEFT" && upper(*side) != "SYMMETRIC") {
+    add_line(result.warning, file.origin() + ":" + std::to_string(file.find_any("TYRESIDE")->line) +
+                                 ": TYRESIDE = '" + *side +
+                                 "' is none of LEFT, RIGHT, SYMMETRIC: evaluated as LEFT "
+                                 "(the file's own axes)");
+  }
   check_mf_parameters(result.params, file, result.warning);
   warn_unmodelled_keys(file, model.name, result.warning);
   return result;

@@ -682,4 +682,49 @@ TEST(MfCommand, PressureColumnWithoutPressureTermsIsSaid) {
       << slurp(log);
 }
 
+// `tread mf eval` says what `tread tir info` says of the curves (here a cornering stiffness of the
+// wrong sign) and gives every line of a multi-line load warning its prefix.
+TEST(MfCommand, CurveWarningsOfTirInfoAreSaid) {
+  const auto dir = tmp_dir();
+  const auto in = dir / "in.csv";
+  write(in, "Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps\n4000,0,0.02,0,16\n");
+  tread::tir::TirFile f = tread::tir::read_tyre_property_file(
+      tread::testing::tyre_file("MagicFormula61_Parameters.tir"));
+  for (auto& section : f.sections()) {
+    if (tread::tir::Entry* e = section.find("PKY1")) {
+      e->value = "28.3155";  // the shipped file's −28.3155 mirrored
+      e->source.clear();
+    }
+    if (tread::tir::Entry* e = section.find("TYRESIDE")) {
+      e->value = "UNKNOWN";
+      e->source.clear();
+    }
+  }
+  const auto mirrored = dir / "mirrored.tir";
+  {
+    std::ofstream o(mirrored);
+    o << tread::tir::write_tir(f);
+  }
+  const auto log = dir / "log.txt";
+  ASSERT_EQ(run("mf eval --tir " + mirrored.string() + " --input " + in.string() + " --output " +
+                    (dir / "out.csv").string(),
+                log),
+            0)
+      << slurp(log);
+  const std::string text = slurp(log);
+  EXPECT_NE(
+      text.find("warning: " + mirrored.string() +
+                ": at FNOMIN and LONGVL: Fy(alpha) has the wrong sign of cornering stiffness"),
+      std::string::npos)
+      << text;
+  EXPECT_NE(text.find("tread mf eval: warning: " + mirrored.string() + ":"), std::string::npos);
+  EXPECT_NE(text.find("TYRESIDE = 'UNKNOWN' is none of LEFT, RIGHT, SYMMETRIC"), std::string::npos)
+      << text;
+  std::istringstream lines(text);
+  std::string line;
+  while (std::getline(lines, line)) {
+    EXPECT_EQ(line.rfind("tread mf eval: ", 0), 0u) << line;
+  }
+}
+
 }  // namespace

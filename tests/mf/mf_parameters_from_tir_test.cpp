@@ -4,8 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "golden_path.hpp"
+#include "mf/mf_evaluate.hpp"
 
 namespace tread::mf {
 namespace {
@@ -289,4 +291,36 @@ TEST(MfParametersFromTir, FormatNamingAnotherVersionThanFittypIsSaid) {
 }
 
 }  // namespace
+// MF 5.2 / PAC2002 files and pressure: the core applies MF 6.1's pressure terms where INFLPRES
+// differs from NOMPRES (as MFeval), which is said; a NOMPRES of 0 (dpi = (p − 0)/0) switches them
+// off instead of giving NaN outputs.
+TEST(MfParametersFromTir, Mf52PressureIsSaid) {
+  const tyre::MfTirParameters differs = tyre::mf_parameters_from_tir(tir::parse_tir(
+      "[M]\nFITTYP = 6\nPCX1 = 1.6\nINFLPRES = 250000\nNOMPRES = 220000\nPPY1 = 0.5\n", "p.tir"));
+  EXPECT_NE(differs.warning.find("p.tir:4: MF 5.2 has no pressure terms, but INFLPRES (250000 Pa) "
+                                 "differs from NOMPRES (220000 Pa): evaluated with MF 6.1's "
+                                 "pressure terms at INFLPRES, as MFeval does (the file's PPY1; "
+                                 "MF 6.1's defaults for the rest)"),
+            std::string::npos)
+      << differs.warning;
+  const tyre::MfTirParameters same = tyre::mf_parameters_from_tir(tir::parse_tir(
+      "[M]\nFITTYP = 6\nPCX1 = 1.6\nINFLPRES = 220000\nNOMPRES = 220000\nPPY1 = 0.5\n", "s.tir"));
+  EXPECT_EQ(same.warning.find("pressure terms"), std::string::npos) << same.warning;
+  const tyre::MfTirParameters zero = tyre::mf_parameters_from_tir(
+      tir::parse_tir("[M]\nFITTYP = 6\nPCX1 = 1.6\nNOMPRES = 0\n", "z.tir"));
+  EXPECT_NE(zero.warning.find("z.tir:4: NOMPRES = 0, INFLPRES = 220000: MF 5.2 has no pressure "
+                              "terms; evaluated without them"),
+            std::string::npos)
+      << zero.warning;
+  EXPECT_EQ(zero.params.nompres_pa, zero.params.inflpres_pa);
+  EXPECT_GT(zero.params.nompres_pa, 0.0);
+  mf::MfInput<double> in;
+  in.fz_n = 4000.0;
+  in.alpha_rad = 0.05;
+  in.vx_mps = 16.0;
+  const mf::MfOutput<double> out = mf::evaluate(zero.params, in, mf::MfOptions{});
+  EXPECT_TRUE(std::isfinite(out.fy_n));
+  EXPECT_EQ(out.status, Status::ok);
+}
+
 }  // namespace tread::mf
