@@ -1,5 +1,6 @@
 #include "tyre/mf_csv.hpp"
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
@@ -121,6 +122,7 @@ struct Chunk {
   std::size_t used = 0;
   std::size_t rows = 0;
   std::array<Tally, kLimitCount> outside{};
+  Tally above_free;                  ///< rows whose Rl lies above the free radius (see EvalSetup)
   BatchScratch<float> batch;         ///< --batch only (allocated on the chunk's first use)
   BatchScratch<double> double_rows;  ///< double on mf::evaluate_rows (the same)
 };
@@ -138,6 +140,9 @@ struct EvalSetup {
   /// for check_range's test of a whole row at once.
   std::array<double, kInputQuantityCount> low{};
   std::array<double, kInputQuantityCount> high{};
+  /// Where Rl is shown and found as a root of MF 6.2's vertical force (MF 6.2, MF 5.2, PAC2002):
+  /// R0, Q_RE0, Q_V1 and LONGVL, for check_loaded_radius; r0_m = 0 where not checked.
+  double r0_m = 0.0, q_re0 = 0.0, q_v1 = 0.0, longvl_mps = 1.0;
 };
 
 // The coefficients through which the inflation pressure acts that are nonzero, as "KEY = value"
@@ -231,6 +236,18 @@ void mark_clamped(const EvalSetup& setup, bool outside, mf::MfOutput<T>& result)
   }
 }
 
+// Counts a row whose loaded radius lies more than 2 % above the free radius at its wheel speed,
+// Romega = R0·(Q_RE0 + Q_V1·(ω·R0/V0)²): MF 6.2's vertical force has such roots (a light,
+// cambered wheel, through the Fy and camber terms), which no tyre has.
+template <typename T>
+void check_loaded_radius(const EvalSetup& setup, const InputRow& row, const mf::MfOutput<T>& result,
+                         Tally& tally) {
+  if (!(setup.r0_m > 0.0)) return;
+  const double speed = as_double(result.omega_radps) * setup.r0_m / setup.longvl_mps;
+  const double romega = setup.r0_m * (setup.q_re0 + setup.q_v1 * speed * speed);
+  if (as_double(result.rl_m) > 1.02 * romega && tally.rows++ == 0) tally.first_line = row.line;
+}
+
 // Makes room in `chunk` for its formatted rows and clears what the last use left.
 void start_chunk(const EvalSetup& setup, Chunk& chunk) {
   // write_shortest may write blocks of digits past a number's end, up to kShortestNumberRoom
@@ -243,6 +260,7 @@ void start_chunk(const EvalSetup& setup, Chunk& chunk) {
   chunk.used = 0;
   chunk.rows = 0;
   chunk.outside = {};
+  chunk.above_free = {};
 }
 
 // A row's inputs in the evaluation's scalar.
@@ -326,6 +344,7 @@ void evaluate_chunk(const EvalSetup& setup, const mf::MfParameters<T>& params, C
     const bool outside = check_range(setup, row, chunk.outside);
     mf::MfOutput<T> result = evaluate(params, input_of<T>(row), setup.options);
     mark_clamped(setup, outside, result);
+    check_loaded_radius(setup, row, result, chunk.above_free);
     p = format_row(setup, row, result, p);
     ++chunk.rows;
   });
@@ -354,6 +373,7 @@ void evaluate_chunk_batch(const EvalSetup& setup, const mf::MfParameters<T>& par
                   setup.options, std::span<mf::MfOutput<T>>(batch.outputs).first(pending));
     for (std::size_t i = 0; i < pending; ++i) {
       mark_clamped(setup, batch.outside[i] != 0, batch.outputs[i]);
+      check_loaded_radius(setup, batch.rows[i], batch.outputs[i], chunk.above_free);
       p = format_row(setup, batch.rows[i], batch.outputs[i], p);
       ++chunk.rows;
     }
@@ -426,6 +446,15 @@ MfCsvReport evaluate_csv(const mf::MfParameters<double>& params, const mf::MfOpt
   // computed and shown).
   if (!needs_extras(csv.columns)) setup.options.extras = false;
   if (!needs_moments_xy(csv.columns)) setup.options.moments_xy = false;
+  const bool shows_rl = std::any_of(csv.columns.begin(), csv.columns.end(), [](std::size_t c) {
+    return std::string_view(eval_columns()[c].name) == "Rl_m";
+  });
+  if (shows_rl && setup.options.extras && params.fit_type != mf::FitType::mf61) {
+    setup.r0_m = params.unloaded_radius_m;
+    setup.q_re0 = params.q_re0;
+    setup.q_v1 = params.q_v1;
+    setup.longvl_mps = params.longvl_mps;
+  }
   constexpr std::size_t kStatusBytes = 32;  // "non-finite result" and its '\n'
   setup.row_bytes = csv.columns.size() * (host::kShortestNumberMaxChars + 1) + kStatusBytes;
 
@@ -451,6 +480,7 @@ MfCsvReport evaluate_csv(const mf::MfParameters<double>& params, const mf::MfOpt
   host::LineChunker chunker(in, in_name, csv.chunk_lines, next_line, std::move(pending));
 
   std::array<Tally, kLimitCount> outside{};
+  Tally above_free;
   std::uint64_t bytes = 0;
   const unsigned workers = csv.threads > 0 ? csv.threads : host::default_worker_count();
   host::run_ordered_pipeline<Chunk>(
@@ -476,6 +506,10 @@ MfCsvReport evaluate_csv(const mf::MfParameters<double>& params, const mf::MfOpt
           if (outside[i].rows == 0) outside[i].first_line = chunk.outside[i].first_line;
           outside[i].rows += chunk.outside[i].rows;
         }
+        if (chunk.above_free.rows > 0) {
+          if (above_free.rows == 0) above_free.first_line = chunk.above_free.first_line;
+          above_free.rows += chunk.above_free.rows;
+        }
         report.rows += chunk.rows;
         bytes += chunk.lines.text.size();
         if (csv.progress) csv.progress(bytes, report.rows);
@@ -484,6 +518,14 @@ MfCsvReport evaluate_csv(const mf::MfParameters<double>& params, const mf::MfOpt
     if (outside[i].rows > 0) {
       report.out_of_range.push_back({describe(limits[i]), outside[i].rows, outside[i].first_line});
     }
+  }
+  if (above_free.rows > 0) {
+    report.warnings.push_back(
+        std::to_string(above_free.rows) + " rows (the first at " + in_name + ":" +
+        std::to_string(above_free.first_line) +
+        ") have a loaded radius Rl more than 2 % above the free radius R0·(Q_RE0 + Q_V1·(ω·R0/"
+        "V0)²): MF 6.2's vertical force has its root there (a light or cambered wheel, through "
+        "the Fy and camber terms); the radius is the model's, not a tyre's");
   }
   report.mapping = table.mapping();  // after a units row, if any, was read
   return report;

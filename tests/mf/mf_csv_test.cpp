@@ -423,6 +423,34 @@ TEST(MfCsvStream, RowsAreThoseTheTableReads) {
 // 0 and -0, one input at a time (the others inside): a value equal to its bound is inside; a
 // pressure of 0 (the file's INFLPRES) is never outside; without a pressure column (read as 0) no
 // row is outside PRESMIN or PRESMAX. Counted against the limits' definition, row by row.
+// MF 6.2's vertical force has roots far above the free radius for a light, cambered wheel (Rl
+// 0.47 m for the 0.394 m sample tyre at 200 N and 0.05 rad): counted and said where Rl is shown,
+// with the first row's line; a row at a normal load is not counted, nor is an MF 6.1 tyre.
+TEST(MfCsvStream, LoadedRadiusAboveTheFreeRadiusIsSaid) {
+  const MfParameters<double> mf62 =
+      tread::tyre::load_mf_parameters(tread::testing::tyre_file("MagicFormula62_Parameters.tir"))
+          .params;
+  const std::string input =
+      "Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps\n4000,0,0.05,0.05,16\n200,0,0.05,0.05,16\n"
+      "200,0,0.05,0.05,16\n";
+  MfCsvOptions csv;
+  csv.columns = tread::tyre::select_eval_columns("all").columns;
+  MfCsvReport report;
+  const std::string out = evaluate_with(mf62, input, csv, &report);
+  ASSERT_EQ(report.warnings.size(), 1u) << out;
+  EXPECT_EQ(report.warnings[0].rfind("2 rows (the first at in.csv:3) have a loaded radius Rl more "
+                                     "than 2 % above the free radius",
+                                     0),
+            0u)
+      << report.warnings[0];
+  csv.columns = tread::tyre::select_eval_columns("Fx_N,Fy_N").columns;  // no Rl shown: no check
+  evaluate_with(mf62, input, csv, &report);
+  EXPECT_TRUE(report.warnings.empty());
+  csv.columns = tread::tyre::select_eval_columns("all").columns;
+  evaluate_with(mf61(), input, csv, &report);
+  EXPECT_TRUE(report.warnings.empty());
+}
+
 TEST(MfCsvStream, RangeCountsAtEveryBound) {
   const MfParameters<double>& p = mf61();
   struct Bound {
