@@ -452,6 +452,8 @@ bool InputTable::parse_row(std::string_view line, int line_no, InputRow& row,
   std::size_t bad_cell = cells_;
   std::string_view bad_text;
   const char* bad_why = "";
+  // With ';' or tab: a cell read with a decimal comma and one with a point in the same row.
+  std::string_view comma_text, point_text;
   while (true) {
     const std::size_t end = t.find(separator_, start);
     if (cell < cells_ && quantity_of_cell_[cell] >= 0) {
@@ -464,6 +466,10 @@ bool InputTable::parse_row(std::string_view line, int line_no, InputRow& row,
       if (is_measured && text.empty()) {
         // not measured in this row: stays NaN
       } else if (host::read_csv_number(text, separator_ != ',', v)) {
+        if (separator_ != ',') {
+          if (text.find(',') != std::string_view::npos && comma_text.empty()) comma_text = text;
+          if (text.find('.') != std::string_view::npos && point_text.empty()) point_text = text;
+        }
         const double si = is_measured ? v * measured_spec_[q - kInputQuantityCount].to_si *
                                             measured_sign_[q - kInputQuantityCount]
                                       : v * spec_[q].to_si * sign_[q];
@@ -487,6 +493,14 @@ bool InputTable::parse_row(std::string_view line, int line_no, InputRow& row,
   if (bad_cell != cells_) {
     throw tir::TirError(name_, line_no,
                         header_[bad_cell] + ": '" + std::string(bad_text) + bad_why);
+  }
+  if (!comma_text.empty() && !point_text.empty()) {
+    // "4.000" beside "0,05": a thousands separator (4000) or a decimal point (4)? Not guessed.
+    throw tir::TirError(name_, line_no,
+                        "'" + std::string(comma_text) + "' has a decimal comma and '" +
+                            std::string(point_text) +
+                            "' a point: with both in one row the point may be a thousands "
+                            "separator; write every number with one decimal separator");
   }
   return true;
 }

@@ -23,7 +23,8 @@
 //
 // Separator: ',' (default), ';' or tab, chosen with `separator` or detected from the header line
 // (';' or tab when the header holds no ','). With ';' or tab a cell's decimal comma is read as a
-// point ("0,05" = 0.05). A UTF-8 byte order mark (spreadsheet exports) is skipped, as are blank
+// point ("0,05" = 0.05); a row with both a decimal comma and a '.' in its numbers is an error (is
+// "4.000" beside "0,05" 4 or 4000?). A UTF-8 byte order mark (spreadsheet exports) is skipped, as are blank
 // lines and lines starting with '#'. Columns that name no input (nor, with
 // InputTableOptions::measured, a measured output) are ignored (and listed by ignored_columns()).
 //

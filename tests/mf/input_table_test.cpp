@@ -226,6 +226,10 @@ TEST(InputTable, ErrorsNameFileAndLine) {
   expect_error("FZ,SL,SA,IA,V\n1,2,inf,0,5\n", 2, "SA: 'inf' is not a finite number");
   // A ',' file does not take decimal commas: the cell count is wrong instead.
   expect_error("FZ,SL,SA,IA,V\n1,0,5,2,0,5\n", 2, "expected 5 cells, found 6");
+  // A decimal comma and a point in one row: "4.000" may be 4000 (a thousands separator).
+  expect_error("FZ;SL;SA;IA;V\n4.000;0,05;0;0;16\n", 2,
+               "'0,05' has a decimal comma and '4.000' a point: with both in one row the point "
+               "may be a thousands separator; write every number with one decimal separator");
   // Finite as written, infinite in SI units: an error, not an inf input (either reader).
   expect_error("Fz_kN,SL,SA,IA,V\n1e308,0,0,0,5\n", 2,
                "Fz_kN: '1e308' is out of range once converted to SI units");
