@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -33,7 +34,8 @@ constexpr const char* kAxesNote =
     "contact patch moves towards +y (a normal tyre gives Fy < 0, Mz > 0); SI units.";
 
 std::string input_help() {
-  return "CSV of inputs. Column names (any case, any order; Fz, kappa, alpha, gamma, Vx required, "
+  return "CSV of inputs (- for standard input). Column names (any case, any order; Fz, kappa, "
+         "alpha, gamma, Vx required, "
          "phit and P optional, P absent or 0: the file's INFLPRES; other columns ignored): " +
          tyre::input_column_help();
 }
@@ -105,22 +107,38 @@ void run_mf_eval(const MfEvalArgs& args) {
     if (!selection.error.empty()) throw std::runtime_error(selection.error);
     csv.columns = std::move(selection.columns);
   }
-  std::ifstream in(args.input, std::ios::binary);
-  if (!in) throw std::runtime_error(args.input + ": cannot open");
+  // "-": standard input and output (a file named "-" was written before).
+  const bool from_stdin = args.input == "-";
+  const bool to_stdout = args.output == "-";
+  const std::string in_name = from_stdin ? std::string("<stdin>") : args.input;
+  std::ifstream file_in;
+  if (!from_stdin) {
+    file_in.open(args.input, std::ios::binary);
+    if (!file_in) throw std::runtime_error(args.input + ": cannot open");
+  }
+  std::istream& in = from_stdin ? std::cin : file_in;
   // A progress bar on a terminal, for a run that lasts more than a second.
   std::error_code no_size;
-  const std::uintmax_t input_bytes = std::filesystem::file_size(args.input, no_size);
+  const std::uintmax_t input_bytes =
+      from_stdin ? 0 : std::filesystem::file_size(args.input, no_size);
   host::ProgressBar bar(std::cerr, host::stderr_is_terminal(), no_size ? 0 : input_bytes);
   const auto start = std::chrono::steady_clock::now();
   csv.progress = [&](std::uint64_t bytes, std::uint64_t rows) {
     bar.update(bytes, rows,
                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   };
-  host::ReplaceFile out(args.output);
+  std::optional<host::ReplaceFile> out;
+  if (!to_stdout) out.emplace(args.output);
   tyre::MfCsvReport report;
   try {
-    report = tyre::evaluate_csv(loaded.params, o, csv, in, args.input, out.stream());
-    out.commit();
+    report = tyre::evaluate_csv(loaded.params, o, csv, in, in_name,
+                                to_stdout ? std::cout : out->stream());
+    if (to_stdout) {
+      std::cout.flush();
+      if (!std::cout) throw std::runtime_error("standard output: cannot write");
+    } else {
+      out->commit();
+    }
   } catch (...) {
     bar.finish();
     throw;
@@ -135,7 +153,7 @@ void run_mf_eval(const MfEvalArgs& args) {
   for (const std::string& w : report.warnings) std::cerr << "tread mf eval: warning: " << w << '\n';
   for (const tyre::MfRangeCount& c : report.out_of_range) {
     std::cerr << "tread mf eval: warning: " << c.rows
-              << " rows outside the model's range: " << c.limit << " (first: " << args.input << ':'
+              << " rows outside the model's range: " << c.limit << " (first: " << in_name << ':'
               << c.first_line << ")" << (o.use_limits ? "; evaluated clamped" : "") << '\n';
   }
   std::cerr << "tread mf eval: " << report.rows << " rows → " << args.output << " (ISO-W, SI)\n";
@@ -215,7 +233,8 @@ void add_mf_command(CLI::App& app) {
                    "Mounted side: as-measured (default, like MFeval), left, right")
       ->check(CLI::IsMember({"as-measured", "left", "right"}));
   eval->add_option("--input", args.input, input_help())->required();
-  eval->add_option("--output", args.output, "CSV to write (ISO-W, SI)")->required();
+  eval->add_option("--output", args.output, "CSV to write (ISO-W, SI); - for standard output")
+      ->required();
   eval->add_option("--sep", args.sep,
                    "Input separator: auto (default: ',' unless the header has only ';' or tabs), "
                    "',', ';' or tab; with ';' or tab a decimal comma is accepted")

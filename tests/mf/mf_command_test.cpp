@@ -727,4 +727,26 @@ TEST(MfCommand, CurveWarningsOfTirInfoAreSaid) {
   }
 }
 
+// "-" is standard input and output (it wrote a file named "-"); the same rows as from files.
+TEST(MfCommand, DashIsStandardInputAndOutput) {
+  const auto dir = tmp_dir();
+  const auto in = dir / "in.csv";
+  write(in, "Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps\n4000,0.01,0.05,0,16\n3000,0,0.02,0.01,20\n");
+  const std::string tir = tread::testing::tyre_file("MagicFormula61_Parameters.tir").string();
+  const auto log = dir / "log.txt";
+  ASSERT_EQ(run("mf eval --tir " + tir + " --input " + in.string() + " --output " +
+                    (dir / "file.csv").string(),
+                log),
+            0)
+      << slurp(log);
+  ASSERT_EQ(run("mf eval --tir " + tir + " --input - --output - < " + in.string() + " > " +
+                    (dir / "piped.csv").string(),
+                log),
+            0)
+      << slurp(log);
+  EXPECT_EQ(slurp(dir / "piped.csv"), slurp(dir / "file.csv"));
+  EXPECT_NE(slurp(log).find("2 rows → - "), std::string::npos) << slurp(log);
+  EXPECT_FALSE(std::filesystem::exists(std::filesystem::current_path() / "-"));
+}
+
 }  // namespace
