@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -174,11 +175,12 @@ void add_pac_eval(CLI::App* pac) {
       ->check(CLI::IsMember({"auto", ",", ";", "tab"}))
       ->capture_default_str();
   eval->add_option("--input", opt.input,
-                   "CSV with the inputs Fz, kappa, alpha, gamma (other columns ignored); names: " +
+                   "CSV with the inputs Fz, kappa, alpha, gamma (other columns ignored; - for "
+                   "standard input); names: " +
                        tyre::input_column_help())
       ->required()
-      ->check(CLI::ExistingFile);
-  eval->add_option("--output", opt.output, "CSV to write")->required();
+      ->check(CLI::ExistingFile | CLI::IsMember({"-"}));
+  eval->add_option("--output", opt.output, "CSV to write; - for standard output")->required();
   eval->callback([eval] {
     const auto coeff = load_pac(opt.json, opt.tir, "tread pac eval");
     tyre::PacCsvOptions o;
@@ -188,13 +190,27 @@ void add_pac_eval(CLI::App* pac) {
     o.iso_w = opt.iso_w || opt.axes == "iso-w";
     o.table.convention = *tyre::parse_sign_convention(opt.convention);
     o.table.separator = opt.sep == "auto" ? '\0' : opt.sep == "tab" ? '\t' : opt.sep.front();
-    std::ifstream in(opt.input);
-    if (!in) throw std::runtime_error(opt.input + ": cannot open");
-    host::ReplaceFile out(opt.output);
-    const auto rows = tyre::evaluate_pac_csv(coeff.params, o, in, opt.input, out.stream());
-    out.commit();
-    std::cout << "evaluated " << rows << " rows -> " << opt.output
-              << (o.iso_w ? " (ISO-W axes)" : " (model axes)") << '\n';
+    // "-": standard input and output.
+    const bool from_stdin = opt.input == "-";
+    const bool to_stdout = opt.output == "-";
+    std::ifstream file_in;
+    if (!from_stdin) {
+      file_in.open(opt.input);
+      if (!file_in) throw std::runtime_error(opt.input + ": cannot open");
+    }
+    std::optional<host::ReplaceFile> out;
+    if (!to_stdout) out.emplace(opt.output);
+    const auto rows = tyre::evaluate_pac_csv(coeff.params, o, from_stdin ? std::cin : file_in,
+                                             from_stdin ? std::string("<stdin>") : opt.input,
+                                             to_stdout ? std::cout : out->stream());
+    if (to_stdout) {
+      std::cout.flush();
+      if (!std::cout) throw std::runtime_error("standard output: cannot write");
+    } else {
+      out->commit();
+    }
+    (to_stdout ? std::cerr : std::cout) << "evaluated " << rows << " rows -> " << opt.output
+                                        << (o.iso_w ? " (ISO-W axes)" : " (model axes)") << '\n';
   });
 }
 
