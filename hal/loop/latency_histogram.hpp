@@ -23,7 +23,11 @@ class LatencyHistogram {
     sum_ns_ += ns < 0 ? 0 : ns;
   }
 
-  /// The smallest bucket value (µs) at or below which fraction `q` of the samples lie.
+  /// The last bucket's value: a percentile of kOverflowUs means "kOverflowUs µs or more".
+  static constexpr std::int64_t kOverflowUs = static_cast<std::int64_t>(kBuckets) - 1;
+
+  /// The smallest bucket value (µs) at or below which fraction `q` of the samples lie
+  /// (kOverflowUs: that many µs or more).
   [[nodiscard]] std::int64_t percentile_us(double q) const noexcept {
     if (total_ == 0U) {
       return 0;

@@ -47,7 +47,9 @@ void add_demo_command(CLI::App& app) {
                    "length of the 'sweep' scenario (tyre test machine sweeps)")
       ->check(CLI::Range(0.001, 3600.0))
       ->capture_default_str();
-  demo->add_option("--period-us", settings.period_us, "cycle period")
+  demo->add_option("--period-us", settings.period_us,
+                   "cycle period (at most 5000 us but for 'sweep': the scenarios integrate the "
+                   "vehicle at it)")
       ->check(CLI::Range(50, 1'000'000))
       ->capture_default_str();
   demo->add_option("--out", settings.out_dir, "directory for the trace and plots")
@@ -70,6 +72,7 @@ void add_demo_command(CLI::App& app) {
   demo->add_option("--log", settings.log,
                    "candump log of the node's traffic (replay with tread node --replay)");
   demo->callback([] {
+    check_scenario_period(settings.scenarios, static_cast<int>(settings.period_us));
     // The dynamic-hunting and curving scenarios run on the node's wheel-rail forces.
     const bool forces =
         std::any_of(settings.scenarios.begin(), settings.scenarios.end(),
@@ -80,6 +83,12 @@ void add_demo_command(CLI::App& app) {
     }
     settings.node = node_settings(state);
     settings.sim_clock = clock == "sim";
+    const auto& rt = settings.realtime;
+    if (settings.sim_clock && (rt.fifo_priority > 0 || rt.lock_memory || rt.cpu >= 0 ||
+                               settings.rig_cpu >= 0 || settings.rig_priority >= 0)) {
+      std::cerr << "tread demo: warning: --rt-priority, --mlock, --cpu, --rig-cpu and "
+                   "--rig-priority apply to --clock posix: ignored on the simulated clock\n";
+    }
     const host::DemoResult result = host::run_demo(settings);
     host::print_demo(std::cout, settings, result);
     if (!result.report.log_error.empty()) {

@@ -35,8 +35,19 @@ void add_node_command(CLI::App& app) {
       ->check(CLI::Range(50, 1'000'000))
       ->capture_default_str();
   cmd->add_option("--cycles", live.cycles,
-                  "stop after this many cycles (0: run until SIGINT/SIGTERM)");
-  cmd->add_option("--duration-s", duration_s, "stop after this time (overrides --cycles)");
+                  "stop after this many cycles (0: run until SIGINT/SIGTERM)")
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            if (!text.empty() && text.size() < 20 &&
+                text.find_first_not_of("0123456789") == std::string::npos) {
+              return {};
+            }
+            return "'" + text + "': the cycle count is a whole number from 0";
+          },
+          "", "CYCLES"));
+  cmd->add_option("--duration-s", duration_s,
+                  "stop after this time (overrides --cycles; at least one period, at most 1e7 s)")
+      ->check(finite_within(1e-6, 1e7, "the duration in s"));
   cmd->add_option("--gpio-chip", live.gpio_chip,
                   "libgpiod chip for the cycle pin (e.g. gpiochip0)");
   cmd->add_option("--gpio-cycle-line", live.gpio_cycle_line, "line offset of the cycle pin");
@@ -84,6 +95,16 @@ void add_node_command(CLI::App& app) {
     if (duration_s > 0.0) {
       live.cycles =
           static_cast<std::uint64_t>(duration_s * 1e6 / static_cast<double>(live.period_us));
+      if (live.cycles == 0) {  // 0 cycles would mean "until stopped"
+        throw CLI::ValidationError("--duration-s",
+                                   std::to_string(duration_s) + " s is shorter than one period");
+      }
+    }
+    if (!tx_log.empty()) {
+      throw CLI::ValidationError("--tx-log", "writes the frames of a --replay: give --replay");
+    }
+    if (live.gpio_cycle_line >= 0 && live.gpio_chip.empty()) {
+      throw CLI::ValidationError("--gpio-cycle-line", "needs --gpio-chip");
     }
     std::signal(SIGINT, on_signal);
     std::signal(SIGTERM, on_signal);

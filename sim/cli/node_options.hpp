@@ -3,8 +3,12 @@
 // into the tread executable).
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cmath>
 #include <map>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "runtime/node_runtime.hpp"
 
@@ -23,6 +27,43 @@ struct NodeCliState {
   int wheelset_forces{0};
   double timeout_ms{10.0};
 };
+
+/// A finite number within [lo, hi] (CLI::Range and CLI::PositiveNumber let NaN through).
+inline CLI::Validator finite_within(double lo, double hi, const std::string& what) {
+  return CLI::Validator(
+      [lo, hi, what](std::string& text) -> std::string {
+        double v = 0.0;
+        if (!CLI::detail::lexical_cast(text, v) || !std::isfinite(v) || v < lo || v > hi) {
+          std::ostringstream m;
+          m << "'" << text << "': " << what << " is a number from " << lo << " to " << hi;
+          return m.str();
+        }
+        return {};
+      },
+      "", "FINITE");
+}
+
+/// The longest cycle period the rig's and demo's scenarios take: they integrate the vehicle,
+/// wheelsets and wheel spin at the node's period, and above 5 ms the wheel dynamics are not
+/// resolved (braking deceleration 30 % off at 10 ms, NaN at 20 ms).
+inline constexpr int kScenarioPeriodMaxUs = 5000;
+
+/// Throws if `period_us` is above kScenarioPeriodMaxUs and a scenario other than 'sweep' (tyre
+/// test-machine sweeps: no dynamics) is to run; none given: the default ones, which integrate.
+inline void check_scenario_period(const std::vector<std::string>& scenarios, int period_us) {
+  if (period_us <= kScenarioPeriodMaxUs) return;
+  const bool integrates =
+      scenarios.empty() || std::any_of(scenarios.begin(), scenarios.end(),
+                                       [](const std::string& n) { return n != "sweep"; });
+  if (integrates) {
+    throw CLI::ValidationError(
+        "--period-us", std::to_string(period_us) +
+                           " us: the scenarios integrate the vehicle, wheelsets and wheel spin at "
+                           "the cycle period and need one of at most " +
+                           std::to_string(kScenarioPeriodMaxUs) +
+                           " us (braking is 30 % off at 10 000 us); only 'sweep' takes longer");
+  }
+}
 
 inline void add_node_options(CLI::App& cmd, NodeCliState& s, bool tir_required) {
   auto* tir =
@@ -53,13 +94,16 @@ inline void add_node_options(CLI::App& cmd, NodeCliState& s, bool tir_required) 
                  "Polach parameters for the wheel-rail forces: kalker, dry or wet")
       ->check(CLI::IsMember({"kalker", "dry", "wet"}))
       ->capture_default_str();
-  cmd.add_option("--mu", s.settings.mu, "wheel-rail friction coefficient mu0 (default: the set's)")
-      ->check(CLI::PositiveNumber);
+  cmd.add_option("--mu", s.settings.mu,
+                 "wheel-rail friction coefficient mu0, above 0 up to 1 (default: the set's)")
+      ->check(finite_within(1e-6, 1.0, "mu0"));
   cmd.add_option("--mode", s.mode,
                  "periodic (own schedule) or sync (compute on the rig's cycle frame)")
       ->check(CLI::IsMember({"periodic", "sync"}))
       ->capture_default_str();
-  cmd.add_option("--timeout-ms", s.timeout_ms, "input timeout per channel")->capture_default_str();
+  cmd.add_option("--timeout-ms", s.timeout_ms, "input timeout per channel (0.01 to 60000 ms)")
+      ->check(finite_within(0.01, 60000.0, "the input timeout in ms"))
+      ->capture_default_str();
   cmd.add_option("--use-mode", s.settings.use_mode, "MFeval useMode of the tyre model")
       ->capture_default_str();
   cmd.add_option("--side", s.settings.side, "mounted side: as-measured, left or right")
@@ -71,6 +115,11 @@ inline void add_node_options(CLI::App& cmd, NodeCliState& s, bool tir_required) 
 
 /// Turns the parsed options into NodeSettings (call from the command's callback).
 inline host::NodeSettings node_settings(NodeCliState& s) {
+  if (s.wheelset_forces > s.wheelsets) {
+    throw CLI::ValidationError("--wheelset-forces", std::to_string(s.wheelset_forces) +
+                                                        " wheelsets with forces, but --wheelsets " +
+                                                        std::to_string(s.wheelsets));
+  }
   host::NodeSettings out = s.settings;
   out.node.layout = s.fd ? proto::Layout::fd : proto::Layout::classic;
   out.node.wheels = static_cast<std::uint8_t>(s.wheels);

@@ -34,7 +34,7 @@ void add_rig_command(CLI::App& app) {
   cmd->add_option("--friction", settings.friction, "the node's --friction (kalker, dry, wet)")
       ->check(CLI::IsMember({"kalker", "dry", "wet"}))
       ->capture_default_str();
-  cmd->add_option("--mu", settings.mu, "the node's --mu")->check(CLI::PositiveNumber);
+  cmd->add_option("--mu", settings.mu, "the node's --mu")->check(finite_within(1e-6, 1.0, "mu0"));
   cmd->add_option("--scenario", settings.scenarios,
                   "scenarios, in order: braking, step-steer, sine-dwell, hunting, "
                   "dynamic-hunting, sweep")
@@ -42,7 +42,9 @@ void add_rig_command(CLI::App& app) {
   cmd->add_option("--sweep-duration-s", settings.sweep_duration_s, "length of 'sweep'")
       ->check(CLI::Range(0.001, 3600.0))
       ->capture_default_str();
-  cmd->add_option("--period-us", settings.period_us, "cycle period (the simulated step)")
+  cmd->add_option("--period-us", settings.period_us,
+                  "cycle period (the simulated step; at most 5000 us but for 'sweep': the "
+                  "scenarios integrate the vehicle at it)")
       ->check(CLI::Range(50, 1'000'000))
       ->capture_default_str();
   cmd->add_option("--pace-us", settings.pace_us,
@@ -58,6 +60,7 @@ void add_rig_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("--plot", settings.plot, "draw the scenarios' plots");
   cmd->callback([] {
+    check_scenario_period(settings.scenarios, static_cast<int>(settings.period_us));
     settings.layout = fd ? proto::Layout::fd : proto::Layout::classic;
     settings.wheels = static_cast<std::uint8_t>(wheels);
     settings.wheelsets = static_cast<std::uint8_t>(wheelsets);

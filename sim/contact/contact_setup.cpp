@@ -79,12 +79,17 @@ ContactSetup parse_wheelset_profile(const std::string& spec) {
   ContactSetup setup;
   std::stringstream items(spec);
   std::string item;
+  std::vector<std::string> seen;
   while (std::getline(items, item, ',')) {
     const auto eq = item.find('=');
     if (eq == std::string::npos) {
       throw std::invalid_argument("--wheelset-profile: '" + item + "' is not key=value");
     }
     const std::string key = item.substr(0, eq);
+    if (std::find(seen.begin(), seen.end(), key) != seen.end()) {
+      throw std::invalid_argument("--wheelset-profile: '" + key + "' given twice");
+    }
+    seen.push_back(key);
     const std::string value = item.substr(eq + 1);
     const auto* k = std::find_if(kSpecKeys.begin(), kSpecKeys.end(),
                                  [&key](const SpecKey& s) { return key == s.key; });

@@ -94,9 +94,10 @@ void print_demo(std::ostream& out, const DemoSettings& s, const DemoResult& r) {
   if (r.threaded) {
     const hal::LatencyHistogram& h = r.answer_latency;
     const bool sync = s.node.node.schedule == node::Schedule::sync;
-    out << (sync ? "CAN-in -> CAN-out" : "deadline -> answer") << " p50 " << h.percentile_us(0.50)
-        << " us, p99 " << h.percentile_us(0.99) << " us, max " << std::fixed << std::setprecision(1)
-        << static_cast<double>(h.max_ns()) / 1000.0 << " us (" << h.count() << " answers; "
+    out << (sync ? "CAN-in -> CAN-out" : "deadline -> answer") << " p50 "
+        << percentile_text(h, 0.50) << " us, p99 " << percentile_text(h, 0.99) << " us, max "
+        << std::fixed << std::setprecision(1) << static_cast<double>(h.max_ns()) / 1000.0 << " us ("
+        << h.count() << " answers; "
         << (sync ? "the rig's cycle frame to the node's last answer frame"
                  : "the node's deadline to its last answer frame")
         << ")\n";

@@ -175,13 +175,18 @@ ReplayResult run_replay(const NodeSettings& settings, const std::filesystem::pat
   return result;
 }
 
+std::string percentile_text(const hal::LatencyHistogram& h, double q) {
+  const std::int64_t us = h.percentile_us(q);
+  return (us >= hal::LatencyHistogram::kOverflowUs ? ">= " : "") + std::to_string(us);
+}
+
 void print_report(std::ostream& out, const SessionReport& r, bool timing) {
   const node::NodeCounters& c = r.counters;
   out << "cycles            " << r.loop.cycles << "\n";
   out << "overruns          " << r.loop.overruns << "\n";
   if (timing) {
     const auto row = [&out](const char* name, const hal::LatencyHistogram& h) {
-      out << name << " p50 " << h.percentile_us(0.50) << " us, p99 " << h.percentile_us(0.99)
+      out << name << " p50 " << percentile_text(h, 0.50) << " us, p99 " << percentile_text(h, 0.99)
           << " us, max " << std::fixed << std::setprecision(1)
           << static_cast<double>(h.max_ns()) / 1000.0 << " us\n";
       out.unsetf(std::ios::floatfield);

@@ -60,4 +60,7 @@ ReplayResult run_replay(const NodeSettings& settings, const std::filesystem::pat
 /// A human-readable summary: cycles, overruns, latency percentiles, frame counters.
 void print_report(std::ostream& out, const SessionReport& report, bool timing);
 
+/// A percentile of `h` in µs as text: ">= 20000" where it falls in the overflow bucket.
+std::string percentile_text(const hal::LatencyHistogram& h, double q);
+
 }  // namespace tread::host

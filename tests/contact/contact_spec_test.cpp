@@ -63,6 +63,8 @@ TEST(ContactSpec, WheelsetDimensionsAreAWheelsets) {
     return std::string("accepted");
   };
   EXPECT_EQ(error("wheel=S1002,rail=60E1"), "accepted");
+  EXPECT_EQ(error("wheel=S1002,rail=60E1,r0=460,r0=900"),
+            "--wheelset-profile: 'r0' given twice");
   EXPECT_EQ(error("wheel=S1002,rail=60E1,gauge=1000,b2b=925"), "accepted");
   EXPECT_EQ(error("wheel=S1002,rail=60E1,r0=-5"),
             "--r0 -5: a wheel's rolling radius in mm lies within 100 … 1500 mm");

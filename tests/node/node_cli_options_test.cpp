@@ -1,0 +1,87 @@
+// `tread node`, `tread demo` and `tread rig` refuse option values that ran forever, overflowed
+// or gave NaN figures under exit 0 (an audit of the commands): each is an error naming the option.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "test_dir.hpp"
+
+namespace {
+
+struct CliRun {
+  int status;
+  std::string err;
+};
+
+CliRun run(const std::string& args) {
+  const auto dir =
+      tread::testing::test_dir(std::string("node_cli_options_test_") +
+                               ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  const auto err = dir / "stderr.txt";
+  // A command that would run forever is stopped after 20 s (timeout's status 124).
+  const std::string command = "timeout 20 " + std::string(TREAD_CLI) + " " + args + " > " +
+                              (dir / "stdout.txt").string() + " 2> " + err.string();
+  const int status = std::system(command.c_str());
+  std::ifstream in(err);
+  std::stringstream s;
+  s << in.rdbuf();
+  return {status, s.str()};
+}
+
+std::string tir() {
+  return (std::filesystem::path(TREAD_SOURCE_DIR) / "data" / "tyres" /
+          "MagicFormula61_Parameters.tir")
+      .string();
+}
+
+void expect_refused(const std::string& args, const std::string& what) {
+  const CliRun r = run(args);
+  EXPECT_NE(r.status, 0) << args;
+  EXPECT_NE(r.err.find(what), std::string::npos) << args << "\n" << r.err;
+}
+
+TEST(NodeCliOptions, ValuesNoNodeTakesAreRefused) {
+  const std::string node = "node --can stub --tir " + tir() + " ";
+  expect_refused(node + "--timeout-ms -5",
+                 "--timeout-ms: '-5': the input timeout in ms is a number");
+  expect_refused(node + "--timeout-ms 1e13", "--timeout-ms: '1e13'");
+  expect_refused(node + "--timeout-ms nan", "--timeout-ms: 'nan'");
+  expect_refused(node + "--mu nan", "--mu: 'nan': mu0 is a number from 1e-06 to 1");
+  expect_refused(node + "--mu 1.5", "--mu: '1.5'");
+  expect_refused(node + "--duration-s 0", "--duration-s: '0'");
+  expect_refused(node + "--duration-s inf", "--duration-s: 'inf'");
+  expect_refused(node + "--duration-s 1e-5", "--duration-s: 0.000010 s is shorter than one period");
+  expect_refused(node + "--cycles -1", "--cycles: '-1': the cycle count is a whole number from 0");
+  expect_refused(node + "--wheelsets 0 --wheelset-forces 2",
+                 "--wheelset-forces: 2 wheelsets with forces, but --wheelsets 0");
+  expect_refused(node + "--tx-log x.log", "--tx-log: writes the frames of a --replay");
+  expect_refused(node + "--gpio-cycle-line 5", "--gpio-cycle-line: needs --gpio-chip");
+  // What still runs: a duration of a few cycles.
+  const CliRun ok = run(node + "--duration-s 0.01");
+  EXPECT_EQ(ok.status, 0) << ok.err;
+}
+
+TEST(NodeCliOptions, ScenariosNeedAPeriodTheyCanIntegrate) {
+  expect_refused("demo --clock sim --no-plot --scenario braking --period-us 20000",
+                 "--period-us: 20000 us: the scenarios integrate the vehicle");
+  expect_refused("demo --clock sim --no-plot --period-us 10000", "at most 5000 us");
+  // The tyre test-machine sweep integrates nothing: any period.
+  const CliRun sweep =
+      run("demo --clock sim --no-plot --scenario sweep --sweep-duration-s 1 --period-us 20000 "
+          "--out " +
+          (std::filesystem::temp_directory_path() / "node_cli_options_sweep").string());
+  EXPECT_EQ(sweep.status, 0) << sweep.err;
+  // Real-time options on the simulated clock do nothing: said.
+  const CliRun rt =
+      run("demo --clock sim --no-plot --scenario sweep --sweep-duration-s 1 --cpu 1 "
+          "--out " +
+          (std::filesystem::temp_directory_path() / "node_cli_options_rt").string());
+  EXPECT_EQ(rt.status, 0) << rt.err;
+  EXPECT_NE(rt.err.find("ignored on the simulated clock"), std::string::npos) << rt.err;
+}
+
+}  // namespace
