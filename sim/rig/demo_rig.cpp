@@ -56,6 +56,7 @@ void DemoRig::finish(const DemoSettings& s, DemoResult& result) {
   }
   result.rig_frames_accepted = link_.accepted();
   result.rig_frames_rejected = link_.rejected();
+  result.rig_frames_saturated = link_.saturated_frames();
 }
 
 }  // namespace tread::host

@@ -89,6 +89,12 @@ void print_demo(std::ostream& out, const DemoSettings& s, const DemoResult& r) {
   }
   out << "\n";
   print_report(out, r.report, !s.sim_clock);
+  if (r.rig_frames_saturated > 0) {
+    out << "warning           " << r.rig_frames_saturated
+        << " input frames carried a value beyond its signal's range, sent clamped (e.g. a slip "
+           "angle beyond 0.655 rad): the node answered the clamped value, the trace holds the "
+           "scenario's own\n";
+  }
   out << "rig frames        " << r.rig_frames_accepted << " accepted, " << r.rig_frames_rejected
       << " rejected; cycles without a complete answer " << r.unanswered_cycles << "\n";
   if (r.threaded) {

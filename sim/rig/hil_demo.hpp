@@ -44,7 +44,8 @@ struct DemoResult {
   SessionReport report;
   std::uint64_t rig_frames_accepted{0};
   std::uint64_t rig_frames_rejected{0};
-  std::uint64_t unanswered_cycles{0};  ///< real clock: no complete answer in the cycle's window
+  std::uint64_t rig_frames_saturated{0};  ///< input frames sent with a signal clamped to its range
+  std::uint64_t unanswered_cycles{0};     ///< real clock: no complete answer in the cycle's window
   /// Real clock (the node on its own thread, the rig on another), as the rig measured them:
   /// sync mode: CAN-in → CAN-out, from the rig's cycle frame (the send) to the node's last answer
   /// frame of the cycle (its timestamp: the kernel's receive time on SocketCAN, the send time on

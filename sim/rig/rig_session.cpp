@@ -126,6 +126,7 @@ RigReport run_rig(const RigSettings& s) {
     r.scenarios.push_back(std::move(o));
   }
   r.rx_queue_overflows = bus.rx_overflows();
+  r.frames_saturated = link.saturated_frames();
   r.node_overruns = status_view.status.overruns;
   r.node_rejected = status_view.status.rejected;
   r.node_cycle = status_view.status.cycle;
@@ -136,7 +137,8 @@ RigReport run_rig(const RigSettings& s) {
 void print_rig_report(std::ostream& out, const RigReport& r) {
   out << "rig cycles           " << r.cycles << " (late answers " << r.late_cycles
       << ", frames between cycles " << r.stray_frames << ")\n";
-  out << "rig frames sent      " << r.frames_sent << " (refused " << r.send_refused << ")\n";
+  out << "rig frames sent      " << r.frames_sent << " (refused " << r.send_refused
+      << "; with a value clamped to its signal's range " << r.frames_saturated << ")\n";
   out << "node frames          " << r.node_frames_accepted << " accepted, "
       << r.node_frames_rejected << " rejected\n";
   out << "other traffic        " << r.foreign_frames << " foreign frames, " << r.error_frames

@@ -48,6 +48,7 @@ struct RigReport {
   std::uint64_t cycles{0};
   std::uint64_t frames_sent{0};
   std::uint64_t send_refused{0};
+  std::uint64_t frames_saturated{0};  ///< input frames sent with a signal clamped to its range
   std::uint64_t node_frames_accepted{0};
   std::uint64_t node_frames_rejected{0};
   /// Frames that are not node outputs (the kernel filter passes only the node's IDs, so these are

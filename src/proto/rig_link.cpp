@@ -51,7 +51,9 @@ std::size_t RigLink::encode_cycle(const RigData& data, std::span<CanFrame> out) 
       if (!wanted(all[m]) || is_cycle_frame(all[m]) != (pass == 1)) {
         continue;
       }
-      static_cast<void>(encode(all[m], data, next_counter(m), out[n]));
+      if (encode(all[m], data, next_counter(m), out[n]) == Status::out_of_range) {
+        ++saturated_frames_;
+      }
       ++n;
     }
   }

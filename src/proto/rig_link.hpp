@@ -34,6 +34,9 @@ class RigLink {
   Status receive(const CanFrame& frame, NodeData& outputs) noexcept;
 
   [[nodiscard]] std::uint64_t rejected() const noexcept { return rejected_; }
+  /// Input frames encode_cycle wrote with a signal saturated at its range (or not finite): the
+  /// node received a clamped value (e.g. a slip angle beyond ±0.655 rad).
+  [[nodiscard]] std::uint64_t saturated_frames() const noexcept { return saturated_frames_; }
   [[nodiscard]] std::uint64_t accepted() const noexcept { return accepted_; }
 
   static constexpr std::size_t kMaxRigFrames = 2 * kMaxWheels + 3 * kMaxWheelsets + 1;
@@ -50,6 +53,7 @@ class RigLink {
   std::array<E2eReceiver, kMaxMessages> receivers_{};
   std::uint64_t rejected_{0};
   std::uint64_t accepted_{0};
+  std::uint64_t saturated_frames_{0};
 };
 
 }  // namespace tread::proto

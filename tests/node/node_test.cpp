@@ -154,6 +154,19 @@ TEST_P(NodeLayout, SyncModeEchoIgnoresARejectedCycleFrame) {
   EXPECT_FALSE(proto::answers_rig_cycle(out.status, 42));
 }
 
+// A value beyond its signal's range goes out clamped; the rig counts such frames (the demo and
+// rig reports say them: a slip angle of 0.74 rad was sent as 0.655 without a word).
+TEST_P(NodeLayout, RigCountsFramesWithASaturatedSignal) {
+  Harness h(GetParam());
+  std::array<proto::CanFrame, proto::RigLink::kMaxRigFrames> frames{};
+  proto::RigData in = h.inputs();
+  static_cast<void>(h.rig.encode_cycle(in, frames));
+  EXPECT_EQ(h.rig.saturated_frames(), 0U);
+  in.wheels[2].alpha_rad = 0.75F;
+  static_cast<void>(h.rig.encode_cycle(in, frames));
+  EXPECT_EQ(h.rig.saturated_frames(), 1U);
+}
+
 TEST_P(NodeLayout, PeriodicModeStatusCountsTheNodesCycles) {
   Harness h(GetParam());
   proto::RigData in = h.inputs();
