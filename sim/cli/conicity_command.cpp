@@ -9,13 +9,17 @@
 // are allowed: the oscillation is then not centred on 0.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "cli/cli_checks.hpp"
 #include "cli/commands.hpp"
+#include "contact/contact_mechanics.hpp"
 #include "contact/contact_plot.hpp"
 #include "contact/contact_setup_cli.hpp"
 #include "contact/equivalent_conicity.hpp"
@@ -36,13 +40,16 @@ void add_conicity_command(CLI::App& app) {
   cmd->add_option("--amplitudes", amplitudes, "amplitudes (mm), comma separated")
       ->delimiter(',')
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--step", step_mm, "delta r table step used for the integration (mm)")
+      ->check(finite_within(0.01, 30.0, "an amplitude in mm"));
+  cmd->add_option("--step", step_mm,
+                  "delta r table step used for the integration (mm; at most a tenth of the "
+                  "smallest amplitude)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(finite_within(0.001, 1.0, "the table step in mm"));
   cmd->add_option("--ymax", y_max_mm,
                   "delta r table from -ymax to +ymax (mm); default: largest amplitude + 3 "
-                  "(an asymmetric wheelset oscillates off centre)");
+                  "(an asymmetric wheelset oscillates off centre)")
+      ->check(finite_within(0.1, 100.0, "the table's half width in mm"));
   cmd->add_option("--plot", plot, "PNG: delta r(y) and the contact positions (gnuplot)");
   cmd->callback([] {
     std::vector<std::string> warnings;
@@ -51,7 +58,17 @@ void add_conicity_command(CLI::App& app) {
       std::cerr << "tread conicity: warning: " << w << '\n';
     }
     const double a_max = *std::max_element(amplitudes.begin(), amplitudes.end());
+    const double a_min = *std::min_element(amplitudes.begin(), amplitudes.end());
+    if (step_mm > 0.1 * a_min) {  // the integral over a motion of a few steps is not one
+      char text[96];
+      std::snprintf(text, sizeof text, "%g mm is more than a tenth of the amplitude %g mm", step_mm,
+                    a_min);
+      throw CLI::ValidationError("--step", text);
+    }
     double y_max = y_max_mm > 0.0 ? y_max_mm : std::ceil(a_max) + 3.0;
+    // A whole number of steps each side: the table's grid is symmetric about y = 0 (a grid that is
+    // not put a symmetric wheelset's centre off 0).
+    y_max = std::ceil(y_max / step_mm - 1e-9) * step_mm;
     contact::ContactTable t;
     for (;;) {
       try {
@@ -82,19 +99,36 @@ void add_conicity_command(CLI::App& app) {
       std::replace(text.begin(), text.end(), ',', ';');
       return text;
     };
+    // Where the flange takes the contact (90 % of its angle): an amplitude reaching it measures
+    // flange contact or climbing, not the tread's conicity.
+    const contact::FlangeAngles flange = contact::profile_flange_angles(c, y_max);
+    const double flange_rad = 0.9 * std::min(flange.left_rad, flange.right_rad);
+    double flange_y = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < t.y_mm.size(); ++k) {
+      if (std::max(t.gamma_left_rad[k], t.gamma_right_rad[k]) >= flange_rad) {
+        flange_y = std::min(flange_y, std::abs(t.y_mm[k]));
+      }
+    }
     for (const double a : amplitudes) {
       std::string note;
+      if (a >= flange_y) {
+        char at[32];
+        std::snprintf(at, sizeof at, "%.2f", flange_y);
+        note = std::string("flange contact within the motion (from |y| = ") + at +
+               " mm): a flange's slope rather than the tread's conicity";
+      }
       std::cout << std::fixed << std::setprecision(3) << a << ',';
       try {
         const contact::ConicityResult r = contact::equivalent_conicity(t, a, options);
         std::cout << std::setprecision(5) << r.tan_gamma_e << ',' << std::setprecision(4)
                   << r.centre_y_mm << ',' << std::setprecision(1) << r.wavelength_mm << ',';
         if (r.neutral) {
-          note = "neutral: delta r = 0 over the whole motion (annex B)";
+          note += std::string(note.empty() ? "" : "; ") +
+                  "neutral: delta r = 0 over the whole motion (annex B)";
         }
       } catch (const std::domain_error& e) {
         std::cout << "nan,nan,nan,";
-        note = std::string("annex B: ") + e.what();
+        note += std::string(note.empty() ? "" : "; ") + "annex B: " + e.what();
         std::cerr << "tread conicity: warning: annex B: " << e.what() << "\n";
       }
       try {

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/cli_checks.hpp"
 #include "runtime/node_runtime.hpp"
 
 namespace tread::cli {
@@ -27,21 +28,6 @@ struct NodeCliState {
   int wheelset_forces{0};
   double timeout_ms{10.0};
 };
-
-/// A finite number within [lo, hi] (CLI::Range and CLI::PositiveNumber let NaN through).
-inline CLI::Validator finite_within(double lo, double hi, const std::string& what) {
-  return CLI::Validator(
-      [lo, hi, what](std::string& text) -> std::string {
-        double v = 0.0;
-        if (!CLI::detail::lexical_cast(text, v) || !std::isfinite(v) || v < lo || v > hi) {
-          std::ostringstream m;
-          m << "'" << text << "': " << what << " is a number from " << lo << " to " << hi;
-          return m.str();
-        }
-        return {};
-      },
-      "", "FINITE");
-}
 
 /// The longest cycle period the rig's and demo's scenarios take: they integrate the vehicle,
 /// wheelsets and wheel spin at the node's period, and above 5 ms the wheel dynamics are not

@@ -149,8 +149,7 @@ rail::WheelForces<double> evaluate_wheel(const WheelMechanics& wheel, bool right
   k.lateral_velocity_m_s = state.lateral_velocity_m_s;
   k.yaw_rad = state.yaw_rad;
   k.yaw_rate_rad_s = state.yaw_rate_rad_s;
-  k.axle_spin_rad_s =
-      state.axle_spin_rad_s > 0.0 ? state.axle_spin_rad_s : state.speed_m_s / (r0_mm * 1e-3);
+  k.axle_spin_rad_s = state.axle_spin_rad_s.value_or(state.speed_m_s / (r0_mm * 1e-3));
   k.half_contact_base_mm = half_contact_base_mm;
   if (right_wheel) {
     k = rail::mirrored(k);

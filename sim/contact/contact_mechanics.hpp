@@ -5,6 +5,7 @@
 // node's tables hold and the core (rail/wheel_contact.hpp) scales by the load at run time. And the
 // evaluation of a whole table at a wheel load and wheelset motion for `tread contact`.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -98,8 +99,8 @@ struct WheelsetState {
   double lateral_velocity_m_s = 0.0;
   double yaw_rad = 0.0;
   double yaw_rate_rad_s = 0.0;
-  /// Axle spin; <= 0: free rolling on the nominal radius, V / r0.
-  double axle_spin_rad_s = 0.0;
+  /// Axle spin (0: a locked wheelset); none: free rolling on the nominal radius, V / r0.
+  std::optional<double> axle_spin_rad_s;
   double load_left_n = 0.0;
   double load_right_n = 0.0;
 };

@@ -275,12 +275,19 @@ RigidContact build_contact(const ContactSetup& setup, std::vector<std::string>& 
                           &file_inclination_rad);
   const std::string& right_file =
       setup.wheel_right_file.empty() ? setup.wheel_file : setup.wheel_right_file;
-  left = naming_file(setup.wheel_file,
-                     [&] { return smooth_profile(left, setup.smooth_half_window_mm); });
-  right =
-      naming_file(right_file, [&] { return smooth_profile(right, setup.smooth_half_window_mm); });
-  rail = naming_file(setup.rail_file,
-                     [&] { return smooth_profile(rail, setup.smooth_half_window_mm); });
+  // Smoothing is for measured profiles: the built-in ones are the standards' exact shapes.
+  if (!setup.wheel_file.empty()) {
+    left = naming_file(setup.wheel_file,
+                       [&] { return smooth_profile(left, setup.smooth_half_window_mm); });
+  }
+  if (!right_file.empty()) {
+    right =
+        naming_file(right_file, [&] { return smooth_profile(right, setup.smooth_half_window_mm); });
+  }
+  if (!builtin) {
+    rail = naming_file(setup.rail_file,
+                       [&] { return smooth_profile(rail, setup.smooth_half_window_mm); });
+  }
   if (!builtin && setup.rail_frame == "upright") {
     constexpr double kCantedFrom_rad = 1.0 / 80.0;
     if (file_inclination_rad && *file_inclination_rad >= kCantedFrom_rad && cant_rad > 0.0) {
@@ -312,7 +319,22 @@ RigidContact build_contact(const ContactSetup& setup, std::vector<std::string>& 
       files += (files.empty() ? "" : ", ") + *f;
     }
   }
-  return naming_file(files, [&] { return RigidContact(left, right, rail, wheelset); });
+  RigidContact contact =
+      naming_file(files, [&] { return RigidContact(left, right, rail, wheelset); });
+  // A wheelset without lateral play (wheel files: the built-in wheels' e is checked before): both
+  // flanges on their rails with the wheelset centred.
+  constexpr double kFlangeContact_rad = 0.5;
+  const ContactState centred = contact.at(0.0);
+  if (centred.left.gamma_rad > kFlangeContact_rad && centred.right.gamma_rad > kFlangeContact_rad) {
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "--b2b %g mm, --gauge %g mm: both flanges touch their rails with the wheelset "
+                  "centred (contact angles %.2f and %.2f rad): the wheelset has no lateral play",
+                  setup.back_to_back_mm, setup.gauge_mm, centred.left.gamma_rad,
+                  centred.right.gamma_rad);
+    throw std::invalid_argument((files.empty() ? "" : files + ": ") + text);
+  }
+  return contact;
 }
 
 std::optional<double> first_profile_end_abs_y(const ContactTable& table) {

@@ -6,6 +6,7 @@
 #include <functional>
 #include <string>
 
+#include "cli/cli_checks.hpp"
 #include "contact/contact_setup.hpp"
 #include "profile/profile_file.hpp"
 
@@ -59,8 +60,10 @@ inline void add_contact_setup_options(CLI::App& cmd, ContactSetup& s) {
       "r_right, y > 0 toward the left rail (EN 15302's 920/918 mm case: --r0 460 "
       "--r0-right 459)");
   cmd.add_option("--smooth", s.smooth_half_window_mm,
-                 "smooth measured profiles: local quadratic fit half window (mm), 0 = off")
-      ->capture_default_str();
+                 "smooth measured profiles (files; built-in profiles are exact): local quadratic "
+                 "fit half window (mm, up to 10), 0 = off")
+      ->capture_default_str()
+      ->check(cli::finite_within(0.0, 10.0, "the smoothing half window in mm"));
 }
 
 }  // namespace tread::contact

@@ -457,6 +457,60 @@ std::map<std::string, std::vector<double>> run_table(const std::string& extra, c
   return columns(out);
 }
 
+// From an audit of the commands, each exit 0 before: NaN or absurd kinematics and materials, a
+// locked axle read as free rolling, a conicity step too coarse for its amplitude (and a grid not
+// symmetric about 0), amplitudes into the flange said so, and a wheel file without lateral play.
+TEST(ContactCommand, ValuesNoWheelsetHasAreRefusedOrSaid) {
+  const fs::path out = tmp_dir() / "out.csv";
+  const fs::path err = tmp_dir() / "err.txt";
+  const std::string pair = "--wheel S1002 --rail 60E1 ";
+  for (const char* bad :
+       {"--load 80000 --yaw nan", "--load 80000 --yaw 100", "--load 80000 --lateral-velocity 1000",
+        "--load 80000 --mu 50", "--load 80000 --e-wheel 1", "--load 80000 --axle-spin -1",
+        "--step 1e-6", "--smooth nan", "--smooth 50"}) {
+    EXPECT_NE(run("contact " + pair + bad, out, err), 0) << bad;
+    EXPECT_NE(text_of(err).find("is a number from"), std::string::npos) << bad << text_of(err);
+  }
+  // --axle-spin 0: a locked wheelset, longitudinal creepage 1 (it was taken as free rolling).
+  std::string header;
+  ASSERT_EQ(run("contact " + pair + "--load 100000 --axle-spin 0 --ymax 1 --step 1", out, err), 0)
+      << text_of(err);
+  const auto rows = read_csv(out, &header);
+  std::vector<std::string> names;
+  for (std::stringstream h(header); h.good();) {
+    std::string n;
+    std::getline(h, n, ',');
+    names.push_back(n);
+  }
+  const auto xi = std::find(names.begin(), names.end(), "xi1_left");
+  ASSERT_NE(xi, names.end()) << header;
+  EXPECT_NEAR(rows.at(1).at(static_cast<std::size_t>(xi - names.begin())), 1.0, 1e-6);
+
+  // Conicity: a step of more than a tenth of the smallest amplitude, a nonsense --ymax.
+  EXPECT_NE(run("conicity " + pair + "--amplitudes 1,3 --step 0.5", out, err), 0);
+  EXPECT_NE(text_of(err).find("--step: 0.5 mm is more than a tenth of the amplitude 1 mm"),
+            std::string::npos)
+      << text_of(err);
+  EXPECT_NE(run("conicity " + pair + "--ymax -5", out, err), 0);
+  // A step that does not divide the range: the grid still has y = 0, a symmetric wheelset's centre.
+  ASSERT_EQ(run("conicity " + pair + "--amplitudes 3 --step 0.3 --ymax 6.1", out, err), 0)
+      << text_of(err);
+  EXPECT_NEAR(read_csv(out).at(0).at(2), 0.0, 1e-9) << text_of(out);
+  // Amplitudes into the flange are marked, the tread's are ok.
+  ASSERT_EQ(run("conicity " + pair + "--amplitudes 3,8", out, err), 0) << text_of(err);
+  const std::string csv = text_of(out);
+  EXPECT_NE(csv.find("3.000,0.17414,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",ok\n8.000,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("flange contact within the motion (from |y| = 6.62 mm)"), std::string::npos)
+      << csv;
+  // A wheel file on a back-to-back that leaves no play: both flanges on the rails when centred.
+  const fs::path wheel = tread::testing::test_data("profiles/s1002_clean.csv");
+  EXPECT_NE(run("conicity --wheel-file " + wheel.string() + " --rail 60E1 --b2b 1380", out, err),
+            0);
+  EXPECT_NE(text_of(err).find("the wheelset has no lateral play"), std::string::npos)
+      << text_of(err);
+}
+
 }  // namespace mechanics
 
 // Nadal's limit is the profiles' (their flange angle), not the largest contact angle within the
