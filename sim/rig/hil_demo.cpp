@@ -120,7 +120,9 @@ void print_demo(std::ostream& out, const DemoSettings& s, const DemoResult& r) {
     out << r.rig_notes;
   }
   out << std::setprecision(4);
-  out << "answers vs the reference (double, on the inputs the node decoded):\n";
+  out << "answers vs the reference (double, on the inputs the node decoded): "
+      << r.answers.answers_checked << " checked, " << r.answers.stale_answers << " stale, "
+      << r.answers.flagged_answers << " flagged clamped, saturated or disabled (not checked)\n";
   if (s.node.node.wheels > 0) {
     out << "  max |dF|          " << r.answers.max_force_error_n << " N  ("
         << 100.0 * r.answers.max_force_error_n / std::max(r.answers.max_force_n, 1.0)

@@ -147,7 +147,8 @@ void print_rig_report(std::ostream& out, const RigReport& r) {
       << " (frames the kernel dropped for the rig's full receive queue, SO_RXQ_OVFL; buffer "
       << r.receive_buffer_bytes << " bytes)\n";
   out << "answers checked      " << r.answers.answers_checked << " (stale "
-      << r.answers.stale_answers << "; " << r.answers.other_answers
+      << r.answers.stale_answers << "; flagged clamped, saturated or disabled "
+      << r.answers.flagged_answers << "; " << r.answers.other_answers
       << " answers of the node to no cycle the rig waited for, not taken)\n";
   out << "max |dF|             " << r.answers.max_force_error_n << " N, max |dMz| "
       << r.answers.max_moment_error_nm << " N m, max |d delta_r| " << r.answers.max_delta_r_error_mm

@@ -16,6 +16,7 @@ namespace tread::host {
 void AnswerCheck::add(const AnswerCheck& other) {
   answers_checked += other.answers_checked;
   stale_answers += other.stale_answers;
+  flagged_answers += other.flagged_answers;
   unchecked_cycles += other.unchecked_cycles;
   other_answers += other.other_answers;
   max_force_error_n = std::max(max_force_error_n, other.max_force_error_n);
@@ -115,7 +116,9 @@ void ScenarioRunner::end_cycle(double dt_s, bool answered) {
   for (std::size_t i = 0; i < wheels_ && answered && reference_.tyre != nullptr; ++i) {
     const proto::WheelOutput& w = answers_.wheels[i];
     if (w.status != 0U) {
-      check_.stale_answers += (w.status & proto::kStatusStale) != 0U ? 1U : 0U;
+      const bool stale = (w.status & proto::kStatusStale) != 0U;
+      check_.stale_answers += stale ? 1U : 0U;
+      check_.flagged_answers += stale ? 0U : 1U;
       continue;
     }
     const mf::MfOutput<double> ref =
@@ -131,7 +134,9 @@ void ScenarioRunner::end_cycle(double dt_s, bool answered) {
   for (std::size_t j = 0; j < wheelsets_ && answered && reference_.contact != nullptr; ++j) {
     const proto::WheelsetOutput& w = answers_.wheelsets[j];
     if (w.status != 0U) {
-      check_.stale_answers += (w.status & proto::kStatusStale) != 0U ? 1U : 0U;
+      const bool stale = (w.status & proto::kStatusStale) != 0U;
+      check_.stale_answers += stale ? 1U : 0U;
+      check_.flagged_answers += stale ? 0U : 1U;
       continue;
     }
     ++check_.answers_checked;
@@ -195,6 +200,10 @@ void print_scenario_outcome(std::ostream& out, const ScenarioOutcome& o) {
   out << "   " << o.cycles << " cycles; " << o.check.answers_checked
       << " answers checked against the reference";
   if (o.check.stale_answers > 0) out << " (" << o.check.stale_answers << " stale)";
+  if (o.check.flagged_answers > 0) {
+    out << "; " << o.check.flagged_answers
+        << " answers flagged clamped, saturated or disabled (not checked)";
+  }
   if (o.check.unchecked_cycles > 0) {
     out << "; " << o.check.unchecked_cycles << " cycles without an answer in time (not checked)";
   }

@@ -29,6 +29,9 @@ struct RigReference {
 struct AnswerCheck {
   std::uint64_t answers_checked{0};  ///< wheel and wheelset answers compared
   std::uint64_t stale_answers{0};    ///< answers flagged stale (zeros), not compared
+  /// Answers flagged otherwise (input clamped to the table, output saturated, channel disabled):
+  /// not compared either, so said.
+  std::uint64_t flagged_answers{0};
   /// Cycles without this cycle's answer (none came in time, or the inputs reached the node after
   /// its deadline, so that its answer is of older inputs): not compared.
   std::uint64_t unchecked_cycles{0};

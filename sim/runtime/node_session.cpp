@@ -211,6 +211,9 @@ void print_report(std::ostream& out, const SessionReport& r, bool timing) {
   }
   out << "frames sent       " << c.tx_frames << " (send refused " << r.loop.tx_failed << ")\n";
   out << "stale / clamped   " << c.stale_events << " / " << c.clamp_events << " channel-cycles\n";
+  out << "outputs saturated " << c.saturated_outputs
+      << " frames (a value beyond its signal's range, sent at the limit), not finite "
+      << c.non_finite_outputs << "\n";
   if (!r.notes.empty()) {
     out << r.notes;
   }
