@@ -95,12 +95,37 @@ inline void strip_utf8_bom(std::string& line, std::size_t line_no) {
   }
 }
 
+/// True if `text` is two or more blank-separated numbers each written with one decimal comma
+/// between digits and no point ("-70,0 9,519"): a ',' there is a decimal point, not a separator.
+inline bool blank_separated_decimal_commas(std::string_view text) {
+  std::size_t tokens = 0;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    while (i < text.size() && (text[i] == ' ' || text[i] == '\r')) ++i;
+    if (i == text.size()) break;
+    std::size_t end = i;
+    while (end < text.size() && text[end] != ' ' && text[end] != '\r') ++end;
+    const std::string_view token = text.substr(i, end - i);
+    const std::size_t comma = token.find(',');
+    const auto digit = [](char c) { return c >= '0' && c <= '9'; };
+    if (comma == std::string_view::npos || token.find(',', comma + 1) != std::string_view::npos ||
+        token.find('.') != std::string_view::npos || comma == 0 || comma + 1 == token.size() ||
+        !digit(token[comma - 1]) || !digit(token[comma + 1])) {
+      return false;
+    }
+    ++tokens;
+    i = end;
+  }
+  return tokens >= 2;
+}
+
 /// A data line whose fields are separated by ';' or tabs may use decimal commas (European
-/// spreadsheets): there a ',' is a decimal point, never a separator. Returns the line with such
-/// commas as points; other lines unchanged.
+/// spreadsheets): there a ',' is a decimal point, never a separator; so in a line of blank-
+/// separated numbers that each have one decimal comma ("-70,0 9,519", not -70, 0, 9, 519).
+/// Returns the line with such commas as points; other lines unchanged.
 inline std::string with_decimal_points(std::string_view text) {
   std::string out(text);
-  if (out.find_first_of(";\t") != std::string::npos) {
+  if (out.find_first_of(";\t") != std::string::npos || blank_separated_decimal_commas(text)) {
     std::replace(out.begin(), out.end(), ',', '.');
   }
   return out;

@@ -91,7 +91,11 @@ AxisColumn axis_column(std::string_view cell, const std::string& source, std::si
   for (const auto& [u, f] : kUnits) {
     if (unit == u) return {name[0], f, !u.empty() && u != "mm"};
   }
-  if (!bracketed) return {};
+  // Units of length a profile is not written in: named, so not taken as mm ("y_ft").
+  static constexpr std::string_view kOtherLengths[] = {"ft", "feet", "dm", "km", "nm", "yd", "mil"};
+  const bool other_length = std::find(std::begin(kOtherLengths), std::end(kOtherLengths), unit) !=
+                            std::end(kOtherLengths);
+  if (!bracketed && !other_length) return {};
   host::text::fail_at(source, line,
                       "column '" + std::string(cell) + "': unit '" + std::string(unit) +
                           "' not known for a profile (mm, m, cm, in, um)");

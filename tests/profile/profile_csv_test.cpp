@@ -135,6 +135,18 @@ TEST(ProfileCsv, TolerantHeaderUnitsAreConvertedToMillimetres) {
     EXPECT_STREQ(e.what(),
                  "h:2: column 'y[ft]': unit 'ft' not known for a profile (mm, m, cm, in, um)");
   }
+  try {  // a unit of length after '_' is one too, not a name: not read as mm
+    (void)read("y_ft,z_ft\n0,0\n1,1\n");
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(),
+                 "h:1: column 'y_ft': unit 'ft' not known for a profile (mm, m, cm, in, um)");
+  }
+  // Blank-separated numbers with decimal commas: "-70,0 9,519" is (-70.0, 9.519), not -70 and 0.
+  const SampledProfile commas = read("-70,0 9,519\n-69,9 11,542\n-60,5 20,125\n");
+  ASSERT_EQ(commas.y_mm.size(), 3u);
+  EXPECT_DOUBLE_EQ(commas.y_mm[1], -69.9);
+  EXPECT_DOUBLE_EQ(commas.z_mm[1], 11.542);
   try {
     (void)read("Y(in),height\n0,0\n1,1\n");
     ADD_FAILURE() << "no error";
