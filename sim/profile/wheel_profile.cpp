@@ -146,6 +146,7 @@ WheelParameters parse_wheel_spec(const std::string& spec, const std::string& opt
   }
   std::stringstream rest(spec.substr(colon + 1));
   std::string item;
+  std::set<std::string> seen;
   while (std::getline(rest, item, ',')) {
     const auto eq = item.find('=');
     if (eq == std::string::npos) {
@@ -153,6 +154,9 @@ WheelParameters parse_wheel_spec(const std::string& spec, const std::string& opt
     }
     const std::string key = item.substr(0, eq);
     const std::string value = item.substr(eq + 1);
+    if (!seen.insert(key).second) {
+      throw std::invalid_argument(option + " " + spec + ": " + key + " given twice");
+    }
     try {
       if (key == "h") {
         p.flange_height_mm = host::text::finite_number(value);
@@ -163,7 +167,13 @@ WheelParameters parse_wheel_spec(const std::string& spec, const std::string& opt
       } else if (key == "width") {
         p.width_mm = host::text::finite_number(value);
       } else if (key == "chamfer") {
-        p.chamfer = value != "0" && value != "no" && value != "false";
+        if (value == "1" || value == "yes" || value == "true") {
+          p.chamfer = true;
+        } else if (value == "0" || value == "no" || value == "false") {
+          p.chamfer = false;
+        } else {
+          throw std::invalid_argument("'" + value + "' is none of 1, yes, true, 0, no, false");
+        }
       } else {
         throw std::invalid_argument("unknown key '" + key + "' (h, e, slope, width, chamfer)");
       }

@@ -30,6 +30,9 @@ TEST(ContactSpec, WheelValuesAreWholeFiniteNumbers) {
   EXPECT_EQ(error_of("S1002:width=nan"),
             "--wheel S1002:width=nan: width: 'nan' is not a finite number");
   EXPECT_EQ(error_of("S1002:h="), "--wheel S1002:h=: h: '' is not a finite number");
+  EXPECT_EQ(error_of("S1002:h=28,h=32"), "--wheel S1002:h=28,h=32: h given twice");
+  EXPECT_EQ(error_of("S1002:chamfer=maybe"),
+            "--wheel S1002:chamfer=maybe: chamfer: 'maybe' is none of 1, yes, true, 0, no, false");
 }
 
 TEST(ContactSpec, CantsAreOneInFiveOrFlatter) {
@@ -63,8 +66,7 @@ TEST(ContactSpec, WheelsetDimensionsAreAWheelsets) {
     return std::string("accepted");
   };
   EXPECT_EQ(error("wheel=S1002,rail=60E1"), "accepted");
-  EXPECT_EQ(error("wheel=S1002,rail=60E1,r0=460,r0=900"),
-            "--wheelset-profile: 'r0' given twice");
+  EXPECT_EQ(error("wheel=S1002,rail=60E1,r0=460,r0=900"), "--wheelset-profile: 'r0' given twice");
   EXPECT_EQ(error("wheel=S1002,rail=60E1,gauge=1000,b2b=925"), "accepted");
   EXPECT_EQ(error("wheel=S1002,rail=60E1,r0=-5"),
             "--r0 -5: a wheel's rolling radius in mm lies within 100 … 1500 mm");
