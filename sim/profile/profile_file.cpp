@@ -364,7 +364,12 @@ void check_wheel(SampledProfile& w, const std::string& file, const ProfileReadOp
           (options.z_down ? "do not pass --wheel-z-down (ProfileReadOptions::z_down)"
                           : "pass --wheel-z-down (ProfileReadOptions::z_down)"));
     }
-    return;  // no flange (a cone, a tread-only profile): nothing to locate by
+    // No flange (a cone, a tread-only profile): nothing to locate by, and no flange contact.
+    out.warnings.push_back(file +
+                           ": no flange (no interior point 10 mm above a tread at least 30 mm "
+                           "long): a cone or a tread alone; flange contact, its angle and the "
+                           "measures are not available");
+    return;
   }
   if (!up.tread_on_plus_y) {
     throw std::runtime_error(
@@ -598,8 +603,38 @@ ProfileFile read_profile_file(const std::filesystem::path& path, ProfileRole rol
   if (out.profile.y_mm.size() < 2) {
     throw std::runtime_error(file + ": fewer than 2 distinct y values");
   }
+  {
+    // Measured profiles are sampled every 0.1 to 0.5 mm; at several mm between points the
+    // contact angles, measures and conicity come from the straight lines between them.
+    std::vector<double> gaps;
+    for (std::size_t k = 1; k < out.profile.y_mm.size(); ++k) {
+      gaps.push_back(out.profile.y_mm[k] - out.profile.y_mm[k - 1]);
+    }
+    std::nth_element(gaps.begin(), gaps.begin() + static_cast<std::ptrdiff_t>(gaps.size() / 2),
+                     gaps.end());
+    const double median_gap = gaps[gaps.size() / 2];
+    if (median_gap > 1.0) {
+      out.warnings.push_back(file + ": the points are " + num(median_gap) +
+                             " mm apart (median): too coarse for contact angles and conicity, "
+                             "which take the straight lines between them (measured profiles are "
+                             "sampled every 0.1 to 0.5 mm)");
+    }
+  }
   if (role == ProfileRole::kWheel) {
     check_wheel(out.profile, file, options, out);
+    if (!miniprof_wheel) {
+      // z is the radius increase over the taping line (r0 is the radius there): a file whose z
+      // at y = 0 is far from 0 (an absolute radius, another reference) is referred to it.
+      const double z0 = z_at(out.profile, 0.0);
+      if (std::abs(z0) > 0.01) {
+        for (double& z : out.profile.z_mm) {
+          z -= z0;
+        }
+        out.warnings.push_back(file + ": z at the taping line (y = 0) is " + num(z0) +
+                               " mm in the file: z referred to it (z = 0 there, where --r0 is "
+                               "the radius)");
+      }
+    }
     if (miniprof_wheel) {
       // MiniProf's Y has no wheel reference: z is referred to the taping line (r0 is there).
       const double z0 = z_at(out.profile, 0.0);
@@ -608,6 +643,19 @@ ProfileFile read_profile_file(const std::filesystem::path& path, ProfileRole rol
       }
     }
   } else {
+    // A rail head's top is its highest point, the sides fall away from it; a head whose lowest
+    // point lies inside with both ends 5 mm above it is written with z down.
+    const auto& z = out.profile.z_mm;
+    const auto lowest = std::min_element(z.begin(), z.end());
+    if (lowest != z.begin() && lowest + 1 != z.end() && z.front() - *lowest >= 5.0 &&
+        z.back() - *lowest >= 5.0) {
+      throw std::runtime_error(file + ": the rail head's lowest point is inside the profile (y = " +
+                               num(out.profile.y_mm[static_cast<std::size_t>(lowest - z.begin())]) +
+                               " mm) with its ends above it: z points down; " +
+                               (options.z_down
+                                    ? "do not pass --rail-z-down (ProfileReadOptions::z_down)"
+                                    : "pass --rail-z-down (ProfileReadOptions::z_down)"));
+    }
     out.rail_inclination_rad = head_inclination_rad(out.profile);
     if (out.rail_inclination_rad) {
       out.header.emplace_back("tread.head_inclination", ratio(*out.rail_inclination_rad) + " (" +

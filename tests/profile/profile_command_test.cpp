@@ -183,7 +183,10 @@ TEST(ProfileCommand, InputInspectShowsTheFileAndItsMeasures) {
   for (const char* field :
        {"format    csv", "role      wheel", "header    ", "points    701",
         "y         -70.000 ... 70.000 mm", "spacing   min 0.2  median 0.2  max 0.2 mm",
-        "warnings  none", "Sh ", "Sd ", "qR ", "hollow_depth", "outer_slope",
+        "warnings  1:",
+        "z at the taping line (y = 0) is -1.358 mm in the file: z referred to it (z = 0 there, "
+        "where --r0 is the radius)",
+        "taping_z              0.000 mm", "Sh ", "Sd ", "qR ", "hollow_depth", "outer_slope",
         "nominal   S1002 h28 e31.5 1:15 w140"}) {
     EXPECT_NE(r.out.find(field), std::string::npos) << field << "\n" << r.out;
   }

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -409,6 +410,56 @@ TEST(ProfileFile, DecimalCommasByteOrderMarkAndMiniProfRole) {
   EXPECT_EQ(error_of(dir / "r.ban", ProfileRole::kWheel),
             (dir / "r.ban").string() +
                 ": a MiniProf .ban file is a rail profile, but it was given as the wheel");
+}
+
+// From an audit with users' files (each read without a word before): a rail written with z down
+// is refused; a wheel whose z is not 0 at the taping line (an absolute radius) is referred to it;
+// a profile sampled every 5 mm and a wheel without a flange are said.
+TEST(ProfileFile, RailZDownCoarsePointsNoFlangeAndZReferenceAreSaid) {
+  const fs::path dir = testing::test_dir("profile_file_test_audit");
+  const auto copy = [&](const fs::path& from, const std::string& name, double z_sign, double z_add,
+                        std::size_t every) {
+    std::ifstream in(from);
+    std::ofstream out(dir / name);
+    std::string line;
+    std::size_t k = 0;
+    while (std::getline(in, line)) {
+      if (line.empty() || line[0] == '#' || std::isalpha(static_cast<unsigned char>(line[0]))) {
+        out << line << '\n';
+        continue;
+      }
+      const auto comma = line.find(',');
+      const double y = std::stod(line.substr(0, comma));
+      const double z = std::stod(line.substr(comma + 1));
+      if (k++ % every == 0) out << y << ',' << z_sign * z + z_add << '\n';
+    }
+    return dir / name;
+  };
+  const fs::path rail = corpus("uic60_upright_clean.csv");
+  const fs::path wheel = corpus("s1002_clean.csv");
+  ProfileReadOptions z_down;
+  z_down.z_down = true;
+  EXPECT_NE(error_of(copy(rail, "r_zdown.csv", -1.0, 0.0, 1), ProfileRole::kRail)
+                .find("with its ends above it: z points down; pass --rail-z-down"),
+            std::string::npos);
+  EXPECT_EQ(error_of(dir / "r_zdown.csv", ProfileRole::kRail, z_down), "");
+  EXPECT_EQ(error_of(rail, ProfileRole::kRail), "");
+
+  const ProfileFile radius =
+      read_profile_file(copy(wheel, "absolute.csv", 1.0, 460.0, 1), ProfileRole::kWheel);
+  EXPECT_TRUE(has_warning(radius, "z at the taping line (y = 0) is 460.000 mm in the file"));
+  EXPECT_NEAR(z_at(radius.profile, 0.0), 0.0, 1e-9);
+
+  const ProfileFile coarse =
+      read_profile_file(copy(wheel, "coarse.csv", 1.0, 0.0, 50), ProfileRole::kWheel);
+  EXPECT_TRUE(has_warning(coarse, "mm apart (median): too coarse")) << coarse.warnings.size();
+  EXPECT_FALSE(has_warning(read_profile_file(wheel, ProfileRole::kWheel), "too coarse"));
+
+  {
+    std::ofstream cone(dir / "cone.csv");
+    cone << "y_mm,z_mm\n-20,1\n60,-1\n";
+  }
+  EXPECT_TRUE(has_warning(read_profile_file(dir / "cone.csv", ProfileRole::kWheel), "no flange"));
 }
 
 }  // namespace
