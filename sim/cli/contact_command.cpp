@@ -121,7 +121,7 @@ void add_mechanics_options(CLI::App& cmd, MechanicsOptions& o) {
       ->capture_default_str()
       ->check(CLI::IsMember({"kalker", "dry", "wet"}));
   cmd.add_option("--mu", o.mu, "static friction coefficient mu0 (default 0.36 for kalker)")
-      ->check(finite_within(1e-6, 1.0, "mu0"));
+      ->check(finite_within(0.01, 1.0, "mu0"));
   cmd.add_option("--creep-law", o.creep_law,
                  "polach (closed form, the node's) or fastsim (Kalker's strip method, 40 x 40)")
       ->capture_default_str()

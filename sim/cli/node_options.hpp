@@ -81,8 +81,8 @@ inline void add_node_options(CLI::App& cmd, NodeCliState& s, bool tir_required) 
       ->check(CLI::IsMember({"kalker", "dry", "wet"}))
       ->capture_default_str();
   cmd.add_option("--mu", s.settings.mu,
-                 "wheel-rail friction coefficient mu0, above 0 up to 1 (default: the set's)")
-      ->check(finite_within(1e-6, 1.0, "mu0"));
+                 "wheel-rail friction coefficient mu0, 0.01 to 1 (default: the set's)")
+      ->check(finite_within(0.01, 1.0, "mu0"));
   cmd.add_option("--mode", s.mode,
                  "periodic (own schedule) or sync (compute on the rig's cycle frame)")
       ->check(CLI::IsMember({"periodic", "sync"}))

@@ -34,7 +34,7 @@ void add_rig_command(CLI::App& app) {
   cmd->add_option("--friction", settings.friction, "the node's --friction (kalker, dry, wet)")
       ->check(CLI::IsMember({"kalker", "dry", "wet"}))
       ->capture_default_str();
-  cmd->add_option("--mu", settings.mu, "the node's --mu")->check(finite_within(1e-6, 1.0, "mu0"));
+  cmd->add_option("--mu", settings.mu, "the node's --mu")->check(finite_within(0.01, 1.0, "mu0"));
   cmd->add_option("--scenario", settings.scenarios,
                   "scenarios, in order: braking, step-steer, sine-dwell, hunting, "
                   "dynamic-hunting, sweep")

@@ -31,7 +31,8 @@ DemoRig::DemoRig(const DemoSettings& s, const NodeRuntime& runtime)
             runtime.config().wheelset_forces),
       step_s_(static_cast<double>(s.period_us) * 1e-6) {
   const node::NodeConfig& cfg = runtime.config();
-  const ScenarioContext context = context_of(s);
+  ScenarioContext context = context_of(s);
+  if (runtime.config().wheels > 0) context.tyre_options = runtime.tyre_options();
   scenarios_ = make_scenarios(s.scenarios, context);
   if (cfg.wheels > 0) {
     reference_.tyre = &runtime.tyre_parameters();

@@ -46,7 +46,8 @@ std::unique_ptr<RigScenario> make_scenario(const std::string& name,
     if (context.wheels != 4) {
       throw std::invalid_argument("scenario '" + name + "' needs 4 road wheels (--wheels 4)");
     }
-    return std::make_unique<VehicleScenario>(name, context.tir, context.period_s);
+    return std::make_unique<VehicleScenario>(name, context.tir, context.period_s,
+                                             context.tyre_options);
   }
   if (name == "hunting") {
     if (context.wheelsets == 0) {

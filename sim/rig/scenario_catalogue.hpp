@@ -7,6 +7,7 @@
 
 #include "contact/contact_mechanics.hpp"
 #include "contact/rigid_contact.hpp"
+#include "mf/mf_options.hpp"
 #include "rig/rig_scenario.hpp"
 
 namespace tread::host {
@@ -24,6 +25,9 @@ struct ScenarioContext {
   double wheelset_step_mm{0.1};
   double sweep_duration_s{4.0};
   double period_s{1e-3};  ///< the rig's step
+  /// The node's tyre options (useMode, mounted side): the vehicle scenarios' reference run in
+  /// double ("tyre in double") takes the same tyre.
+  mf::MfOptions tyre_options{};
 };
 
 /// Every scenario name, in the demo's order.

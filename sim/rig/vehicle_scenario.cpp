@@ -26,11 +26,11 @@ struct VehicleScenario::Impl {
 };
 
 VehicleScenario::VehicleScenario(const std::string& manoeuvre, const std::filesystem::path& tir,
-                                 double dt_s)
+                                 double dt_s, const mf::MfOptions& tyre_options)
     : impl_(std::make_unique<Impl>()) {
   impl_->tyre_params = tyre::load_mf_parameters(tir).params;
   impl_->params.wheel_radius_m = impl_->tyre_params.unloaded_radius_m;
-  impl_->tyre = vehicle::mf_tyre_function(impl_->tyre_params);
+  impl_->tyre = vehicle::mf_tyre_function(impl_->tyre_params, tyre_options);
   impl_->dt_s = dt_s;
   impl_->tir = tir;
   impl_->manoeuvre = vehicle::make_manoeuvre(manoeuvre, impl_->params, impl_->tyre);

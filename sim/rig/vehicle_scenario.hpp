@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 
+#include "mf/mf_options.hpp"
 #include "rig/rig_scenario.hpp"
 #include "vehicle/manoeuvre.hpp"
 #include "vehicle/vehicle_model.hpp"
@@ -19,7 +20,9 @@ class VehicleScenario final : public RigScenario {
   /// `manoeuvre`: braking, step-steer or sine-dwell; `tir`: the node's tyre file (the vehicle's
   /// wheel radius and the manoeuvres' set-up: peak slip, steering angles). Throws
   /// std::invalid_argument for an unknown manoeuvre.
-  VehicleScenario(const std::string& manoeuvre, const std::filesystem::path& tir, double dt_s);
+  /// `tyre_options`: the node's (useMode, mounted side), for the reference run in double.
+  VehicleScenario(const std::string& manoeuvre, const std::filesystem::path& tir, double dt_s,
+                  const mf::MfOptions& tyre_options = {});
   ~VehicleScenario() override;
 
   [[nodiscard]] std::string name() const override;

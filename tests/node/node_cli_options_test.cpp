@@ -50,7 +50,7 @@ TEST(NodeCliOptions, ValuesNoNodeTakesAreRefused) {
                  "--timeout-ms: '-5': the input timeout in ms is a number");
   expect_refused(node + "--timeout-ms 1e13", "--timeout-ms: '1e13'");
   expect_refused(node + "--timeout-ms nan", "--timeout-ms: 'nan'");
-  expect_refused(node + "--mu nan", "--mu: 'nan': mu0 is a number from 1e-06 to 1");
+  expect_refused(node + "--mu nan", "--mu: 'nan': mu0 is a number from 0.01 to 1");
   expect_refused(node + "--mu 1.5", "--mu: '1.5'");
   expect_refused(node + "--duration-s 0", "--duration-s: '0'");
   expect_refused(node + "--duration-s inf", "--duration-s: 'inf'");
