@@ -2,6 +2,7 @@
 // or gave NaN figures under exit 0 (an audit of the commands): each is an error naming the option.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -15,6 +16,7 @@ namespace {
 struct CliRun {
   int status;
   std::string err;
+  std::string out;
 };
 
 CliRun run(const std::string& args) {
@@ -26,10 +28,13 @@ CliRun run(const std::string& args) {
   const std::string command = "timeout 20 " + std::string(TREAD_CLI) + " " + args + " > " +
                               (dir / "stdout.txt").string() + " 2> " + err.string();
   const int status = std::system(command.c_str());
-  std::ifstream in(err);
-  std::stringstream s;
-  s << in.rdbuf();
-  return {status, s.str()};
+  const auto slurp = [](const std::filesystem::path& path) {
+    std::ifstream in(path);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  };
+  return {status, slurp(err), slurp(dir / "stdout.txt")};
 }
 
 std::string tir() {
@@ -82,6 +87,30 @@ TEST(NodeCliOptions, ScenariosNeedAPeriodTheyCanIntegrate) {
           (std::filesystem::temp_directory_path() / "node_cli_options_rt").string());
   EXPECT_EQ(rt.status, 0) << rt.err;
   EXPECT_NE(rt.err.find("ignored on the simulated clock"), std::string::npos) << rt.err;
+}
+
+// The vehicle scenarios' "tyre in double" is the node's tyre as mounted: with --side left it
+// compared the node's sideslip with the as-measured (right) tyre's, 9 % apart.
+TEST(NodeCliOptions, DemoReferenceTakesTheNodesSide) {
+  const auto out = tread::testing::test_dir("node_cli_options_side");
+  const CliRun r =
+      run("demo --clock sim --no-plot --scenario step-steer --side left --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::istringstream in(r.out);
+  std::string line;
+  bool seen = false;
+  while (std::getline(in, line)) {
+    if (line.find("sideslip_steady") == std::string::npos) continue;
+    std::istringstream fields(line);
+    std::string name, unit, label;
+    double node = 0.0, reference = 0.0;
+    fields >> name >> node >> unit >> label;  // "tyre"
+    std::string in_word, double_word;
+    fields >> in_word >> double_word >> reference;  // "in double:" value
+    EXPECT_NEAR(node, reference, 1e-3 * std::abs(reference)) << line;
+    seen = true;
+  }
+  EXPECT_TRUE(seen);
 }
 
 }  // namespace
