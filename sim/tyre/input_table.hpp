@@ -24,8 +24,8 @@
 // Separator: ',' (default), ';' or tab, chosen with `separator` or detected from the header line
 // (';' or tab when the header holds no ','). With ';' or tab a cell's decimal comma is read as a
 // point ("0,05" = 0.05); a row with both a decimal comma and a '.' in its numbers is an error (is
-// "4.000" beside "0,05" 4 or 4000?). A UTF-8 byte order mark (spreadsheet exports) is skipped, as are blank
-// lines and lines starting with '#'. Columns that name no input (nor, with
+// "4.000" beside "0,05" 4 or 4000?). A UTF-8 byte order mark (spreadsheet exports) is skipped, as
+// are blank lines and lines starting with '#'. Columns that name no input (nor, with
 // InputTableOptions::measured, a measured output) are ignored (and listed by ignored_columns()).
 //
 // Sign conventions (the file's, converted to ISO-W = TYDEX W, the axes of MFeval and of every
@@ -185,7 +185,7 @@ class InputTable {
   std::array<int, kMeasuredQuantityCount> measured_column_{};
   std::array<MeasuredColumn, kMeasuredQuantityCount> measured_spec_{};
   std::array<double, kMeasuredQuantityCount> measured_sign_{};  ///< output_sign of each
-  /// Input of each cell, kInputQuantityCount + a MeasuredQuantity for a measured output, -1 for none.
+  /// Input of each cell, kInputQuantityCount + a MeasuredQuantity for a measured output; -1: none.
   std::vector<int> quantity_of_cell_;
   int header_line_ = 0;
   std::vector<std::string> ignored_;

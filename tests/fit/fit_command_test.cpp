@@ -604,7 +604,8 @@ TEST(FitCommand, DataTheFitCannotTakeAsWrittenAreSaid) {
                 err),
             0)
       << slurp(err);
-  EXPECT_NE(slurp(err).find("not determined by these points, held at their values before the stage: PDY2"),
+  EXPECT_NE(slurp(err).find(
+                "not determined by these points, held at their values before the stage: PDY2"),
             std::string::npos)
       << slurp(err);
   EXPECT_NE(slurp(report).find("| PDY2 | "), std::string::npos);
