@@ -3,10 +3,10 @@
 // (header-only: only the tread executable links CLI11).
 
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <functional>
 #include <string>
 
-#include "cli/cli_checks.hpp"
 #include "contact/contact_setup.hpp"
 #include "profile/profile_file.hpp"
 
@@ -63,7 +63,15 @@ inline void add_contact_setup_options(CLI::App& cmd, ContactSetup& s) {
                  "smooth measured profiles (files; built-in profiles are exact): local quadratic "
                  "fit half window (mm, up to 10), 0 = off")
       ->capture_default_str()
-      ->check(cli::finite_within(0.0, 10.0, "the smoothing half window in mm"));
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            double v = 0.0;
+            if (CLI::detail::lexical_cast(text, v) && std::isfinite(v) && v >= 0.0 && v <= 10.0) {
+              return {};
+            }
+            return "'" + text + "': the smoothing half window in mm is a number from 0 to 10";
+          },
+          "", "FINITE"));
 }
 
 }  // namespace tread::contact
