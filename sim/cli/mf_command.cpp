@@ -6,7 +6,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -15,7 +14,7 @@
 
 #include "cli/commands.hpp"
 #include "io/progress_bar.hpp"
-#include "io/replace_file.hpp"
+#include "io/table_streams.hpp"
 #include "mf/mf_options.hpp"
 #include "plot/gnuplot.hpp"
 #include "tyre/input_table.hpp"
@@ -107,38 +106,23 @@ void run_mf_eval(const MfEvalArgs& args) {
     if (!selection.error.empty()) throw std::runtime_error(selection.error);
     csv.columns = std::move(selection.columns);
   }
-  // "-": standard input and output (a file named "-" was written before).
-  const bool from_stdin = args.input == "-";
-  const bool to_stdout = args.output == "-";
-  const std::string in_name = from_stdin ? std::string("<stdin>") : args.input;
-  std::ifstream file_in;
-  if (!from_stdin) {
-    file_in.open(args.input, std::ios::binary);
-    if (!file_in) throw std::runtime_error(args.input + ": cannot open");
-  }
-  std::istream& in = from_stdin ? std::cin : file_in;
+  host::TableInput in(args.input);  // "-": standard input
+  const std::string& in_name = in.name();
   // A progress bar on a terminal, for a run that lasts more than a second.
   std::error_code no_size;
   const std::uintmax_t input_bytes =
-      from_stdin ? 0 : std::filesystem::file_size(args.input, no_size);
+      in.is_stdin() ? 0 : std::filesystem::file_size(args.input, no_size);
   host::ProgressBar bar(std::cerr, host::stderr_is_terminal(), no_size ? 0 : input_bytes);
   const auto start = std::chrono::steady_clock::now();
   csv.progress = [&](std::uint64_t bytes, std::uint64_t rows) {
     bar.update(bytes, rows,
                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   };
-  std::optional<host::ReplaceFile> out;
-  if (!to_stdout) out.emplace(args.output);
+  host::TableOutput out(args.output);  // "-": standard output
   tyre::MfCsvReport report;
   try {
-    report = tyre::evaluate_csv(loaded.params, o, csv, in, in_name,
-                                to_stdout ? std::cout : out->stream());
-    if (to_stdout) {
-      std::cout.flush();
-      if (!std::cout) throw std::runtime_error("standard output: cannot write");
-    } else {
-      out->commit();
-    }
+    report = tyre::evaluate_csv(loaded.params, o, csv, in.stream(), in_name, out.stream());
+    out.commit();
   } catch (...) {
     bar.finish();
     throw;

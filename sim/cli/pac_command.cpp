@@ -5,13 +5,12 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "cli/commands.hpp"
-#include "io/replace_file.hpp"
+#include "io/table_streams.hpp"
 #include "plot/gnuplot.hpp"
 #include "tir/pac_coefficients.hpp"
 #include "tir/pac_plot.hpp"
@@ -190,27 +189,13 @@ void add_pac_eval(CLI::App* pac) {
     o.iso_w = opt.iso_w || opt.axes == "iso-w";
     o.table.convention = *tyre::parse_sign_convention(opt.convention);
     o.table.separator = opt.sep == "auto" ? '\0' : opt.sep == "tab" ? '\t' : opt.sep.front();
-    // "-": standard input and output.
-    const bool from_stdin = opt.input == "-";
-    const bool to_stdout = opt.output == "-";
-    std::ifstream file_in;
-    if (!from_stdin) {
-      file_in.open(opt.input);
-      if (!file_in) throw std::runtime_error(opt.input + ": cannot open");
-    }
-    std::optional<host::ReplaceFile> out;
-    if (!to_stdout) out.emplace(opt.output);
-    const auto rows = tyre::evaluate_pac_csv(coeff.params, o, from_stdin ? std::cin : file_in,
-                                             from_stdin ? std::string("<stdin>") : opt.input,
-                                             to_stdout ? std::cout : out->stream());
-    if (to_stdout) {
-      std::cout.flush();
-      if (!std::cout) throw std::runtime_error("standard output: cannot write");
-    } else {
-      out->commit();
-    }
-    (to_stdout ? std::cerr : std::cout) << "evaluated " << rows << " rows -> " << opt.output
-                                        << (o.iso_w ? " (ISO-W axes)" : " (model axes)") << '\n';
+    host::TableInput in(opt.input);     // "-": standard input
+    host::TableOutput out(opt.output);  // "-": standard output
+    const auto rows = tyre::evaluate_pac_csv(coeff.params, o, in.stream(), in.name(), out.stream());
+    out.commit();
+    (out.is_stdout() ? std::cerr : std::cout)
+        << "evaluated " << rows << " rows -> " << opt.output
+        << (o.iso_w ? " (ISO-W axes)" : " (model axes)") << '\n';
   });
 }
 

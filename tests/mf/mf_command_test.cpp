@@ -747,6 +747,20 @@ TEST(MfCommand, DashIsStandardInputAndOutput) {
   EXPECT_EQ(slurp(dir / "piped.csv"), slurp(dir / "file.csv"));
   EXPECT_NE(slurp(log).find("2 rows → - "), std::string::npos) << slurp(log);
   EXPECT_FALSE(std::filesystem::exists(std::filesystem::current_path() / "-"));
+  // tread pac eval the same (host::TableInput / TableOutput).
+  const std::string pac = tread::testing::tyre_file("chrono_HMMWV_Pac89Tire.tir").string();
+  ASSERT_EQ(run("pac eval --tir " + pac + " --input " + in.string() + " --output " +
+                    (dir / "pac_file.csv").string(),
+                log),
+            0)
+      << slurp(log);
+  ASSERT_EQ(run("pac eval --tir " + pac + " --input - --output - < " + in.string() + " > " +
+                    (dir / "pac_piped.csv").string(),
+                log),
+            0)
+      << slurp(log);
+  EXPECT_EQ(slurp(dir / "pac_piped.csv"), slurp(dir / "pac_file.csv"));
+  EXPECT_NE(slurp(log).find("evaluated 2 rows -> -"), std::string::npos) << slurp(log);
 }
 
 }  // namespace
