@@ -27,6 +27,9 @@ struct NodeCliState {
   int wheelsets{0};
   int wheelset_forces{0};
   double timeout_ms{10.0};
+  /// The --wheelset-forces option: a count given by the user above --wheelsets is an error, the
+  /// command's default (the demo's 1) follows --wheelsets down.
+  CLI::Option* wheelset_forces_option{nullptr};
 };
 
 /// The longest cycle period the rig's and demo's scenarios take: they integrate the vehicle,
@@ -71,11 +74,13 @@ inline void add_node_options(CLI::App& cmd, NodeCliState& s, bool tir_required) 
                  "wheel/rail pair for the contact table: key=value list with wheel|wheel-file, "
                  "rail|rail-file, rail-frame, cant, gauge, b2b, r0, r0-right "
                  "(e.g. wheel=S1002,rail=60E1,cant=1:40)");
-  cmd.add_option("--wheelset-forces", s.wheelset_forces,
-                 "of the wheelsets, how many also serve the wheel-rail forces (Hertz, Polach creep "
-                 "forces, Y/Q, Nadal margin; needs WheelsetMotion and WheelsetLoad from the rig)")
-      ->check(CLI::Range(0, 2))
-      ->capture_default_str();
+  s.wheelset_forces_option =
+      cmd.add_option(
+             "--wheelset-forces", s.wheelset_forces,
+             "of the wheelsets, how many also serve the wheel-rail forces (Hertz, Polach creep "
+             "forces, Y/Q, Nadal margin; needs WheelsetMotion and WheelsetLoad from the rig)")
+          ->check(CLI::Range(0, 2))
+          ->capture_default_str();
   cmd.add_option("--friction", s.settings.friction,
                  "Polach parameters for the wheel-rail forces: kalker, dry or wet")
       ->check(CLI::IsMember({"kalker", "dry", "wet"}))
@@ -102,9 +107,14 @@ inline void add_node_options(CLI::App& cmd, NodeCliState& s, bool tir_required) 
 /// Turns the parsed options into NodeSettings (call from the command's callback).
 inline host::NodeSettings node_settings(NodeCliState& s) {
   if (s.wheelset_forces > s.wheelsets) {
-    throw CLI::ValidationError("--wheelset-forces", std::to_string(s.wheelset_forces) +
-                                                        " wheelsets with forces, but --wheelsets " +
-                                                        std::to_string(s.wheelsets));
+    if (s.wheelset_forces_option == nullptr || s.wheelset_forces_option->count() == 0) {
+      s.wheelset_forces = s.wheelsets;  // a default, not the user's count
+    } else {
+      throw CLI::ValidationError("--wheelset-forces",
+                                 std::to_string(s.wheelset_forces) +
+                                     " wheelsets with forces, but --wheelsets " +
+                                     std::to_string(s.wheelsets));
+    }
   }
   host::NodeSettings out = s.settings;
   out.node.layout = s.fd ? proto::Layout::fd : proto::Layout::classic;

@@ -80,6 +80,14 @@ TEST(NodeCliOptions, ScenariosNeedAPeriodTheyCanIntegrate) {
           "--out " +
           (std::filesystem::temp_directory_path() / "node_cli_options_sweep").string());
   EXPECT_EQ(sweep.status, 0) << sweep.err;
+  // The demo's default of one wheelset with forces follows --wheelsets 0 down (a count the user
+  // gives above --wheelsets is the error).
+  const CliRun no_wheelsets = run(
+      "demo --clock sim --no-plot --wheelsets 0 --scenario sweep --sweep-duration-s 0.2 --out " +
+      (std::filesystem::temp_directory_path() / "node_cli_options_ws0").string());
+  EXPECT_EQ(no_wheelsets.status, 0) << no_wheelsets.err;
+  expect_refused("demo --clock sim --no-plot --wheelsets 1 --wheelset-forces 2 --scenario sweep",
+                 "--wheelset-forces: 2 wheelsets with forces, but --wheelsets 1");
   // Real-time options on the simulated clock do nothing: said.
   const CliRun rt =
       run("demo --clock sim --no-plot --scenario sweep --sweep-duration-s 1 --cpu 1 "
