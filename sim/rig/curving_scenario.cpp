@@ -201,7 +201,10 @@ std::vector<ScenarioMetric> CurvingScenario::metrics() const {
     max_yq = std::max(max_yq, s.max_outer_y_over_q);
   }
   if (!done_.empty()) {
-    m.push_back({"min_nadal_margin", min_margin, "-", "steady curving, outer wheel"});
+    m.push_back({"min_nadal_margin", min_margin, "-",
+                 min_margin < 0.0 ? "steady curving, outer wheel: BELOW 0, beyond Nadal's limit "
+                                    "(flange climbing)"
+                                  : "steady curving, outer wheel"});
     m.push_back({"max_y_over_q", max_yq, "-", "outer wheel, run-in included"});
   }
   if (!done_.empty()) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -110,7 +111,8 @@ void DynamicHuntingScenario::start(Phase phase, double speed_m_s, double y0_mm, 
   current_ = Run{};
   current_.phase = phase;
   current_.speed_m_s = speed_m_s;
-  current_.min_nadal_margin = 1e9;
+  current_.max_y_over_q = -std::numeric_limits<double>::infinity();
+  current_.min_nadal_margin = std::numeric_limits<double>::infinity();
 }
 
 void DynamicHuntingScenario::inputs(double /*t_s*/, proto::RigData& data) {
@@ -134,7 +136,8 @@ void DynamicHuntingScenario::advance(const proto::RigData& /*inputs_seen*/,
     return;
   }
   // A stale or flagged answer carries no forces: hold the last ones rather than drop them.
-  if (answers.rail_wheels[0].status == 0U && answers.rail_wheels[1].status == 0U) {
+  const bool fresh = answers.rail_wheels[0].status == 0U && answers.rail_wheels[1].status == 0U;
+  if (fresh) {
     answer_[0] = answers.rail_wheels[0];
     answer_[1] = answers.rail_wheels[1];
     force_ = generalised_force(answer_[0], answer_[1], settings_.params.half_contact_base_m);
@@ -143,10 +146,15 @@ void DynamicHuntingScenario::advance(const proto::RigData& /*inputs_seen*/,
   run_t_ += dt_s;
   run_time_.push_back(run_t_);
   run_y_.push_back(state_.q(0) * 1000.0);
-  for (const proto::RailWheelOutput& w : answer_) {
-    current_.max_y_over_q = std::max(current_.max_y_over_q, static_cast<double>(w.y_over_q));
-    current_.min_nadal_margin =
-        std::min(current_.min_nadal_margin, static_cast<double>(w.nadal_margin));
+  // Y/Q and the margin of fresh answers only: the zeros before the run's first answer, and the
+  // held values of a flagged one (perhaps saturated at the signal's limit), are not measurements.
+  if (fresh) {
+    current_.answered = true;
+    for (const proto::RailWheelOutput& w : answer_) {
+      current_.max_y_over_q = std::max(current_.max_y_over_q, static_cast<double>(w.y_over_q));
+      current_.min_nadal_margin =
+          std::min(current_.min_nadal_margin, static_cast<double>(w.nadal_margin));
+    }
   }
   row_ = {static_cast<double>(runs_.size()),
           static_cast<double>(phase_code(phase_)),
@@ -318,29 +326,89 @@ void DynamicHuntingScenario::trace_values(std::vector<double>& row) const {
   row.insert(row.end(), row_.begin(), row_.end());
 }
 
+std::string DynamicHuntingScenario::no_critical_speed_reason() const {
+  // The scan runs tell why no sign change was found: all decayed, all grew, or the growth rate
+  // could not be measured (fewer than three half swings: a slow or a flange-bound motion).
+  int decayed = 0;
+  int grew = 0;
+  int unmeasured = 0;
+  for (const Run& r : runs_) {
+    if (r.phase != Phase::scan) continue;
+    if (!std::isfinite(r.growth_rate_per_s)) {
+      ++unmeasured;
+    } else if (r.growth_rate_per_s > 0.0) {
+      ++grew;
+    } else {
+      ++decayed;
+    }
+  }
+  const std::vector<double>& v = settings_.scan_speeds_m_s;
+  std::ostringstream s;
+  s.precision(4);
+  s << "not found on the scan " << v.front() << "..." << v.back() << " m/s: ";
+  if (grew == 0 && unmeasured == 0) {
+    s << "the motion decayed in every run (stable up to " << v.back() << " m/s)";
+  } else if (decayed == 0 && unmeasured == 0) {
+    s << "the motion grew in every run (unstable from " << v.front() << " m/s)";
+  } else {
+    s << decayed << " runs decayed, " << grew << " grew, " << unmeasured
+      << " without three half swings to measure a growth rate, and no decaying run below a "
+         "growing one";
+  }
+  if (std::isfinite(critical_linear_) && critical_linear_ > v.back()) {
+    s << "; the linear model's " << critical_linear_ << " m/s is above the scan";
+  }
+  return s.str();
+}
+
 std::vector<ScenarioMetric> DynamicHuntingScenario::metrics() const {
   std::vector<ScenarioMetric> m;
   const double dev = 100.0 * (critical_ / critical_linear_ - 1.0);
   std::ostringstream note;
   note.precision(3);
-  note << "from " << runs_.size() << " runs with the node in the loop; linear "
-       << (dev >= 0 ? "+" : "") << dev << " % away";
+  if (std::isfinite(critical_)) {
+    note << "from " << runs_.size() << " runs with the node in the loop";
+    if (std::isfinite(dev)) note << "; linear " << (dev >= 0 ? "+" : "") << dev << " % away";
+  } else {
+    note << no_critical_speed_reason();
+  }
   m.push_back({"critical_speed", critical_, "m/s", note.str()});
   std::ostringstream lin;
   lin.precision(4);
-  lin << "eigenvalues of the linearised model; hunting " << mode_at_critical_.frequency_hz
-      << " Hz, wavelength " << mode_at_critical_.wavelength_m << " m";
+  if (std::isfinite(critical_linear_)) {
+    lin << "eigenvalues of the linearised model; hunting " << mode_at_critical_.frequency_hz
+        << " Hz, wavelength " << mode_at_critical_.wavelength_m << " m";
+  } else {
+    lin << "not found: no eigenvalue of the linearised model crosses to growth below "
+        << 1.5 * settings_.scan_speeds_m_s.back() << " m/s";
+  }
   m.push_back({"critical_speed_linear", critical_linear_, "m/s", lin.str()});
-  m.push_back({"critical_speed_difference", dev, "%",
-               smoothness_note_.empty() ? "target: within 5 %" : smoothness_note_});
+  std::string target;
+  if (!std::isfinite(dev)) {
+    target = "not computed: a critical speed is missing (above)";
+  } else {
+    target = std::abs(dev) <= 5.0 ? "target: within 5 %: met" : "target: within 5 %: NOT met";
+    if (!smoothness_note_.empty()) target += "; " + smoothness_note_;
+  }
+  m.push_back({"critical_speed_difference", dev, "%", target});
   for (const Run& r : runs_) {
     if (r.phase == Phase::low_speed) {
       const double klingel = klingel_wavelength_m();
       const double d = 100.0 * (r.wavelength_m / klingel - 1.0);
       std::ostringstream n;
       n.precision(4);
-      n << "at " << r.speed_m_s << " m/s; Klingel " << klingel << " m at the EN 15302 conicity, "
-        << (d >= 0 ? "+" : "") << d << " %";
+      n << "at " << r.speed_m_s << " m/s; ";
+      if (!std::isfinite(r.wavelength_m)) {
+        n << "not measured: fewer than two upward zero crossings in the " << settings_.low_speed_run_s
+          << " s run (" << r.speed_m_s * settings_.low_speed_run_s << " m of track); ";
+      }
+      if (std::isfinite(klingel)) {
+        n << "Klingel " << klingel << " m at the EN 15302 conicity";
+        if (std::isfinite(d)) n << ", " << (d >= 0 ? "+" : "") << d << " %";
+      } else {
+        n << "no Klingel wavelength: no restoring delta r at " << settings_.low_speed_amplitude_mm
+          << " mm";
+      }
       m.push_back({"low_speed_wavelength", r.wavelength_m, "m", n.str()});
     }
     if (r.phase == Phase::below) {
@@ -351,8 +419,17 @@ std::vector<ScenarioMetric> DynamicHuntingScenario::metrics() const {
       m.push_back({"growth_rate_above", r.growth_rate_per_s, "1/s",
                    "at 1.1 x critical, from a 1 mm start"});
       m.push_back({"limit_cycle_amplitude", r.amplitude_mm, "mm", "last second at 1.1 x critical"});
-      m.push_back({"max_y_over_q", r.max_y_over_q, "-", "in the limit cycle"});
-      m.push_back({"min_nadal_margin", r.min_nadal_margin, "-", "Nadal's limit minus Y/Q"});
+      if (!r.answered) {
+        const char* none = "not measured: every answer of the run was flagged (stale, saturated)";
+        m.push_back({"max_y_over_q", std::nan(""), "-", none});
+        m.push_back({"min_nadal_margin", std::nan(""), "-", none});
+      } else {
+        m.push_back({"max_y_over_q", r.max_y_over_q, "-", "in the limit cycle"});
+        m.push_back({"min_nadal_margin", r.min_nadal_margin, "-",
+                     r.min_nadal_margin < 0.0
+                         ? "Nadal's limit minus Y/Q: BELOW 0, beyond Nadal's limit (flange climbing)"
+                         : "Nadal's limit minus Y/Q"});
+      }
     }
   }
   return m;

@@ -67,6 +67,7 @@ class DynamicHuntingScenario final : public RigScenario {
     double wavelength_m{0.0};       ///< from the zero crossings
     double max_y_over_q{0.0};
     double min_nadal_margin{0.0};
+    bool answered{false};  ///< at least one answer without a status flag (else Y/Q is not known)
   };
   [[nodiscard]] const std::vector<Run>& runs() const { return runs_; }
   [[nodiscard]] double critical_speed() const { return critical_; }
@@ -77,6 +78,8 @@ class DynamicHuntingScenario final : public RigScenario {
  private:
   void start(Phase phase, double speed_m_s, double y0_mm, double duration_s);
   void finish_run();
+  /// Why critical_ is NaN, from the scan runs' growth rates.
+  [[nodiscard]] std::string no_critical_speed_reason() const;
   [[nodiscard]] static double growth_rate(const std::vector<double>& t,
                                           const std::vector<double>& y, double cap_mm);
   [[nodiscard]] static double wavelength(const std::vector<double>& t, const std::vector<double>& y,

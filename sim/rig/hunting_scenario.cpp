@@ -123,9 +123,28 @@ std::vector<ScenarioMetric> HuntingScenario::metrics() const {
   for (std::size_t j = 0; j < settings_.wheelsets; ++j) {
     const Result r = result(j);
     const std::string w = "wheelset " + std::to_string(j) + " ";
+    if (!r.motion.valid) {
+      // Fewer than two full periods: no wavelength, and no amplitude of a periodic motion.
+      const std::string why = "not measured: " + std::to_string(r.motion.periods) +
+                              " full periods in the run, two needed";
+      m.push_back({w + "amplitude", std::nan(""), "mm", why});
+      m.push_back({w + "hunting wavelength", std::nan(""), "m", why});
+      m.push_back({w + "equivalent conicity", std::nan(""), "-", why});
+      m.push_back({w + "wavelength vs Klingel", std::nan(""), "%", why});
+      continue;
+    }
     m.push_back({w + "amplitude", r.motion.amplitude_mm, "mm", ""});
     m.push_back({w + "hunting wavelength", r.motion.wavelength_m, "m",
                  std::to_string(r.motion.periods) + " periods"});
+    if (!std::isfinite(r.klingel_wavelength_m)) {
+      std::ostringstream why;
+      why.precision(3);
+      why << "not computed: no EN 15302 conicity at " << r.motion.amplitude_mm
+          << " mm (outside the contact table, or no restoring delta r)";
+      m.push_back({w + "equivalent conicity", r.tan_gamma_e, "-", why.str()});
+      m.push_back({w + "wavelength vs Klingel", std::nan(""), "%", why.str()});
+      continue;
+    }
     m.push_back({w + "equivalent conicity", r.tan_gamma_e, "-", "EN 15302 at that amplitude"});
     const double dev = 100.0 * (r.motion.wavelength_m / r.klingel_wavelength_m - 1.0);
     std::ostringstream note;

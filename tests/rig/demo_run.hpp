@@ -47,4 +47,11 @@ inline double metric(const host::ScenarioOutcome& o, const std::string& name) {
   return std::nan("");
 }
 
+inline std::string metric_note(const host::ScenarioOutcome& o, const std::string& name) {
+  for (const host::ScenarioMetric& m : o.metrics) {
+    if (m.name == name) return m.note;
+  }
+  return "(no metric " + name + ")";
+}
+
 }  // namespace tread::testing

@@ -13,6 +13,7 @@
 #include "contact/klingel.hpp"
 #include "demo_run.hpp"
 #include "mf/mf_evaluate.hpp"
+#include "rig/hunting_scenario.hpp"
 #include "runtime/node_runtime.hpp"
 #include "tyre/mf_parameters_from_tir.hpp"
 #include "vehicle/vehicle_params.hpp"
@@ -80,6 +81,21 @@ TEST(RigScenarios, HuntingWavelengthMatchesKlingelAtTheEquivalentConicity) {
           << " m at tan(gamma_e) " << tan_gamma_e << ", amplitude " << amplitude_mm;
       EXPECT_GT(amplitude_mm, 2.0);
     }
+  }
+}
+
+TEST(RigScenarios, HuntingWithTooFewPeriodsSaysSoInsteadOfPrintingNaNAsAResult) {
+  // The scenario before its first step: no period seen. Every metric is NaN with the reason, and
+  // none claims a Klingel comparison.
+  HuntingSettings s;
+  s.wheelsets = 1;
+  s.wheelset_profile = "wheel=S1002,rail=60E1,cant=1:40";
+  const HuntingScenario scenario(s);
+  const std::vector<ScenarioMetric> m = scenario.metrics();
+  ASSERT_EQ(m.size(), 4U);
+  for (const ScenarioMetric& x : m) {
+    EXPECT_TRUE(std::isnan(x.value)) << x.name;
+    EXPECT_EQ(x.note, "not measured: 0 full periods in the run, two needed") << x.name;
   }
 }
 
