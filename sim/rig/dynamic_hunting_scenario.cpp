@@ -399,8 +399,9 @@ std::vector<ScenarioMetric> DynamicHuntingScenario::metrics() const {
       n.precision(4);
       n << "at " << r.speed_m_s << " m/s; ";
       if (!std::isfinite(r.wavelength_m)) {
-        n << "not measured: fewer than two upward zero crossings in the " << settings_.low_speed_run_s
-          << " s run (" << r.speed_m_s * settings_.low_speed_run_s << " m of track); ";
+        n << "not measured: fewer than two upward zero crossings in the "
+          << settings_.low_speed_run_s << " s run (" << r.speed_m_s * settings_.low_speed_run_s
+          << " m of track); ";
       }
       if (std::isfinite(klingel)) {
         n << "Klingel " << klingel << " m at the EN 15302 conicity";
@@ -425,10 +426,11 @@ std::vector<ScenarioMetric> DynamicHuntingScenario::metrics() const {
         m.push_back({"min_nadal_margin", std::nan(""), "-", none});
       } else {
         m.push_back({"max_y_over_q", r.max_y_over_q, "-", "in the limit cycle"});
-        m.push_back({"min_nadal_margin", r.min_nadal_margin, "-",
-                     r.min_nadal_margin < 0.0
-                         ? "Nadal's limit minus Y/Q: BELOW 0, beyond Nadal's limit (flange climbing)"
-                         : "Nadal's limit minus Y/Q"});
+        m.push_back(
+            {"min_nadal_margin", r.min_nadal_margin, "-",
+             r.min_nadal_margin < 0.0
+                 ? "Nadal's limit minus Y/Q: BELOW 0, beyond Nadal's limit (flange climbing)"
+                 : "Nadal's limit minus Y/Q"});
       }
     }
   }
