@@ -98,6 +98,7 @@ inline void add_node_options(CLI::App& cmd, NodeCliState& s, bool tir_required) 
   cmd.add_option("--use-mode", s.settings.use_mode, "MFeval useMode of the tyre model")
       ->capture_default_str();
   cmd.add_option("--side", s.settings.side, "mounted side: as-measured, left or right")
+      ->check(CLI::IsMember({"as-measured", "left", "right"}))
       ->capture_default_str();
   cmd.add_flag("--fixed", s.settings.fixed,
                "run the node in fixed point, exactly as the FPU-less firmware image does (Q31.32 "

@@ -4,6 +4,7 @@
 #include "cli/commands.hpp"
 #include "cli/node_options.hpp"
 #include "rig/rig_session.hpp"
+#include "rig/scenario_catalogue.hpp"
 
 namespace tread::cli {
 namespace {
@@ -19,6 +20,11 @@ void add_rig_command(CLI::App& app) {
   cmd->add_option("--can", settings.can, "SocketCAN interface")->capture_default_str();
   cmd->add_flag("--fd", fd, "CAN FD layout");
   cmd->add_option("--tir", settings.tir, "the node's tyre property file (the reference)");
+  cmd->add_option("--use-mode", settings.use_mode, "the node's --use-mode (MFeval useMode)")
+      ->capture_default_str();
+  cmd->add_option("--side", settings.side, "the node's --side: as-measured, left or right")
+      ->check(CLI::IsMember({"as-measured", "left", "right"}))
+      ->capture_default_str();
   cmd->add_option("--wheels", wheels, "road wheels (0..4)")
       ->check(CLI::Range(0, 4))
       ->capture_default_str();
@@ -35,9 +41,11 @@ void add_rig_command(CLI::App& app) {
       ->check(CLI::IsMember({"kalker", "dry", "wet"}))
       ->capture_default_str();
   cmd->add_option("--mu", settings.mu, "the node's --mu")->check(finite_within(0.01, 1.0, "mu0"));
-  cmd->add_option("--scenario", settings.scenarios,
-                  "scenarios, in order: braking, step-steer, sine-dwell, hunting, "
-                  "dynamic-hunting, sweep")
+  std::string known;
+  for (const std::string& n : host::scenario_names()) known += (known.empty() ? "" : ", ") + n;
+  cmd->add_option(
+         "--scenario", settings.scenarios,
+         "scenarios, in order (default: those of the channels, as for tread demo): " + known)
       ->delimiter(',');
   cmd->add_option("--sweep-duration-s", settings.sweep_duration_s, "length of 'sweep'")
       ->check(CLI::Range(0.001, 3600.0))
@@ -69,7 +77,16 @@ void add_rig_command(CLI::App& app) {
       throw CLI::ValidationError("--tir", "road wheels need the node's tyre file");
     }
     if (settings.wheelsets > 0 && settings.wheelset_profile.empty()) {
-      settings.wheelset_profile = "wheel=S1002,rail=60E1,cant=1:40";
+      // The node has no default pair: a reference guessed here would check its answers against
+      // another contact.
+      throw CLI::ValidationError("--wheelset-profile",
+                                 "wheelsets need the node's wheelset profile (the reference)");
+    }
+    if (settings.wheelset_forces > settings.wheelsets) {
+      throw CLI::ValidationError("--wheelset-forces",
+                                 std::to_string(wheelset_forces) +
+                                     " wheelsets with forces, but --wheelsets " +
+                                     std::to_string(wheelsets));
     }
     host::print_rig_report(std::cout, host::run_rig(settings));
   });

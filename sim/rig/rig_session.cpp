@@ -6,13 +6,14 @@
 
 #include "posix/posix_clock.hpp"
 #include "rig/scenario_catalogue.hpp"
+#include "runtime/node_runtime.hpp"
 #include "runtime/protocol_socket.hpp"
 #include "socketcan/socketcan_bus.hpp"
 #include "tyre/mf_parameters_from_tir.hpp"
 
 namespace tread::host {
 
-RigReport run_rig(const RigSettings& s) {
+ScenarioContext rig_scenario_context(const RigSettings& s) {
   ScenarioContext context;
   context.tir = s.tir;
   context.wheels = s.wheels;
@@ -25,6 +26,12 @@ RigReport run_rig(const RigSettings& s) {
   context.wheelset_step_mm = s.wheelset_step_mm;
   context.sweep_duration_s = s.sweep_duration_s;
   context.period_s = static_cast<double>(s.period_us) * 1e-6;
+  if (s.wheels > 0) context.tyre_options = node_tyre_options(s.use_mode, s.side);
+  return context;
+}
+
+RigReport run_rig(const RigSettings& s) {
+  const ScenarioContext context = rig_scenario_context(s);
   const std::vector<std::unique_ptr<RigScenario>> scenarios = make_scenarios(s.scenarios, context);
   mf::MfParameters<double> tyre{};
   contact::ContactTable contact_table;
@@ -32,6 +39,7 @@ RigReport run_rig(const RigSettings& s) {
   if (s.wheels > 0) {
     tyre = tyre::load_mf_parameters(s.tir).params;
     reference.tyre = &tyre;
+    reference.options = context.tyre_options;
   }
   if (s.wheelsets > 0) {
     contact_table = reference_contact_table(context);
@@ -41,7 +49,10 @@ RigReport run_rig(const RigSettings& s) {
   // Only the node's outputs (and error frames) reach the rig: other traffic is dropped by the
   // kernel, as on the node's side.
   hal::SocketCanBus bus;
-  open_protocol_socket(bus, s.can, s.layout, proto::Direction::node_to_rig);
+  open_protocol_socket(bus, s.can, s.layout, proto::Direction::node_to_rig,
+                       "tread rig talks to a node process over SocketCAN only: run both in the VM "
+                       "harness (scripts/vm/run-in-vm.sh), or node and rig in one process with "
+                       "tread demo --can stub");
   RigReport r;
   r.receive_buffer_bytes = bus.receive_buffer_bytes();
   proto::RigLink link(s.layout, s.wheels, s.wheelsets, s.wheelset_forces);

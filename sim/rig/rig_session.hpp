@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "proto/messages.hpp"
+#include "rig/scenario_catalogue.hpp"
 #include "rig/scenario_runner.hpp"
 
 namespace tread::host {
@@ -29,7 +30,9 @@ struct RigSettings {
   std::uint8_t wheelset_forces{0};  ///< the node's --wheelset-forces
   std::string friction{"kalker"};   ///< the node's --friction and --mu (the reference)
   double mu{0.0};
-  std::filesystem::path tir;      ///< the node's tyre file (the reference)
+  std::filesystem::path tir;  ///< the node's tyre file (the reference)
+  int use_mode{111};          ///< the node's --use-mode and --side (the reference's options)
+  std::string side{"as-measured"};
   std::string wheelset_profile;   ///< the node's wheelset profile (the reference)
   double wheelset_ymax_mm{12.0};  ///< the node's contact table range and step
   double wheelset_step_mm{0.1};
@@ -68,6 +71,10 @@ struct RigReport {
   std::uint8_t node_state{0};  ///< NodeStatus.State of the last status
   std::vector<ScenarioOutcome> scenarios;
 };
+
+/// The scenarios' and the answer check's set-up from the node's options as the rig was given them
+/// (tyre file, useMode and mounted side, wheelsets, contact, friction). Throws on a bad value.
+ScenarioContext rig_scenario_context(const RigSettings& settings);
 
 /// Runs the scenarios over SocketCAN. Throws std::runtime_error when the link cannot be used.
 RigReport run_rig(const RigSettings& settings);

@@ -40,6 +40,24 @@ void NodeRuntime::build_forces(const contact::RigidContact& contact,
   }
 }
 
+mf::MfOptions node_tyre_options(int use_mode, const std::string& side) {
+  const Result<mf::MfOptions> options = mf::options_from_use_mode(use_mode);
+  if (!options.ok()) {
+    throw std::runtime_error("--use-mode " + std::to_string(use_mode) +
+                             ": not a useMode (111..222)");
+  }
+  mf::MfOptions o = options.value;
+  o.extras = true;  // Rl is an output
+  if (side == "left") {
+    o.side = mf::MountedSide::left;
+  } else if (side == "right") {
+    o.side = mf::MountedSide::right;
+  } else if (side != "as-measured") {
+    throw std::runtime_error("--side: want as-measured, left or right, not '" + side + "'");
+  }
+  return o;
+}
+
 NodeRuntime::NodeRuntime(const NodeSettings& settings) {
   node::NodeConfig config = settings.node;
   if (config.wheels > 0) {
@@ -50,21 +68,7 @@ NodeRuntime::NodeRuntime(const NodeSettings& settings) {
     params_double_ = loaded.params;
     tir_warning_ = loaded.warning;
     params_ = mf::convert_parameters<float>(params_double_);
-    const Result<mf::MfOptions> options = mf::options_from_use_mode(settings.use_mode);
-    if (!options.ok()) {
-      throw std::runtime_error("--use-mode " + std::to_string(settings.use_mode) +
-                               ": not a useMode (111..222)");
-    }
-    options_ = options.value;
-    options_.extras = true;  // Rl is an output
-    if (settings.side == "left") {
-      options_.side = mf::MountedSide::left;
-    } else if (settings.side == "right") {
-      options_.side = mf::MountedSide::right;
-    } else if (settings.side != "as-measured") {
-      throw std::runtime_error("--side: want as-measured, left or right, not '" + settings.side +
-                               "'");
-    }
+    options_ = node_tyre_options(settings.use_mode, settings.side);
     if (settings.fixed) {
       params_fixed_ = mf::to_fixed_parameters(params_double_);
       for (auto& tyre : tyres_fixed_) {

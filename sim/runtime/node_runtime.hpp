@@ -46,6 +46,11 @@ struct NodeSettings {
   contact::ContactMaterials materials{};
 };
 
+/// The tyre model's options of a node with `use_mode` (MFeval useMode) and mounted `side`
+/// (as-measured, left, right), Rl among the outputs. Throws std::runtime_error on a bad value.
+/// The node's and the rig's reference use the same.
+[[nodiscard]] mf::MfOptions node_tyre_options(int use_mode, const std::string& side);
+
 using contact::parse_wheelset_profile;  // the --wheelset-profile spec (contact/contact_setup.hpp)
 
 using RuntimeNode =

@@ -10,13 +10,13 @@ namespace tread::host {
 
 void open_protocol_socket(hal::SocketCanBus& bus, const std::string& interface,
                           proto::Layout layout, proto::Direction incoming,
-                          int receive_buffer_bytes) {
+                          const char* no_socketcan_advice, int receive_buffer_bytes) {
   const bool fd = layout == proto::Layout::fd;
   const Status opened = bus.open(interface, fd);
   if (opened == Status::unsupported && bus.last_errno() == EAFNOSUPPORT) {
     throw std::runtime_error(
-        "SocketCAN is not available in this kernel (socket(AF_CAN) refused); "
-        "use --can stub, or run in the VM harness (scripts/vm/run-in-vm.sh)");
+        std::string("SocketCAN is not available in this kernel (socket(AF_CAN) refused); ") +
+        no_socketcan_advice);
   }
   if (opened != Status::ok) {
     throw std::runtime_error("cannot open CAN interface '" + interface + "' (" + to_string(opened) +

@@ -17,11 +17,16 @@ namespace tread::host {
 /// request at net.core.rmem_max; receive_buffer_bytes() reports what it granted).
 inline constexpr int kProtocolReceiveBufferBytes = 1 << 20;
 
+/// What to do without SocketCAN, for the commands that have an in-process bus (node, demo).
+inline constexpr const char* kNoSocketCanAdvice =
+    "use --can stub, or run in the VM harness (scripts/vm/run-in-vm.sh)";
+
 /// Opens `interface` for the end that receives `incoming` frames. Throws std::runtime_error naming
-/// the interface: no SocketCAN in the kernel, no such interface (or no FD on it), filters or buffer
-/// refused.
+/// the interface: no SocketCAN in the kernel (with `no_socketcan_advice`), no such interface (or no
+/// FD on it), filters or buffer refused.
 void open_protocol_socket(hal::SocketCanBus& bus, const std::string& interface,
                           proto::Layout layout, proto::Direction incoming,
+                          const char* no_socketcan_advice = kNoSocketCanAdvice,
                           int receive_buffer_bytes = kProtocolReceiveBufferBytes);
 
 }  // namespace tread::host

@@ -97,6 +97,34 @@ TEST(NodeCliOptions, ScenariosNeedAPeriodTheyCanIntegrate) {
   EXPECT_NE(rt.err.find("ignored on the simulated clock"), std::string::npos) << rt.err;
 }
 
+// `tread rig` checks the node's answers against a reference built from the node's options as it is
+// given them: a wheelset without its profile (it guessed S1002 on 60E1 1:40), more wheelsets with
+// forces than wheelsets, or a side the node does not know, are errors before any frame is sent.
+TEST(NodeCliOptions, RigRefusesAReferenceItWouldHaveToGuess) {
+  const std::string rig = "rig --can vcan0 --tir " + tir() + " ";
+  expect_refused(rig + "--wheelsets 1",
+                 "--wheelset-profile: wheelsets need the node's wheelset profile (the reference)");
+  expect_refused(rig + "--wheelsets 1 --wheelset-profile wheel=S1002,rail=60E1 --wheelset-forces 2",
+                 "--wheelset-forces: 2 wheelsets with forces, but --wheelsets 1");
+  expect_refused(rig + "--side up", "--side: up not in {as-measured,left,right}");
+  expect_refused("node --can stub --tir " + tir() + " --side up",
+                 "--side: up not in {as-measured,left,right}");
+  // Every scenario the rig runs is in its help (curving was missing).
+  const CliRun help = run("rig --help");
+  EXPECT_NE(help.out.find("dynamic-hunting, curving, sweep"), std::string::npos) << help.out;
+  EXPECT_NE(help.out.find("--use-mode"), std::string::npos) << help.out;
+  // Without SocketCAN in the kernel (this host), the advice is what the rig can do: it has no
+  // in-process bus of its own.
+  const CliRun nocan = run(rig + "--scenario sweep");
+  EXPECT_NE(nocan.status, 0);
+  if (nocan.err.find("not available in this kernel") != std::string::npos) {
+    EXPECT_NE(nocan.err.find("tread rig talks to a node process over SocketCAN only"),
+              std::string::npos)
+        << nocan.err;
+    EXPECT_EQ(nocan.err.find("use --can stub"), std::string::npos) << nocan.err;
+  }
+}
+
 // The vehicle scenarios' "tyre in double" is the node's tyre as mounted: with --side left it
 // compared the node's sideslip with the as-measured (right) tyre's, 9 % apart.
 TEST(NodeCliOptions, DemoReferenceTakesTheNodesSide) {

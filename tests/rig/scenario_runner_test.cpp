@@ -14,6 +14,8 @@
 
 #include "node/node.hpp"
 #include "node/test_channels.hpp"
+#include "rig/rig_session.hpp"
+#include "runtime/node_runtime.hpp"
 
 namespace tread::host {
 namespace {
@@ -154,6 +156,28 @@ INSTANTIATE_TEST_SUITE_P(Layouts, ScenarioRunnerLayout,
                          [](const ::testing::TestParamInfo<proto::Layout>& p) {
                            return p.param == proto::Layout::classic ? "Classic" : "Fd";
                          });
+
+// `tread rig`'s reference is the node's tyre as the node mounts it: --use-mode and --side reach the
+// answer check and the vehicle scenarios' reference run (before, the rig always compared against
+// the as-measured tyre at useMode 111).
+TEST(RigScenarioContext, TakesTheNodesUseModeAndSide) {
+  RigSettings s;
+  s.tir = std::filesystem::path(TREAD_SOURCE_DIR) / "data/tyres/MagicFormula61_Parameters.tir";
+  s.use_mode = 121;
+  s.side = "left";
+  const ScenarioContext c = rig_scenario_context(s);
+  const mf::MfOptions want = node_tyre_options(121, "left");
+  EXPECT_EQ(c.tyre_options.side, mf::MountedSide::left);
+  EXPECT_EQ(c.tyre_options.side, want.side);
+  EXPECT_EQ(c.tyre_options.use_alpha_star, want.use_alpha_star);
+  EXPECT_TRUE(c.tyre_options.use_alpha_star);  // useMode x2x
+  EXPECT_TRUE(c.tyre_options.extras);
+  s.side = "up";
+  EXPECT_THROW(static_cast<void>(rig_scenario_context(s)), std::runtime_error);
+  s.side = "right";
+  s.use_mode = 5;
+  EXPECT_THROW(static_cast<void>(rig_scenario_context(s)), std::runtime_error);
+}
 
 }  // namespace
 }  // namespace tread::host
