@@ -1,7 +1,6 @@
 // `tread proto dbc --layout classic|fd [--output F]`: writes the protocol's DBC file.
 #include <fstream>
 #include <iostream>
-#include <map>
 #include <string>
 
 #include "cli/commands.hpp"
@@ -15,15 +14,17 @@ void add_proto_command(CLI::App& app) {
   proto->require_subcommand(1);
   auto* dbc =
       proto->add_subcommand("dbc", "Write the DBC of a layout (generated from the codec's tables)");
-  static proto::Layout layout = proto::Layout::classic;
+  // The layout by name only: CLI11's CheckedTransformer would also take the enum's numbers ("1")
+  // and print its map as the option's type in the help.
+  static std::string layout_name;
   static std::string output;
-  const std::map<std::string, proto::Layout> layouts{{"classic", proto::Layout::classic},
-                                                     {"fd", proto::Layout::fd}};
-  dbc->add_option("--layout", layout, "classic or fd")
-      ->transform(CLI::CheckedTransformer(layouts, CLI::ignore_case))
+  dbc->add_option("--layout", layout_name, "classic or fd")
+      ->check(CLI::IsMember({"classic", "fd"}, CLI::ignore_case))
       ->required();
   dbc->add_option("--output", output, "output file (default: standard output)");
   dbc->callback([] {
+    const proto::Layout layout =
+        CLI::detail::to_lower(layout_name) == "fd" ? proto::Layout::fd : proto::Layout::classic;
     const std::string text = host::write_dbc(layout);
     if (output.empty()) {
       std::cout << text;
