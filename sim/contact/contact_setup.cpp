@@ -220,6 +220,14 @@ void check_wheelset_dimensions(const ContactSetup& setup) {
     throw std::invalid_argument("--gauge " + text(setup.gauge_mm) + ", --b2b " +
                                 text(setup.back_to_back_mm) + ": both must be > 0 (mm)");
   }
+  // Track gauges: from minimum-gauge lines (381 mm) to broad gauge (1676 mm); beyond this range
+  // the value is in another unit or a slip (an infinite gauge ran out of memory).
+  constexpr double kGaugeMin_mm = 300.0, kGaugeMax_mm = 2000.0;
+  if (!(setup.gauge_mm >= kGaugeMin_mm && setup.gauge_mm <= kGaugeMax_mm)) {
+    throw std::invalid_argument("--gauge " + text(setup.gauge_mm) +
+                                ": a track gauge in mm lies within " + text(kGaugeMin_mm) + " … " +
+                                text(kGaugeMax_mm) + " mm");
+  }
   if (setup.rail_frame == "track") return;  // the rails are placed already: --gauge not used
   if (!(setup.back_to_back_mm < setup.gauge_mm)) {
     throw std::invalid_argument("--b2b " + text(setup.back_to_back_mm) +

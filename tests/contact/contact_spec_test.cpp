@@ -75,6 +75,11 @@ TEST(ContactSpec, WheelsetDimensionsAreAWheelsets) {
   EXPECT_EQ(error("wheel=S1002,rail=60E1,r0-right=1e12"),
             "--r0-right 1e+12: a wheel's rolling radius in mm lies within 100 … 1500 mm");
   EXPECT_EQ(error("wheel=S1002,rail=60E1,gauge=0"), "--gauge 0, --b2b 1360: both must be > 0 (mm)");
+  EXPECT_EQ(error("wheel=S1002,rail=60E1,gauge=1e300,b2b=1e299"),
+            "--gauge 1e+300: a track gauge in mm lies within 300 … 2000 mm");
+  EXPECT_EQ(error("wheel=S1002,rail=60E1,gauge=1.435"),
+            "--gauge 1.435: a track gauge in mm lies within 300 … 2000 mm");
+  EXPECT_EQ(error("wheel=S1002,rail=60E1,gauge=600,b2b=530"), "accepted");
   EXPECT_EQ(error("wheel=S1002,rail=60E1,b2b=1500"),
             "--b2b 1500 mm is not below --gauge 1435 mm: the wheels' backs would stand outside the "
             "rails");

@@ -107,6 +107,10 @@ TEST(NodeCliOptions, RigRefusesAReferenceItWouldHaveToGuess) {
   expect_refused(rig + "--wheelsets 1 --wheelset-profile wheel=S1002,rail=60E1 --wheelset-forces 2",
                  "--wheelset-forces: 2 wheelsets with forces, but --wheelsets 1");
   expect_refused(rig + "--side up", "--side: up not in {as-measured,left,right}");
+  expect_refused(rig + "--answer-timeout-ms nan", "--answer-timeout-ms: 'nan'");
+  expect_refused(rig + "--sweep-duration-s nan", "--sweep-duration-s: 'nan'");
+  expect_refused("demo --clock sim --no-plot --scenario sweep --sweep-duration-s nan",
+                 "--sweep-duration-s: 'nan': the sweep's length in s is a number");
   expect_refused("node --can stub --tir " + tir() + " --side up",
                  "--side: up not in {as-measured,left,right}");
   // Every scenario the rig runs is in its help (curving was missing).

@@ -146,6 +146,9 @@ TEST(ProfileCommand, BadInputFailsWithAMessage) {
   r = run("--format xml");
   EXPECT_NE(r.status, 0);
   EXPECT_NE(r.out.find("--format must be table, csv or prw"), std::string::npos) << r.out;
+  r = run("--slope-window nan");  // was taken (a slope of NaN everywhere with --input --plot)
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.out.find("--slope-window: 'nan'"), std::string::npos) << r.out;
 }
 
 TEST(ProfileCommand, InputFileConvertsBetweenFormats) {
