@@ -17,13 +17,13 @@
 #include <string>
 #include <vector>
 
-#include "cli/cli_checks.hpp"
 #include "cli/commands.hpp"
 #include "contact/contact_mechanics.hpp"
 #include "contact/contact_plot.hpp"
 #include "contact/contact_setup_cli.hpp"
 #include "contact/equivalent_conicity.hpp"
 #include "contact/rigid_contact.hpp"
+#include "io/option_checks.hpp"
 
 namespace tread::cli {
 namespace {
@@ -40,16 +40,16 @@ void add_conicity_command(CLI::App& app) {
   cmd->add_option("--amplitudes", amplitudes, "amplitudes (mm), comma separated")
       ->delimiter(',')
       ->capture_default_str()
-      ->check(finite_within(0.01, 30.0, "an amplitude in mm"));
+      ->check(host::finite_within(0.01, 30.0, "an amplitude in mm"));
   cmd->add_option("--step", step_mm,
                   "delta r table step used for the integration (mm; at most a tenth of the "
                   "smallest amplitude)")
       ->capture_default_str()
-      ->check(finite_within(0.001, 1.0, "the table step in mm"));
+      ->check(host::finite_within(0.001, 1.0, "the table step in mm"));
   cmd->add_option("--ymax", y_max_mm,
                   "delta r table from -ymax to +ymax (mm); default: largest amplitude + 3 "
                   "(an asymmetric wheelset oscillates off centre)")
-      ->check(finite_within(0.1, 100.0, "the table's half width in mm"));
+      ->check(host::finite_within(0.1, 100.0, "the table's half width in mm"));
   cmd->add_option("--plot", plot, "PNG: delta r(y) and the contact positions (gnuplot)");
   cmd->callback([] {
     std::vector<std::string> warnings;

@@ -13,7 +13,6 @@
 #include <string>
 #include <vector>
 
-#include "cli/cli_checks.hpp"
 #include "cli/commands.hpp"
 #include "contact/contact_mechanics.hpp"
 #include "contact/contact_plot.hpp"
@@ -21,6 +20,7 @@
 #include "contact/mechanics_columns.hpp"
 #include "contact/rail_placement.hpp"
 #include "contact/rigid_contact.hpp"
+#include "io/option_checks.hpp"
 
 namespace tread::cli {
 namespace {
@@ -93,27 +93,27 @@ std::vector<std::string> mechanics_rows(const contact::RigidContact& c,
 void add_mechanics_options(CLI::App& cmd, MechanicsOptions& o) {
   cmd.add_option("--load", o.load_n,
                  "wheel load Q (N): adds the contact mechanics columns (Hertz, creep forces, Y/Q)")
-      ->check(finite_within(1.0, 1e7, "a wheel load in N"));
+      ->check(host::finite_within(1.0, 1e7, "a wheel load in N"));
   cmd.add_option("--load-right", o.load_right_n, "right wheel load (N); default --load")
-      ->check(finite_within(1.0, 1e7, "a wheel load in N"));
+      ->check(host::finite_within(1.0, 1e7, "a wheel load in N"));
   cmd.add_option("--speed", o.state.speed_m_s, "wheelset speed V (m/s)")
       ->capture_default_str()
-      ->check(finite_within(0.01, 200.0, "the speed in m/s"));
+      ->check(host::finite_within(0.01, 200.0, "the speed in m/s"));
   cmd.add_option("--yaw", o.state.yaw_rad,
                  "wheelset yaw angle (rad, counter-clockwise from above: toward the left rail)")
       ->capture_default_str()
-      ->check(finite_within(-0.2, 0.2, "a wheelset yaw angle in rad"));
+      ->check(host::finite_within(-0.2, 0.2, "a wheelset yaw angle in rad"));
   cmd.add_option("--lateral-velocity", o.state.lateral_velocity_m_s,
                  "wheelset lateral velocity (m/s, toward the left rail)")
       ->capture_default_str()
-      ->check(finite_within(-10.0, 10.0, "a wheelset lateral velocity in m/s"));
+      ->check(host::finite_within(-10.0, 10.0, "a wheelset lateral velocity in m/s"));
   cmd.add_option("--yaw-rate", o.state.yaw_rate_rad_s, "wheelset yaw rate (rad/s)")
       ->capture_default_str()
-      ->check(finite_within(-10.0, 10.0, "a wheelset yaw rate in rad/s"));
+      ->check(host::finite_within(-10.0, 10.0, "a wheelset yaw rate in rad/s"));
   cmd.add_option("--axle-spin", o.state.axle_spin_rad_s,
                  "axle angular speed (rad/s; 0: a locked wheelset); default free rolling on the "
                  "nominal radius, V / r0")
-      ->check(finite_within(0.0, 5000.0, "an axle speed in rad/s"));
+      ->check(host::finite_within(0.0, 5000.0, "an axle speed in rad/s"));
   cmd.add_option("--friction", o.friction,
                  "creep law parameters: kalker (Polach with kA = kS = 1, constant mu: Kalker's "
                  "initial slope), dry or wet (Polach 2005: mu0 0.55 / 0.30, A 0.40, B 0.60 / "
@@ -121,23 +121,23 @@ void add_mechanics_options(CLI::App& cmd, MechanicsOptions& o) {
       ->capture_default_str()
       ->check(CLI::IsMember({"kalker", "dry", "wet"}));
   cmd.add_option("--mu", o.mu, "static friction coefficient mu0 (default 0.36 for kalker)")
-      ->check(finite_within(0.01, 1.0, "mu0"));
+      ->check(host::finite_within(0.01, 1.0, "mu0"));
   cmd.add_option("--creep-law", o.creep_law,
                  "polach (closed form, the node's) or fastsim (Kalker's strip method, 40 x 40)")
       ->capture_default_str()
       ->check(CLI::IsMember({"polach", "fastsim"}));
   cmd.add_option("--e-wheel", o.materials.wheel_material.e_mpa, "wheel Young's modulus (MPa)")
       ->capture_default_str()
-      ->check(finite_within(50000.0, 400000.0, "a steel\'s Young\'s modulus in MPa"));
+      ->check(host::finite_within(50000.0, 400000.0, "a steel\'s Young\'s modulus in MPa"));
   cmd.add_option("--nu-wheel", o.materials.wheel_material.nu, "wheel Poisson's ratio")
       ->capture_default_str()
-      ->check(finite_within(0.0, 0.5, "a Poisson\'s ratio"));
+      ->check(host::finite_within(0.0, 0.5, "a Poisson\'s ratio"));
   cmd.add_option("--e-rail", o.materials.rail_material.e_mpa, "rail Young's modulus (MPa)")
       ->capture_default_str()
-      ->check(finite_within(50000.0, 400000.0, "a steel\'s Young\'s modulus in MPa"));
+      ->check(host::finite_within(50000.0, 400000.0, "a steel\'s Young\'s modulus in MPa"));
   cmd.add_option("--nu-rail", o.materials.rail_material.nu, "rail Poisson's ratio")
       ->capture_default_str()
-      ->check(finite_within(0.0, 0.5, "a Poisson\'s ratio"));
+      ->check(host::finite_within(0.0, 0.5, "a Poisson\'s ratio"));
 }
 
 void add_contact_command(CLI::App& app) {
@@ -156,10 +156,10 @@ void add_contact_command(CLI::App& app) {
                 "add columns yr_left_mm,yr_right_mm: contact positions on the rails (track frame)");
   cmd->add_option("--ymax", y_max_mm, "table from -ymax to +ymax (mm)")
       ->capture_default_str()
-      ->check(finite_within(0.01, 100.0, "the table's half width in mm"));
+      ->check(host::finite_within(0.01, 100.0, "the table's half width in mm"));
   cmd->add_option("--step", step_mm, "table step (mm)")
       ->capture_default_str()
-      ->check(finite_within(0.001, 10.0, "the table step in mm"));
+      ->check(host::finite_within(0.001, 10.0, "the table step in mm"));
   cmd->add_option("--output", output, "CSV file (default: standard output)");
   cmd->add_option("--plot", plot, "PNG: delta r(y) and the contact positions (gnuplot)");
   cmd->callback([] {

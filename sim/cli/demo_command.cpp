@@ -45,7 +45,7 @@ void add_demo_command(CLI::App& app) {
       ->delimiter(',');
   demo->add_option("--sweep-duration-s", settings.sweep_duration_s,
                    "length of the 'sweep' scenario (tyre test machine sweeps)")
-      ->check(finite_within(0.001, 3600.0, "the sweep's length in s"))
+      ->check(host::finite_within(0.001, 3600.0, "the sweep's length in s"))
       ->capture_default_str();
   demo->add_option("--period-us", settings.period_us,
                    "cycle period (at most 5000 us but for 'sweep': the scenarios integrate the "

@@ -47,7 +47,7 @@ void add_node_command(CLI::App& app) {
           "", "CYCLES"));
   cmd->add_option("--duration-s", duration_s,
                   "stop after this time (overrides --cycles; at least one period, at most 1e7 s)")
-      ->check(finite_within(1e-6, 1e7, "the duration in s"));
+      ->check(host::finite_within(1e-6, 1e7, "the duration in s"));
   cmd->add_option("--gpio-chip", live.gpio_chip,
                   "libgpiod chip for the cycle pin (e.g. gpiochip0)");
   cmd->add_option("--gpio-cycle-line", live.gpio_cycle_line, "line offset of the cycle pin");

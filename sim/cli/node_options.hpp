@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/cli_checks.hpp"
+#include "io/option_checks.hpp"
 #include "runtime/node_runtime.hpp"
 
 namespace tread::cli {
@@ -87,13 +87,13 @@ inline void add_node_options(CLI::App& cmd, NodeCliState& s, bool tir_required) 
       ->capture_default_str();
   cmd.add_option("--mu", s.settings.mu,
                  "wheel-rail friction coefficient mu0, 0.01 to 1 (default: the set's)")
-      ->check(finite_within(0.01, 1.0, "mu0"));
+      ->check(host::finite_within(0.01, 1.0, "mu0"));
   cmd.add_option("--mode", s.mode,
                  "periodic (own schedule) or sync (compute on the rig's cycle frame)")
       ->check(CLI::IsMember({"periodic", "sync"}))
       ->capture_default_str();
   cmd.add_option("--timeout-ms", s.timeout_ms, "input timeout per channel (0.01 to 60000 ms)")
-      ->check(finite_within(0.01, 60000.0, "the input timeout in ms"))
+      ->check(host::finite_within(0.01, 60000.0, "the input timeout in ms"))
       ->capture_default_str();
   cmd.add_option("--use-mode", s.settings.use_mode, "MFeval useMode of the tyre model")
       ->capture_default_str();

@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
-#include "cli/cli_checks.hpp"
 #include "cli/commands.hpp"
+#include "io/option_checks.hpp"
 #include "profile/measured_profile_plot.hpp"
 #include "profile/nominal_wheel.hpp"
 #include "profile/profile_csv.hpp"
@@ -382,7 +382,7 @@ void add_profile_command(CLI::App& app) {
                   "derived from the measures)");
   cmd->add_option("--slope-window", options->slope_half_window_mm,
                   "with --input --plot: half-width of the local least-squares slope (mm)")
-      ->check(finite_within(0.01, 20.0, "the slope window's half-width in mm"))
+      ->check(host::finite_within(0.01, 20.0, "the slope window's half-width in mm"))
       ->capture_default_str();
   cmd->add_option("--plot", options->plot,
                   "PNG: profile, slope, and the slopes of the three families (gnuplot); with "

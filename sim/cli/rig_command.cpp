@@ -40,7 +40,8 @@ void add_rig_command(CLI::App& app) {
   cmd->add_option("--friction", settings.friction, "the node's --friction (kalker, dry, wet)")
       ->check(CLI::IsMember({"kalker", "dry", "wet"}))
       ->capture_default_str();
-  cmd->add_option("--mu", settings.mu, "the node's --mu")->check(finite_within(0.01, 1.0, "mu0"));
+  cmd->add_option("--mu", settings.mu, "the node's --mu")
+      ->check(host::finite_within(0.01, 1.0, "mu0"));
   std::string known;
   for (const std::string& n : host::scenario_names()) known += (known.empty() ? "" : ", ") + n;
   cmd->add_option(
@@ -48,7 +49,7 @@ void add_rig_command(CLI::App& app) {
          "scenarios, in order (default: those of the channels, as for tread demo): " + known)
       ->delimiter(',');
   cmd->add_option("--sweep-duration-s", settings.sweep_duration_s, "length of 'sweep'")
-      ->check(finite_within(0.001, 3600.0, "the sweep's length in s"))
+      ->check(host::finite_within(0.001, 3600.0, "the sweep's length in s"))
       ->capture_default_str();
   cmd->add_option("--period-us", settings.period_us,
                   "cycle period (the simulated step; at most 5000 us but for 'sweep': the "
@@ -62,7 +63,7 @@ void add_rig_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--answer-timeout-ms", settings.answer_timeout_ms,
                   "wait this long for the node's answer of a cycle")
-      ->check(finite_within(0.0, 60'000.0, "the answer timeout in ms"))
+      ->check(host::finite_within(0.0, 60'000.0, "the answer timeout in ms"))
       ->capture_default_str();
   cmd->add_option("--out", settings.out_dir, "directory for the traces (and plots)")
       ->capture_default_str();

@@ -3,11 +3,11 @@
 // (header-only: only the tread executable links CLI11).
 
 #include <CLI/CLI.hpp>
-#include <cmath>
 #include <functional>
 #include <string>
 
 #include "contact/contact_setup.hpp"
+#include "io/option_checks.hpp"
 #include "profile/profile_file.hpp"
 
 namespace tread::contact {
@@ -63,15 +63,7 @@ inline void add_contact_setup_options(CLI::App& cmd, ContactSetup& s) {
                  "smooth measured profiles (files; built-in profiles are exact): local quadratic "
                  "fit half window (mm, up to 10), 0 = off")
       ->capture_default_str()
-      ->check(CLI::Validator(
-          [](std::string& text) -> std::string {
-            double v = 0.0;
-            if (CLI::detail::lexical_cast(text, v) && std::isfinite(v) && v >= 0.0 && v <= 10.0) {
-              return {};
-            }
-            return "'" + text + "': the smoothing half window in mm is a number from 0 to 10";
-          },
-          "", "FINITE"));
+      ->check(host::finite_within(0.0, 10.0, "the smoothing half window in mm"));
 }
 
 }  // namespace tread::contact

@@ -1,12 +1,14 @@
 #pragma once
-// Validators the commands share (header-only: CLI11 is linked only into the tread executable).
+// Validators of command-line options that the commands (cli/) and the option sets of the areas
+// (contact/contact_setup_cli.hpp) share. Header-only: CLI11 is linked only into the tread
+// executable.
 
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <sstream>
 #include <string>
 
-namespace tread::cli {
+namespace tread::host {
 
 /// A finite number within [lo, hi] (CLI::Range and CLI::PositiveNumber let NaN through).
 inline CLI::Validator finite_within(double lo, double hi, const std::string& what) {
@@ -23,4 +25,4 @@ inline CLI::Validator finite_within(double lo, double hi, const std::string& wha
       "", "FINITE");
 }
 
-}  // namespace tread::cli
+}  // namespace tread::host
