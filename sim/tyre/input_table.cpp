@@ -15,6 +15,7 @@ namespace tread::tyre {
 namespace {
 
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
+constexpr double kPoundForce = 4.4482216152605;  // 1 lbf in N (exact: 0.45359237 kg · g_n)
 
 struct Alias {
   std::string_view name;  // as shown in help; matched without regard to case
@@ -78,7 +79,7 @@ struct UnitName {
 constexpr UnitName kUnits[] = {
     {"n", InputQuantity::fz, 1.0, "N"},
     {"kn", InputQuantity::fz, 1000.0, "kN"},
-    {"lbf", InputQuantity::fz, 4.4482216152605, "lbf"},  // 1 lbf = 4.4482216152605 N
+    {"lbf", InputQuantity::fz, kPoundForce, "lbf"},
     {"1", InputQuantity::kappa, 1.0, "1"},
     {"-", InputQuantity::kappa, 1.0, "1"},
     {"unitless", InputQuantity::kappa, 1.0, "1"},
@@ -107,7 +108,7 @@ struct MeasuredAlias {
   std::string_view unit;
 };
 
-constexpr double kFootPound = 1.3558179483314004;  // 1 ft·lbf in N m
+constexpr double kFootPound = kPoundForce * 0.3048;  // 1 ft·lbf in N m (1 ft = 0.3048 m)
 
 constexpr MeasuredAlias kMeasuredAliases[] = {
     {"Fx_N", MeasuredQuantity::fx, 1.0, "N"},    {"FX", MeasuredQuantity::fx, 1.0, "N"},
@@ -122,10 +123,10 @@ constexpr MeasuredAlias kMeasuredAliases[] = {
 constexpr MeasuredAlias kMeasuredUnits[] = {
     {"n", MeasuredQuantity::fx, 1.0, "N"},
     {"kn", MeasuredQuantity::fx, 1000.0, "kN"},
-    {"lbf", MeasuredQuantity::fx, 4.4482216152605, "lbf"},
+    {"lbf", MeasuredQuantity::fx, kPoundForce, "lbf"},
     {"n", MeasuredQuantity::fy, 1.0, "N"},
     {"kn", MeasuredQuantity::fy, 1000.0, "kN"},
-    {"lbf", MeasuredQuantity::fy, 4.4482216152605, "lbf"},
+    {"lbf", MeasuredQuantity::fy, kPoundForce, "lbf"},
     {"n m", MeasuredQuantity::mz, 1.0, "N m"},
     {"nm", MeasuredQuantity::mz, 1.0, "N m"},
     {"n-m", MeasuredQuantity::mz, 1.0, "N m"},

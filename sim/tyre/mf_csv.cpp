@@ -101,6 +101,13 @@ struct Tally {
   int first_line = 0;
 };
 
+// Adds a later chunk's tally to the one so far (the first line stays the earliest).
+void merge(Tally& so_far, const Tally& chunk) {
+  if (chunk.rows == 0) return;
+  if (so_far.rows == 0) so_far.first_line = chunk.first_line;
+  so_far.rows += chunk.rows;
+}
+
 // Rows evaluated together by --batch: 16 blocks of 16 lanes (32 of 8), their rows, inputs and
 // outputs (≈ 60 KiB) staying in the core's cache between parsing, evaluating and formatting.
 constexpr std::size_t kBatchRows = 256;
@@ -501,15 +508,8 @@ MfCsvReport evaluate_csv(const mf::MfParameters<double>& params, const mf::MfOpt
       },
       [&](Chunk& chunk) {
         out.write(chunk.text.get(), static_cast<std::streamsize>(chunk.used));
-        for (std::size_t i = 0; i < kLimitCount; ++i) {
-          if (chunk.outside[i].rows == 0) continue;
-          if (outside[i].rows == 0) outside[i].first_line = chunk.outside[i].first_line;
-          outside[i].rows += chunk.outside[i].rows;
-        }
-        if (chunk.above_free.rows > 0) {
-          if (above_free.rows == 0) above_free.first_line = chunk.above_free.first_line;
-          above_free.rows += chunk.above_free.rows;
-        }
+        for (std::size_t i = 0; i < kLimitCount; ++i) merge(outside[i], chunk.outside[i]);
+        merge(above_free, chunk.above_free);
         report.rows += chunk.rows;
         bytes += chunk.lines.text.size();
         if (csv.progress) csv.progress(bytes, report.rows);
