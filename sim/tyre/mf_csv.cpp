@@ -26,6 +26,7 @@
 #include "mf/mf_evaluate_batch.hpp"
 #include "mf/mf_evaluate_rows.hpp"
 #include "mf/mf_fixed.hpp"
+#include "mf/mf_free_radius.hpp"
 #include "tir/tir_file.hpp"
 
 namespace tread::tyre {
@@ -148,8 +149,8 @@ struct EvalSetup {
   std::array<double, kInputQuantityCount> low{};
   std::array<double, kInputQuantityCount> high{};
   /// Where Rl is shown and found as a root of MF 6.2's vertical force (MF 6.2, MF 5.2, PAC2002):
-  /// R0, Q_RE0, Q_V1 and LONGVL, for check_loaded_radius; r0_m = 0 where not checked.
-  double r0_m = 0.0, q_re0 = 0.0, q_v1 = 0.0, longvl_mps = 1.0;
+  /// the tyre, for check_loaded_radius; null where not checked.
+  const mf::MfParameters<double>* radius_check = nullptr;
 };
 
 // The coefficients through which the inflation pressure acts that are nonzero, as "KEY = value"
@@ -249,9 +250,8 @@ void mark_clamped(const EvalSetup& setup, bool outside, mf::MfOutput<T>& result)
 template <typename T>
 void check_loaded_radius(const EvalSetup& setup, const InputRow& row, const mf::MfOutput<T>& result,
                          Tally& tally) {
-  if (!(setup.r0_m > 0.0)) return;
-  const double speed = as_double(result.omega_radps) * setup.r0_m / setup.longvl_mps;
-  const double romega = setup.r0_m * (setup.q_re0 + setup.q_v1 * speed * speed);
+  if (setup.radius_check == nullptr) return;
+  const double romega = mf::free_radius_m(*setup.radius_check, as_double(result.omega_radps));
   if (as_double(result.rl_m) > 1.02 * romega && tally.rows++ == 0) tally.first_line = row.line;
 }
 
@@ -457,10 +457,7 @@ MfCsvReport evaluate_csv(const mf::MfParameters<double>& params, const mf::MfOpt
     return std::string_view(eval_columns()[c].name) == "Rl_m";
   });
   if (shows_rl && setup.options.extras && params.fit_type != mf::FitType::mf61) {
-    setup.r0_m = params.unloaded_radius_m;
-    setup.q_re0 = params.q_re0;
-    setup.q_v1 = params.q_v1;
-    setup.longvl_mps = params.longvl_mps;
+    setup.radius_check = &params;
   }
   constexpr std::size_t kStatusBytes = 32;  // "non-finite result" and its '\n'
   setup.row_bytes = csv.columns.size() * (host::kShortestNumberMaxChars + 1) + kStatusBytes;

@@ -6,6 +6,7 @@
 // (Halley's steps in double and on lanes).
 
 #include "mf/mf_detail_common.hpp"
+#include "mf/mf_free_radius.hpp"
 #include "mf/mf_math.hpp"
 #include "mf/mf_parameters.hpp"
 #include "mf/mf_prepared.hpp"
@@ -66,8 +67,7 @@ template <typename T, typename P>
     const auto active = steps == 0 ? every : abs(re_old - re) > tolerance;
     if (!any_lane(active)) break;
     const T omega_next = div_or(in.ukappa * in.vx + in.vx, re, T(0));
-    const T speed = (omega_next * r0) / p.longvl_mps;
-    const T romega_next = r0 * (p.q_re0 + p.q_v1 * speed * speed);
+    const T romega_next = free_radius_m(p, omega_next);
     re_old = if_else(active, re, re_old);
     omega = if_else(active, omega_next, omega);
     romega = if_else(active, romega_next, romega);
