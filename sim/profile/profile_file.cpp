@@ -308,6 +308,30 @@ double z_at(const SampledProfile& p, double y) {
   return p.z_mm[k - 1] + t * (p.z_mm[k] - p.z_mm[k - 1]);
 }
 
+/// The width of a profile's top `depth_mm` below its highest point (index `top`): the chord
+/// between the crossings of that level on either side. nullopt where the profile ends before it
+/// falls that far on a side.
+std::optional<double> top_chord_mm(const SampledProfile& p, std::size_t top, double depth_mm) {
+  const double level = p.z_mm[top] - depth_mm;
+  std::size_t l = top;
+  while (l > 0 && p.z_mm[l - 1] >= level) --l;
+  std::size_t h = top;
+  while (h + 1 < p.z_mm.size() && p.z_mm[h + 1] >= level) ++h;
+  if (l == 0 || h + 1 == p.z_mm.size()) return std::nullopt;
+  const auto cross = [&](std::size_t a, std::size_t b) {
+    return p.y_mm[a] + (level - p.z_mm[a]) / (p.z_mm[b] - p.z_mm[a]) * (p.y_mm[b] - p.y_mm[a]);
+  };
+  return cross(h, h + 1) - cross(l - 1, l);
+}
+
+// A wheel's flange and a rail's head told apart by their width 10 mm below the top: an EN 13715
+// flange is about 27 mm wide there (25 to 31 mm from thin to thick), a rail head 60 to 72 mm (the
+// full head width: its sides are steep from a few mm below the crown).
+constexpr double kTopChordDepth_mm = 10.0;
+constexpr double kFlangeChordMax_mm = 45.0;  // wider: a rail head given as a wheel
+constexpr double kHeadChordMin_mm = 35.0;    // narrower, with a tread beside it: a wheel as a rail
+constexpr double kTreadBeside_mm = 40.0;     // a wheel's tread runs on this far past its flange
+
 /// Step 3: flange side, z sense and the taping line of a wheel.
 void check_wheel(SampledProfile& w, const std::string& file, const ProfileReadOptions& options,
                  ProfileFile& out) {
@@ -324,6 +348,7 @@ void check_wheel(SampledProfile& w, const std::string& file, const ProfileReadOp
     bool found = false;
     bool tread_on_plus_y = true;
     double y_tip = 0.0;
+    std::size_t tip = 0;
   };
   const auto find_flange = [&](double sign) {
     Flange f;
@@ -347,6 +372,7 @@ void check_wheel(SampledProfile& w, const std::string& file, const ProfileReadOp
       }
     }
     f.y_tip = w.y_mm[tip];
+    f.tip = tip;
     f.tread_on_plus_y = y1 - f.y_tip >= f.y_tip - y0;
     const double extent = f.tread_on_plus_y ? y1 - f.y_tip : f.y_tip - y0;
     const double drop = f.tread_on_plus_y ? drop_right : drop_left;
@@ -370,6 +396,14 @@ void check_wheel(SampledProfile& w, const std::string& file, const ProfileReadOp
                            "long): a cone or a tread alone; flange contact, its angle and the "
                            "measures are not available");
     return;
+  }
+  if (const std::optional<double> chord = top_chord_mm(w, up.tip, kTopChordDepth_mm);
+      chord && *chord > kFlangeChordMax_mm) {
+    throw std::runtime_error(
+        file + ": not a wheel profile: its top (y = " + num(up.y_tip) + " mm) is " +
+        num(*chord, 1) + " mm wide " + num(kTopChordDepth_mm, 0) +
+        " mm below it, a rail head's width (a wheel's flange is 25 to 31 mm wide there); a rail "
+        "goes in as the rail (--rail-file, --role rail)");
   }
   if (!up.tread_on_plus_y) {
     throw std::runtime_error(
@@ -655,6 +689,21 @@ ProfileFile read_profile_file(const std::filesystem::path& path, ProfileRole rol
                                (options.z_down
                                     ? "do not pass --rail-z-down (ProfileReadOptions::z_down)"
                                     : "pass --rail-z-down (ProfileReadOptions::z_down)"));
+    }
+    {
+      // A wheel given as the rail: its flange is the highest part, narrow, with the tread beside.
+      const SampledProfile& r = out.profile;
+      const auto top = static_cast<std::size_t>(std::max_element(z.begin(), z.end()) - z.begin());
+      const std::optional<double> chord = top_chord_mm(r, top, kTopChordDepth_mm);
+      const double beside = std::max(r.y_mm[top] - r.y_mm.front(), r.y_mm.back() - r.y_mm[top]);
+      if (chord && *chord < kHeadChordMin_mm && beside - 0.5 * *chord >= kTreadBeside_mm) {
+        throw std::runtime_error(
+            file + ": not a rail profile: its top (y = " + num(r.y_mm[top]) + " mm) is " +
+            num(*chord, 1) + " mm wide " + num(kTopChordDepth_mm, 0) + " mm below it with " +
+            num(beside, 0) +
+            " mm of profile beside it: a wheel's flange and tread (a rail head is 60 to 72 mm wide "
+            "there); a wheel goes in as the wheel (--wheel-file, --role wheel)");
+      }
     }
     out.rail_inclination_rad = head_inclination_rad(out.profile);
     if (out.rail_inclination_rad) {

@@ -349,6 +349,32 @@ TEST(ProfileFile, RoleAndHeaderTypeMustAgree) {
   EXPECT_EQ(w.header.front().first, "type");
 }
 
+// A CSV has no header to say what it holds: its shape does. A rail head given as the wheel (its
+// crown taken for a flange: the contact table came out with only a warning about a shift) and a
+// wheel given as the rail are refused, by the width of the top 10 mm below it.
+TEST(ProfileFile, CsvRoleIsCheckedByTheShapeOfItsTop) {
+  const fs::path rail = corpus("uic60_upright_clean.csv");
+  EXPECT_EQ(error_of(rail, ProfileRole::kWheel),
+            rail.string() +
+                ": not a wheel profile: its top (y = -7.725 mm) is 70.1 mm wide 10 mm below it, a "
+                "rail head's width (a wheel's flange is 25 to 31 mm wide there); a rail goes in as "
+                "the rail (--rail-file, --role rail)");
+  const fs::path wheel = corpus("s1002.csv");
+  EXPECT_EQ(error_of(wheel, ProfileRole::kRail),
+            wheel.string() +
+                ": not a rail profile: its top (y = -55.000 mm) is 27.4 mm wide 10 mm below it "
+                "with 125 mm of profile beside it: a wheel's flange and tread (a rail head is 60 "
+                "to 72 mm wide there); a wheel goes in as the wheel (--wheel-file, --role wheel)");
+  // The EN 15302 wheels (a thin-flanged one among them) and rail read in their own roles.
+  for (const char* w : {"WheelA.csv", "WheelC.csv", "WheelH.csv"}) {
+    EXPECT_NO_THROW((void)read_profile_file(testing::test_data(std::string("rail/en15302/") + w),
+                                            ProfileRole::kWheel))
+        << w;
+  }
+  EXPECT_NO_THROW(
+      (void)read_profile_file(testing::test_data("rail/en15302/RailA.csv"), ProfileRole::kRail));
+}
+
 TEST(ProfileFile, CantedManchesterRailIsMeasuredAsOneInForty) {
   const fs::path prr = testing::test_data("rail/manchester_benchmark/MBench_UIC60_v3.prr");
   const ProfileFile r = read_profile_file(prr, ProfileRole::kRail);
