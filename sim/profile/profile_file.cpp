@@ -332,6 +332,41 @@ constexpr double kFlangeChordMax_mm = 45.0;  // wider: a rail head given as a wh
 constexpr double kHeadChordMin_mm = 35.0;    // narrower, with a tread beside it: a wheel as a rail
 constexpr double kTreadBeside_mm = 40.0;     // a wheel's tread runs on this far past its flange
 
+/// A single point standing off its neighbours, up then down (or down then up) over steep flanks:
+/// a measuring fault (dust, a reflection), which the contact search would touch as if it were
+/// the profile. Said, with the first one and how many; not removed (it could be a real edge).
+void warn_spikes(const SampledProfile& p, const std::string& file, ProfileFile& out) {
+  constexpr double kNeighbourGap_mm = 1.0;  // neighbours this close: a measured point's spacing
+  constexpr double kSpikeHeight_mm = 0.3;   // off the chord of its neighbours by at least this
+  constexpr double kSteepSlope = 3.0;       // both flanks steeper than 72 degrees
+  std::size_t count = 0;
+  std::size_t first = 0;
+  double first_height = 0.0;
+  for (std::size_t k = 1; k + 1 < p.y_mm.size(); ++k) {
+    const double dy1 = p.y_mm[k] - p.y_mm[k - 1];
+    const double dy2 = p.y_mm[k + 1] - p.y_mm[k];
+    if (dy1 > kNeighbourGap_mm || dy2 > kNeighbourGap_mm) continue;
+    const double s1 = (p.z_mm[k] - p.z_mm[k - 1]) / dy1;
+    const double s2 = (p.z_mm[k + 1] - p.z_mm[k]) / dy2;
+    const double chord = p.z_mm[k - 1] + (p.z_mm[k + 1] - p.z_mm[k - 1]) * dy1 / (dy1 + dy2);
+    const double height = p.z_mm[k] - chord;
+    if (s1 * s2 < 0.0 && std::abs(s1) >= kSteepSlope && std::abs(s2) >= kSteepSlope &&
+        std::abs(height) >= kSpikeHeight_mm) {
+      if (count++ == 0) {
+        first = k;
+        first_height = height;
+      }
+    }
+  }
+  if (count == 0) return;
+  out.warnings.push_back(
+      file + ": " + std::to_string(count) + (count == 1 ? " point stands" : " points stand") +
+      " off its neighbours as a spike (the first at y = " + num(p.y_mm[first]) + " mm, " +
+      num(first_height) +
+      " mm off the line between them): a measuring fault? The contact touches it as part of the "
+      "profile; remove it, or smooth the profile (--smooth)");
+}
+
 /// Step 3: flange side, z sense and the taping line of a wheel.
 void check_wheel(SampledProfile& w, const std::string& file, const ProfileReadOptions& options,
                  ProfileFile& out) {
@@ -654,6 +689,7 @@ ProfileFile read_profile_file(const std::filesystem::path& path, ProfileRole rol
                              "sampled every 0.1 to 0.5 mm)");
     }
   }
+  warn_spikes(out.profile, file, out);
   if (role == ProfileRole::kWheel) {
     check_wheel(out.profile, file, options, out);
     if (!miniprof_wheel) {

@@ -375,6 +375,32 @@ TEST(ProfileFile, CsvRoleIsCheckedByTheShapeOfItsTop) {
       (void)read_profile_file(testing::test_data("rail/en15302/RailA.csv"), ProfileRole::kRail));
 }
 
+// One point 5 mm off a measured tread (dust on the wheel, a reflection): the contact search would
+// take it for the profile. Said with where it is; a clean profile says nothing.
+TEST(ProfileFile, ASpikeInAMeasuredProfileIsSaid) {
+  const fs::path dir = testing::test_dir("profile_file_test_spike");
+  std::ifstream in(corpus("s1002_clean.csv"));
+  std::ofstream out(dir / "spike.csv");
+  std::string line;
+  while (std::getline(in, line)) {
+    const auto comma = line.find(',');
+    if (comma != std::string::npos && std::isdigit(static_cast<unsigned char>(line.back())) &&
+        std::abs(std::stod(line.substr(0, comma)) - 10.0) < 1e-9) {
+      out << "10," << std::stod(line.substr(comma + 1)) + 5.0 << '\n';
+    } else {
+      out << line << '\n';
+    }
+  }
+  out.close();
+  const ProfileFile f = read_profile_file(dir / "spike.csv", ProfileRole::kWheel);
+  ASSERT_EQ(f.warnings.size(), 1U);
+  EXPECT_NE(f.warnings[0].find("1 point stands off its neighbours as a spike (the first at y = "
+                               "10.000 mm, 5.000 mm off the line between them)"),
+            std::string::npos)
+      << f.warnings[0];
+  EXPECT_TRUE(read_profile_file(corpus("s1002_clean.csv"), ProfileRole::kWheel).warnings.empty());
+}
+
 TEST(ProfileFile, CantedManchesterRailIsMeasuredAsOneInForty) {
   const fs::path prr = testing::test_data("rail/manchester_benchmark/MBench_UIC60_v3.prr");
   const ProfileFile r = read_profile_file(prr, ProfileRole::kRail);
