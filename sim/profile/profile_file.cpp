@@ -615,6 +615,7 @@ ProfileFile read_profile_file(const std::filesystem::path& path, ProfileRole rol
             "), but it was given as the " + role_name(role));
       }
       points = std::move(read.points);
+      out.warnings.insert(out.warnings.end(), read.notes.begin(), read.notes.end());
       break;
     }
     case ProfileFormat::kMiniProf: {

@@ -141,6 +141,9 @@ struct SimpackSettings {
   double z_min_mm = 1.0, z_max_mm = 0.0;
   bool mirror_y = false;
   bool mirror_z = false;
+  double point_dist_min_mm = 0.0;  ///< a point closer than this to the last kept one is dropped
+  std::size_t point_dist_min_line = 0;
+  std::vector<std::string> notes;
 };
 
 SimpackSettings read_settings(const SimpackBlocks& blocks, const std::string& source_name) {
@@ -194,15 +197,40 @@ SimpackSettings read_settings(const SimpackBlocks& blocks, const std::string& so
   s.z_max_mm = number("spline.bound.z.max", 0.0) * s.to_mm;
   s.mirror_y = number("spline.mirror.y", 0.0) > 0.5;
   s.mirror_z = number("spline.mirror.z", 0.0) > 0.5;
+  s.point_dist_min_mm = number("spline.point.dist.min", 0.0) * s.to_mm;
+  s.point_dist_min_line = line_of("spline.point.dist.min");
+  if (!(s.point_dist_min_mm >= 0.0 && s.point_dist_min_mm < 10.0)) {
+    host::text::fail_at(source_name, s.point_dist_min_line,
+                        "point.dist.min must be from 0 to 10 mm (a distance between points)");
+  }
+  // What SIMPACK does with the points and tread does not: said, so that a profile that differs
+  // from SIMPACK's does not do so silently.
+  const auto at = [&](const std::string& key) {
+    return source_name + ":" + std::to_string(line_of(key)) + ": ";
+  };
+  if (const double smooth = number("spline.approx.smooth", 0.0); std::fabs(smooth) > 0.0) {
+    std::ostringstream m;
+    m << at("spline.approx.smooth") << "approx.smooth = " << smooth
+      << ": SIMPACK approximates these points by a smoothing spline; tread takes them as given "
+         "(--smooth fits them locally)";
+    s.notes.push_back(m.str());
+  }
+  if (number("spline.inversion", 0.0) > 0.5) {
+    s.notes.push_back(at("spline.inversion") +
+                      "inversion = 1 is not applied: the points are read as the other settings "
+                      "place them");
+  }
   return s;
 }
 
 /// The points as the settings place them: scaled, shifted, rotated, cut to the bounds, mirrored;
 /// a rail's z turned from SIMPACK's downward axis to height.
-std::vector<RawPoint> placed_points(const std::vector<RawPoint>& points, const SimpackSettings& s) {
+std::vector<RawPoint> placed_points(const std::vector<RawPoint>& points, const SimpackSettings& s,
+                                    std::size_t& dropped) {
   const double c = std::cos(s.rotate_rad);
   const double sn = std::sin(s.rotate_rad);
   std::vector<RawPoint> kept;
+  dropped = 0;
   for (const RawPoint& p : points) {
     double y = p.y * s.to_mm + s.shift_y_mm;
     double z = p.z * s.to_mm + s.shift_z_mm;
@@ -225,6 +253,11 @@ std::vector<RawPoint> placed_points(const std::vector<RawPoint>& points, const S
     if (s.type == SimpackProfileType::kRail) {
       z = -z;  // SIMPACK z down -> height up
     }
+    if (s.point_dist_min_mm > 0.0 && !kept.empty() &&
+        std::hypot(y - kept.back().y, z - kept.back().z) < s.point_dist_min_mm) {
+      ++dropped;
+      continue;
+    }
     kept.push_back({y, z, p.line});
   }
   return kept;
@@ -235,13 +268,22 @@ std::vector<RawPoint> placed_points(const std::vector<RawPoint>& points, const S
 SimpackPoints read_simpack_points(std::istream& in, const std::string& source_name) {
   const SimpackBlocks blocks = read_blocks(in, source_name);
   const SimpackSettings settings = read_settings(blocks, source_name);
-  const std::vector<RawPoint> kept = placed_points(blocks.points, settings);
+  std::size_t dropped = 0;
+  const std::vector<RawPoint> kept = placed_points(blocks.points, settings, dropped);
   if (kept.size() < 2) {
     host::text::fail_at(source_name, blocks.last_line, "fewer than 2 points left after the bounds");
   }
   SimpackPoints result;
   result.type = settings.type;
   result.comment = settings.comment;
+  result.notes = settings.notes;
+  if (dropped > 0) {
+    std::ostringstream m;
+    m << source_name << ":" << settings.point_dist_min_line
+      << ": point.dist.min = " << settings.point_dist_min_mm << " mm: " << dropped
+      << " points closer than that to the one before were dropped, as SIMPACK does";
+    result.notes.push_back(m.str());
+  }
   result.points.name = source_name;
   for (const RawPoint& p : kept) {
     result.points.y_mm.push_back(p.y);

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <iosfwd>
 #include <string>
+#include <vector>
 
 #include "profile/sampled_profile.hpp"
 
@@ -28,6 +29,9 @@ struct SimpackPoints {
   SimpackProfileType type = SimpackProfileType::kWheel;
   std::string comment;
   ProfilePoints points;
+  /// Settings the file gives that change SIMPACK's profile but not tread's (approx.smooth,
+  /// inversion), and point.dist.min's dropped points: "file:line: ..." each.
+  std::vector<std::string> notes;
 };
 SimpackPoints read_simpack_points(std::istream& in, const std::string& source_name);
 

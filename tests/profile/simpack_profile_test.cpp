@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "golden_path.hpp"
 
@@ -36,6 +37,34 @@ TEST(SimpackProfile, AppliesUnitsAndMirrorAndSortsByY) {
   EXPECT_DOUBLE_EQ(p.profile.z_mm[0], 0.5);
   EXPECT_DOUBLE_EQ(p.profile.y_mm[2], 2.0);
   EXPECT_DOUBLE_EQ(p.profile.z_mm[2], -1.0);
+}
+
+// Settings that change the profile SIMPACK uses: point.dist.min is applied (points closer than it
+// to the one kept before are dropped), approx.smooth and inversion are not, and each is said at
+// its line (they were ignored without a word).
+TEST(SimpackProfile, PointDistanceSmoothingAndInversionAreAppliedOrSaid) {
+  std::istringstream in(
+      "header.begin\n type = 1\nheader.end\n"
+      "spline.begin\n approx.smooth = 0.5\n point.dist.min = 0.15\n inversion = 1\n"
+      " point.begin\n0 0\n0.1 0\n0.2 0\n0.3 0\n0.4 0\n point.end\nspline.end\n");
+  const SimpackPoints p = read_simpack_points(in, "w.prw");
+  EXPECT_EQ(p.points.y_mm, (std::vector<double>{0.0, 0.2, 0.4}));
+  ASSERT_EQ(p.notes.size(), 3U);
+  EXPECT_EQ(p.notes[0],
+            "w.prw:5: approx.smooth = 0.5: SIMPACK approximates these points by a smoothing "
+            "spline; tread takes them as given (--smooth fits them locally)");
+  EXPECT_EQ(p.notes[1],
+            "w.prw:7: inversion = 1 is not applied: the points are read as the other settings "
+            "place them");
+  EXPECT_EQ(p.notes[2],
+            "w.prw:6: point.dist.min = 0.15 mm: 2 points closer than that to the one before were "
+            "dropped, as SIMPACK does");
+  // tread's own files (every setting 0) read without a note.
+  std::ostringstream out;
+  write_simpack_profile(out, SampledProfile{"p", {-3.0, 0.0, 7.5}, {1.0, 0.0, -0.5}},
+                        SimpackProfileType::kWheel, "");
+  std::istringstream back(out.str());
+  EXPECT_TRUE(read_simpack_points(back, "rt").notes.empty());
 }
 
 TEST(SimpackProfile, ErrorsNameFileAndLine) {
