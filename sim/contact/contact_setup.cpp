@@ -264,6 +264,21 @@ RigidContact build_contact(const ContactSetup& setup, std::vector<std::string>& 
   if (setup.rail_frame == "track" && setup.rail_file.empty()) {
     throw std::invalid_argument("--rail-frame track applies to --rail-file only");
   }
+  // How to read a file, given with a built-in profile: nothing to apply it to.
+  const auto file_only = [](const profile::ProfileReadOptions& o, const std::string& file,
+                            const char* side) {
+    if (!file.empty()) return;
+    const char* given = o.z_down                                    ? "z-down"
+                        : o.mirror_y                                ? "mirror-y"
+                        : o.format != profile::ProfileFormat::kAuto ? "format"
+                                                                    : nullptr;
+    if (given != nullptr) {
+      throw std::invalid_argument(std::string("--") + side + "-" + given + " applies to --" + side +
+                                  "-file only (the built-in " + side + " is in tread's own frame)");
+    }
+  };
+  file_only(setup.wheel_read, setup.wheel_file, "wheel");
+  file_only(setup.rail_read, setup.rail_file, "rail");
   check_wheelset_dimensions(setup);
   const double cant_rad = parse_cant_rad(setup.cant);  // validated even where it does not apply
   using profile::ProfileRole;
@@ -296,8 +311,20 @@ RigidContact build_contact(const ContactSetup& setup, std::vector<std::string>& 
     rail = naming_file(setup.rail_file,
                        [&] { return smooth_profile(rail, setup.smooth_half_window_mm); });
   }
+  constexpr double kCantedFrom_rad = 1.0 / 80.0;
+  if (!builtin && setup.rail_frame == "track" && file_inclination_rad &&
+      std::abs(*file_inclination_rad) < kCantedFrom_rad) {
+    char gauge[32];
+    std::snprintf(gauge, sizeof gauge, "%.1f",
+                  naming_file(setup.rail_file, [&] { return track_frame_gauge_mm(rail); }));
+    warnings.push_back(setup.rail_file +
+                       ": --rail-frame track, but the rail head stands upright in the file (no "
+                       "inclination; its gauge point gives a gauge of " +
+                       gauge +
+                       " mm): if the file is in the rail's own frame, --rail-frame upright places "
+                       "it by --cant and --gauge");
+  }
   if (!builtin && setup.rail_frame == "upright") {
-    constexpr double kCantedFrom_rad = 1.0 / 80.0;
     if (file_inclination_rad && *file_inclination_rad >= kCantedFrom_rad && cant_rad > 0.0) {
       warnings.push_back(setup.rail_file + ": the rail is inclined by " +
                          one_in(*file_inclination_rad) + " in its file already, and --cant " +
@@ -334,12 +361,24 @@ RigidContact build_contact(const ContactSetup& setup, std::vector<std::string>& 
   constexpr double kFlangeContact_rad = 0.5;
   const ContactState centred = contact.at(0.0);
   if (centred.left.gamma_rad > kFlangeContact_rad && centred.right.gamma_rad > kFlangeContact_rad) {
-    char text[256];
-    std::snprintf(text, sizeof text,
-                  "--b2b %g mm, --gauge %g mm: both flanges touch their rails with the wheelset "
-                  "centred (contact angles %.2f and %.2f rad): the wheelset has no lateral play",
-                  setup.back_to_back_mm, setup.gauge_mm, centred.left.gamma_rad,
-                  centred.right.gamma_rad);
+    char text[512];
+    if (setup.rail_frame == "track") {
+      // --gauge does not place these rails: the file does.
+      std::snprintf(text, sizeof text,
+                    "--b2b %g mm on the rails of a track-frame file (its gauge point gives a "
+                    "gauge of %.1f mm): both flanges touch their rails with the wheelset centred "
+                    "(contact angles %.2f and %.2f rad): no lateral play; if the file is in the "
+                    "rail's own upright frame, --rail-frame upright places it by --cant and "
+                    "--gauge",
+                    setup.back_to_back_mm, track_frame_gauge_mm(rail), centred.left.gamma_rad,
+                    centred.right.gamma_rad);
+    } else {
+      std::snprintf(text, sizeof text,
+                    "--b2b %g mm, --gauge %g mm: both flanges touch their rails with the wheelset "
+                    "centred (contact angles %.2f and %.2f rad): the wheelset has no lateral play",
+                    setup.back_to_back_mm, setup.gauge_mm, centred.left.gamma_rad,
+                    centred.right.gamma_rad);
+    }
     throw std::invalid_argument((files.empty() ? "" : files + ": ") + text);
   }
   return contact;

@@ -239,6 +239,43 @@ TEST(ContactCommand, BadInputFailsWithAMessage) {
   EXPECT_NE(run("contact " + en15302_args() + " --cant 1:x", tmp_dir() / "bad.out", err), 0);
 }
 
+// How to read a file, given with a built-in profile, applies to nothing: an error (was ignored).
+// An upright rail file given as --rail-frame track (the gauge and cant are then the file's) is
+// said: refused with the file's gauge when no play is left, warned about when some is.
+TEST(ContactCommand, FileReadingOptionsNeedTheirFileAndTheFrameIsChecked) {
+  const fs::path err = tmp_dir() / "frame.log";
+  const fs::path out = tmp_dir() / "frame.out";
+  EXPECT_NE(run("contact --wheel S1002 --rail 60E1 --rail-z-down", out, err), 0);
+  EXPECT_NE(text_of(err).find("--rail-z-down applies to --rail-file only"), std::string::npos)
+      << text_of(err);
+  EXPECT_NE(run("conicity --wheel S1002 --wheel-mirror-y --rail 60E1", out, err), 0);
+  EXPECT_NE(text_of(err).find("--wheel-mirror-y applies to --wheel-file only"), std::string::npos)
+      << text_of(err);
+  const std::string upright =
+      tread::testing::test_data("profiles/uic60_upright_clean.csv").string();
+  EXPECT_NE(run("contact --wheel S1002 --rail-file " + upright + " --rail-frame track", out, err),
+            0);
+  EXPECT_NE(text_of(err).find("--b2b 1360 mm on the rails of a track-frame file (its gauge point "
+                              "gives a gauge of 1413.1 mm)"),
+            std::string::npos)
+      << text_of(err);
+  EXPECT_NE(text_of(err).find("--rail-frame upright places it by --cant and --gauge"),
+            std::string::npos);
+  EXPECT_EQ(run("contact --wheel S1002 --rail-file " + upright + " --rail-frame track --b2b 1330",
+                out, err),
+            0);
+  EXPECT_NE(text_of(err).find("--rail-frame track, but the rail head stands upright in the file"),
+            std::string::npos)
+      << text_of(err);
+  // The EN 15302 rail A, in the track frame at 1:40, reads without that warning.
+  EXPECT_EQ(
+      run("contact --wheel S1002 --rail-file " +
+              tread::testing::test_data("rail/en15302/RailA.csv").string() + " --rail-frame track",
+          out, err),
+      0);
+  EXPECT_EQ(text_of(err).find("stands upright"), std::string::npos) << text_of(err);
+}
+
 // The built-in S1002 (profile construction) and the Manchester benchmark's S1002 file (SIMPACK
 // reader, points every ~0.39 mm) on the built-in 60E1 at 1:40 give the same equivalent conicity.
 // (delta r itself differs by up to a few 0.01 mm next to the contact jumps: S1002 on 60E1 1:40 is
