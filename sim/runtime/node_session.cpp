@@ -209,7 +209,10 @@ void print_report(std::ostream& out, const SessionReport& r, bool timing) {
         << " (frames the kernel dropped for a full receive queue, SO_RXQ_OVFL; buffer "
         << r.receive_buffer_bytes << " bytes)\n";
   }
-  out << "frames sent       " << c.tx_frames << " (send refused " << r.loop.tx_failed << ")\n";
+  // Sent: what went onto the bus; the node computed the refused ones too (and --log records
+  // every computed frame, so that a replay reproduces the node, refused sends included).
+  out << "frames sent       " << c.tx_frames - std::min(c.tx_frames, r.loop.tx_failed)
+      << " (computed " << c.tx_frames << ", send refused " << r.loop.tx_failed << ")\n";
   out << "stale / clamped   " << c.stale_events << " / " << c.clamp_events << " channel-cycles\n";
   out << "outputs saturated " << c.saturated_outputs
       << " frames (a value beyond its signal's range, sent at the limit), not finite "

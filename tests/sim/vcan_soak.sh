@@ -249,12 +249,12 @@ awk -v tx=$((tx1 - tx0)) -v dropped=$injected_dropped -v backlog=$((drop1 - drop
   /^frames received/ { gsub(/[(),]/, " "); rx = $3; acc = $5; ign = $7; errf = $10 }
   /^frames rejected/ { gsub(/[(),]/, " "); rej = $3; crc = $6; cnt = $9; len = $12 }
   /^rx queue overflow/ { ovfl = $4 }
-  /^frames sent/ { gsub(/[(),]/, " "); sent = $3; refused = $6 }
+  /^frames sent/ { gsub(/[(),]/, " "); sent = $3; refused = $8 }
   /^cycles/ { cycles = $2 }
   /^overruns/ { overruns = $2 }
   END {
     bad = 0
-    node_tx = sent - refused
+    node_tx = sent  # what reached the bus (the refused sends are not in it)
     # A frame the kernel dropped from its receive backlog (netdev_max_backlog, during the flood)
     # is off by one either way: it reached no socket (the sum falls short), or, as a run on
     # 2026-11-26 showed (sum = bus + 9 with 9 backlog drops, the flood being the injected frames
