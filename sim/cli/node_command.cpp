@@ -58,7 +58,9 @@ void add_node_command(CLI::App& app) {
       ->check(CLI::Range(0, 99));
   cmd->add_flag("--mlock", live.realtime.lock_memory, "lock all memory (mlockall)");
   cmd->add_option("--cpu", live.realtime.cpu, "pin the loop to this CPU");
-  cmd->add_option("--log", live.log, "candump log of every frame received and computed (a send the bus refused too: replayable)");
+  cmd->add_option("--log", live.log,
+                  "candump log of every frame received and computed (refused sends too): "
+                  "replayable");
   cmd->add_option("--replay", replay,
                   "replay a candump log written by --log instead of running live");
   cmd->add_option("--clock", clock, "posix (live) or sim (replay)")
