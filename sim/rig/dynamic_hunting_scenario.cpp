@@ -137,6 +137,7 @@ void DynamicHuntingScenario::advance(const proto::RigData& /*inputs_seen*/,
   }
   // A stale or flagged answer carries no forces: hold the last ones rather than drop them.
   const bool fresh = answers.rail_wheels[0].status == 0U && answers.rail_wheels[1].status == 0U;
+  if (!fresh) ++current_.held_answers;
   if (fresh) {
     answer_[0] = answers.rail_wheels[0];
     answer_[1] = answers.rail_wheels[1];
@@ -425,12 +426,19 @@ std::vector<ScenarioMetric> DynamicHuntingScenario::metrics() const {
         m.push_back({"max_y_over_q", std::nan(""), "-", none});
         m.push_back({"min_nadal_margin", std::nan(""), "-", none});
       } else {
-        m.push_back({"max_y_over_q", r.max_y_over_q, "-", "in the limit cycle"});
+        // Flagged answers (stale, or a value beyond its signal's range) are held, not measured:
+        // how many, so that a limit cycle whose peaks were flagged is not read as measured.
+        const std::string held = r.held_answers == 0
+                                     ? ""
+                                     : "; " + std::to_string(r.held_answers) +
+                                           " cycles' answers flagged (stale, saturated): not in it";
+        m.push_back({"max_y_over_q", r.max_y_over_q, "-", "in the limit cycle" + held});
         m.push_back(
             {"min_nadal_margin", r.min_nadal_margin, "-",
-             r.min_nadal_margin < 0.0
-                 ? "Nadal's limit minus Y/Q: BELOW 0, beyond Nadal's limit (flange climbing)"
-                 : "Nadal's limit minus Y/Q"});
+             (r.min_nadal_margin < 0.0
+                  ? "Nadal's limit minus Y/Q: BELOW 0, beyond Nadal's limit (flange climbing)"
+                  : "Nadal's limit minus Y/Q") +
+                 held});
       }
     }
   }

@@ -68,6 +68,7 @@ class DynamicHuntingScenario final : public RigScenario {
     double max_y_over_q{0.0};
     double min_nadal_margin{0.0};
     bool answered{false};  ///< at least one answer without a status flag (else Y/Q is not known)
+    std::size_t held_answers{0};  ///< cycles whose answer was flagged (the last fresh one held)
   };
   [[nodiscard]] const std::vector<Run>& runs() const { return runs_; }
   [[nodiscard]] double critical_speed() const { return critical_; }
