@@ -1,5 +1,8 @@
 #include "plot/gnuplot.hpp"
 
+#include <sys/wait.h>
+
+#include <csignal>
 #include <cstdarg>
 #include <cstdio>
 #include <filesystem>
@@ -8,14 +11,30 @@
 namespace tread::host {
 
 void run_gnuplot(const std::string& script, const std::string& what) {
-  FILE* pipe = popen("gnuplot 2>&1", "w");
+  // gnuplot's messages go to tread's stderr; its standard output, where it writes the image when
+  // `set output` could not open the file, goes nowhere (it was dumped onto tread's stdout).
+  // SIGPIPE is ignored while the script is written: a gnuplot that is missing or exits early
+  // killed tread (exit 141) instead of giving this error.
+  struct sigaction ignore {};
+  ignore.sa_handler = SIG_IGN;
+  struct sigaction previous {};
+  sigaction(SIGPIPE, &ignore, &previous);
+  FILE* pipe = popen("exec gnuplot >/dev/null", "w");
   if (pipe == nullptr) {
+    sigaction(SIGPIPE, &previous, nullptr);
     throw std::runtime_error(what + ": cannot start gnuplot (scripts/install-deps.sh installs it)");
   }
   std::fwrite(script.data(), 1, script.size(), pipe);
   const int status = pclose(pipe);
+  sigaction(SIGPIPE, &previous, nullptr);
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 127) {
+    throw std::runtime_error(what +
+                             ": gnuplot is not installed, or not on PATH "
+                             "(scripts/install-deps.sh installs it)");
+  }
   if (status != 0) {
-    throw std::runtime_error(what + ": gnuplot failed (status " + std::to_string(status) + ")");
+    throw std::runtime_error(what + ": gnuplot failed (status " + std::to_string(status) +
+                             "; its message is above)");
   }
 }
 
