@@ -3,8 +3,10 @@
 // bad input must fail with file:line and a non-zero exit status.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
 #include <cmath>
 #include <cstdlib>
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -302,6 +304,23 @@ TEST(MfCommand, PlotWritesPngAndSvg) {
   EXPECT_NE(run("mf plot --tir " + tir.string() + " --output " + (dir / "x.jpg").string(),
                 dir / "plot_bad.txt"),
             0);
+  // An output gnuplot cannot open: an error, and the image is not dumped onto stdout.
+  write(dir / "afile", "");
+  const std::string into_file = "mf plot --tir " + tir.string() + " --output " +
+                                (dir / "afile" / "x.png").string() + " > " +
+                                (dir / "plot_stdout.txt").string();
+  EXPECT_NE(run(into_file, dir / "plot_nodir.txt"), 0);
+  EXPECT_NE(slurp(dir / "plot_nodir.txt").find("gnuplot failed"), std::string::npos);
+  EXPECT_EQ(slurp(dir / "plot_stdout.txt").find("PNG"), std::string::npos);
+  // No gnuplot on PATH: said, not a death by SIGPIPE (exit 141).
+  const int status = std::system(("env PATH=/nonexistent " + std::string(TREAD_CLI) +
+                                  " mf plot --tir " + tir.string() + " --output " + png.string() +
+                                  " 2> " + (dir / "plot_nognuplot.txt").string())
+                                     .c_str());
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1) << status;
+  EXPECT_NE(slurp(dir / "plot_nognuplot.txt").find("gnuplot is not installed, or not on PATH"),
+            std::string::npos)
+      << slurp(dir / "plot_nognuplot.txt");
 }
 
 void write(const std::filesystem::path& path, const std::string& text) {
