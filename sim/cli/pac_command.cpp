@@ -65,6 +65,9 @@ tir::PacCoefficients load_pac(const std::string& json, const std::string& tir_pa
   }
   if (!coeff.note.empty())
     std::cerr << command << ": note: " << source << ": " << coeff.note << '\n';
+  for (const std::string& w : coeff.warnings) {
+    std::cerr << command << ": warning: " << source << ": " << w << '\n';
+  }
   return coeff;
 }
 

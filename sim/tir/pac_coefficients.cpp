@@ -1,6 +1,7 @@
 #include "tir/pac_coefficients.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <fstream>
@@ -88,6 +89,42 @@ void read_limits(const TirFile& file, PacCoefficients& out) {
   }
 }
 
+// The peak factors D of Fx, Fy and Mz are Fz·(k1·Fz + k2) (Fz in kN): where k1 and k2 differ in
+// sign, D changes sign at Fz = −k2/k1, and above it the curve is the mirror image of the one
+// below (a driving slip giving a braking force, under ok). The load limit is brought down to the
+// lowest such Fz, so that rows above it are clamped and said out of range; warned about.
+void limit_load_to_unchanged_peaks(PacCoefficients& out) {
+  const pac::PacParams<double>& p = out.params;
+  struct Peak {
+    const char* output;
+    const char* keys;
+    double k1, k2;
+  };
+  const std::array<Peak, 3> peaks{{{"Fx", "B1, B2", p.b[1], p.b[2]},
+                                   {"Fy", "A1, A2", p.a[1], p.a[2]},
+                                   {"Mz", "C1, C2", p.c[1], p.c[2]}}};
+  const Peak* first = nullptr;
+  double lowest_n = out.params.fz_max_n;
+  for (const Peak& k : peaks) {
+    if (!(k.k1 * k.k2 < 0.0)) continue;
+    const double fz_n = -k.k2 / k.k1 * 1000.0;
+    if (fz_n < lowest_n) {
+      lowest_n = fz_n;
+      first = &k;
+    }
+  }
+  if (first == nullptr) return;
+  std::ostringstream m;
+  m.precision(6);
+  m << "the peak of " << first->output << " changes sign at Fz = " << lowest_n << " N ("
+    << first->keys << ": D = Fz·(" << first->k1 << "·Fz + " << first->k2
+    << "), Fz in kN), below the load limit " << out.params.fz_max_n << " N"
+    << (out.params.fz_max_n >= 100000.0 ? " (the file gives no FZMAX)" : "")
+    << ": loads above it are clamped to it and said out of range";
+  out.warnings.push_back(m.str());
+  out.params.fz_max_n = lowest_n;
+}
+
 }  // namespace
 
 PacCoefficients pac_from_tir(const TirFile& file) {
@@ -119,6 +156,7 @@ PacCoefficients pac_from_tir(const TirFile& file) {
   out.params.rolling_resistance = optional_any(file, "ROLLING_RESISTANCE", out.missing);
   out.params.lateral_stiffness_npm = optional_any(file, "LATERAL_STIFFNESS", out.missing);
   read_limits(file, out);
+  limit_load_to_unchanged_peaks(out);
   if (const auto side = file.text_any("TYRESIDE")) {
     for (const char c : *side)
       out.tyreside += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -151,6 +189,9 @@ PacCoefficients pac_from_chrono_json(const std::filesystem::path& path) {
     const auto line =
         1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(upto), '\n');
     throw TirError(origin, static_cast<int>(line), std::string("JSON: ") + e.what());
+  } catch (const nlohmann::json::exception& e) {
+    // e.g. a number beyond double's range (1e999): no position given
+    throw TirError(origin, 0, std::string("JSON: ") + e.what());
   }
   PacCoefficients out;
   auto read_obj = [&](const char* object, char letter, auto& arr) {
@@ -175,8 +216,11 @@ PacCoefficients pac_from_chrono_json(const std::filesystem::path& path) {
   read_obj("Longitudinal Coefficients", 'b', out.params.b);
   read_obj("Aligning Coefficients", 'c', out.params.c);
   auto design = [&](const char* key) {
-    if (j.contains("Design Parameters") && j["Design Parameters"].contains(key) &&
-        j["Design Parameters"][key].is_number()) {
+    if (j.contains("Design Parameters") && j["Design Parameters"].contains(key)) {
+      if (!j["Design Parameters"][key].is_number()) {
+        // A value written as a string ("261065") was taken as missing: 0 under ok.
+        throw TirError(origin, 0, std::string("Design Parameters.") + key + " is not a number");
+      }
       return j["Design Parameters"][key].get<double>();
     }
     out.missing.push_back(std::string("Design Parameters.") + key);
@@ -185,6 +229,7 @@ PacCoefficients pac_from_chrono_json(const std::filesystem::path& path) {
   out.params.unloaded_radius_m = design("Unloaded Radius");
   out.params.rolling_resistance = design("Rolling Resistance");
   out.params.lateral_stiffness_npm = design("Lateral Stiffness");
+  limit_load_to_unchanged_peaks(out);
   return out;
 }
 

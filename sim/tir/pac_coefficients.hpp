@@ -28,6 +28,9 @@ struct PacCoefficients {
   /// The .tir says PAC94 (PROPERTY_FILE_FORMAT, or without it a nonzero A14…/B11…/C18…).
   bool pac94 = false;
   std::string note;  ///< how the model was decided, where the file does not say (else empty)
+  /// What the coefficients do that the user should know: the load limit brought down to where a
+  /// peak factor changes sign.
+  std::vector<std::string> warnings;
   /// TYRESIDE from the .tir in upper case ('LEFT', 'RIGHT', 'SYMMETRIC'), empty if absent; apply
   /// pac::mirror_pac89/mirror_pac94 (pac/pac_mirror.hpp) for a tyre on the other side.
   std::string tyreside;

@@ -67,6 +67,11 @@ std::string tir_info_report(const std::filesystem::path& path) {
     out << "coefficients: "
         << pac.params.a.size() + pac.params.b.size() + pac.params.c.size() - pac.missing.size()
         << " given, " << pac.missing.size() << " taken as 0\n";
+    out << "load limit: " << num(pac.params.fz_max_n) << " N\n";
+    out << "warnings:";
+    if (pac.warnings.empty()) out << " none";
+    out << '\n';
+    for (const std::string& w : pac.warnings) out << "  " << w << '\n';
     out << "evaluate with: tread pac eval --tir " << path.string() << '\n';
     return out.str();
   }

@@ -5,10 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "golden_path.hpp"
 #include "pac/pac89.hpp"
+#include "test_dir.hpp"
 #include "tir/pac_coefficients.hpp"
 
 namespace tread::tir {
@@ -95,8 +98,15 @@ TEST(TirModel, PacWithoutFormatIsPac94OnlyWithANonzeroPac94Coefficient) {
 // The file's own limits: inputs beyond FZMAX, KPUMIN…KPUMAX, ALPMIN…ALPMAX, CAMMIN…CAMMAX are
 // clamped (`out of range`), in its units; an asymmetric range takes its smaller side, said.
 TEST(TirModel, PacFileLimitsAreApplied) {
+  // No FZMAX: the core's default 100 kN, brought down to where a peak factor changes sign (this
+  // is the HMMWV tyre's: D of Fx = Fz·(B1·Fz + B2) is 0 at 64.8 kN and negative above).
   const PacCoefficients none = pac_from_tir(read_tyre_property_file(variant("pac89_header.tir")));
-  EXPECT_DOUBLE_EQ(none.params.fz_max_n, 100000.0);  // the core's default
+  EXPECT_NEAR(none.params.fz_max_n, 64788.5, 0.1);
+  ASSERT_EQ(none.warnings.size(), 1U);
+  EXPECT_NE(none.warnings[0].find("the peak of Fx changes sign at Fz = 64788.5 N (B1, B2"),
+            std::string::npos)
+      << none.warnings[0];
+  EXPECT_NE(none.warnings[0].find("(the file gives no FZMAX)"), std::string::npos);
   TirFile f = read_tyre_property_file(variant("pac89_header.tir"));
   f.set("VERTICAL_FORCE_RANGE", "FZMAX", 25000.0);
   f.set("LONG_SLIP_RANGE", "KPUMIN", -0.5);
@@ -144,6 +154,37 @@ TEST(TirModel, PacLoaderRoutesAndRefuses) {
     // The line of the PROPERTY_FILE_FORMAT that made it a PAC file.
     EXPECT_EQ(std::string(e.what()).rfind("e.tir:2: no PAC coefficients", 0), 0U) << e.what();
   }
+}
+
+// A Chrono JSON whose design value is written as a string, or whose number overflows double, is
+// refused naming the file and key (the string was taken as missing: Mx = 0 under ok; the overflow
+// gave nlohmann's message without the file).
+TEST(TirModel, ChronoJsonValuesThatAreNotNumbersAreRefused) {
+  std::ifstream in(tread::testing::test_data("tyres/chrono_HMMWV_Pac89Tire.json"));
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string original = text.str();
+  const auto dir = tread::testing::test_dir("tir_model_json");
+  const auto error_of = [&](const std::string& from, const std::string& to) {
+    std::string edited = original;
+    const std::size_t at = edited.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    edited.replace(at, from.size(), to);
+    const auto path = dir / "edited.json";
+    std::ofstream(path) << edited;
+    try {
+      (void)pac_from_chrono_json(path);
+    } catch (const TirError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(
+      error_of("\"Unloaded Radius\": 0.464", "\"Unloaded Radius\": \"0.464\""),
+      (dir / "edited.json").string() + ":0: Design Parameters.Unloaded Radius is not a number");
+  EXPECT_NE(error_of("\"Unloaded Radius\": 0.464", "\"Unloaded Radius\": 1e999")
+                .find((dir / "edited.json").string() + ":0: JSON: "),
+            std::string::npos);
 }
 
 }  // namespace
