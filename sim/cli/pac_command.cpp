@@ -1,7 +1,9 @@
 // `tread pac plot`: draw PAC89/PAC94 curves (Fx(κ), Fy(α), Mz(α) at several loads, combined-slip
 // envelope) from a Chrono JSON coefficient file or an Adams .tir file, to PNG or SVG via gnuplot.
 // `tread pac eval`: evaluate them on a CSV of inputs. Both in ISO-W axes by default, as `tread mf`.
+#include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -10,6 +12,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "io/option_checks.hpp"
 #include "io/table_streams.hpp"
 #include "plot/gnuplot.hpp"
 #include "tir/pac_coefficients.hpp"
@@ -116,7 +119,11 @@ void add_pac_command(CLI::App& app) {
   plot->add_option("--model", opt.model, "89 or 94 (default: what the .tir declares, else 89)")
       ->check(CLI::IsMember({89, 94}))
       ->capture_default_str();
-  plot->add_option("--loads", opt.loads, "wheel loads in N")->capture_default_str();
+  plot->add_option("--loads", opt.loads,
+                   "wheel loads in N (default: 2000, 4000, 6000, 10000 N, or a quarter, half, "
+                   "three quarters and all of the tyre's load limit where that is lower)")
+      ->delimiter(',')
+      ->check(host::finite_within(1.0, 1e7, "a wheel load in N"));
   plot->add_option("--output,-o", opt.output, ".png or .svg")->capture_default_str();
   plot->add_option("--axes", opt.axes, "iso-w (default, as tread mf plot) or model")
       ->check(CLI::IsMember({"iso-w", "model"}))
@@ -127,6 +134,21 @@ void add_pac_command(CLI::App& app) {
     tir::PacPlotOptions po;
     po.model = model;
     po.loads_n = opt.loads;
+    const double limit = coeff.params.fz_max_n;
+    if (plot->count("--loads") == 0 &&
+        std::any_of(po.loads_n.begin(), po.loads_n.end(), [&](double f) { return f > limit; })) {
+      // The defaults are for a car tyre: a tyre with a lower limit gets its own range.
+      po.loads_n.clear();
+      for (const double share : {0.25, 0.5, 0.75, 1.0}) {
+        po.loads_n.push_back(std::round(share * limit / 10.0) * 10.0);
+      }
+    }
+    for (const double f : po.loads_n) {
+      if (f > limit) {
+        std::cerr << "tread pac plot: warning: Fz = " << f << " N lies above the tyre's load limit "
+                  << limit << " N: its curves are drawn at the limit\n";
+      }
+    }
     po.iso_w = opt.axes == "iso-w";
     po.title = (model == tir::PacModel::kPac94 ? "PAC94 " : "PAC89 ") +
                std::filesystem::path(opt.json.empty() ? opt.tir : opt.json).filename().string();

@@ -1,5 +1,6 @@
 #include "tir/pac_plot.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 #include <stdexcept>
@@ -33,6 +34,21 @@ std::string quoted(const std::string& s) {
 std::string pac_plot_script(const pac::PacParams<double>& p, const PacPlotOptions& o,
                             const std::filesystem::path& output) {
   if (o.points < 2 || o.loads_n.empty()) throw std::invalid_argument("pac plot: nothing to plot");
+  for (const double fz : o.loads_n) {
+    if (!(fz > 0.0 && fz <= 1e7)) {
+      throw std::invalid_argument("pac plot: a load of " + std::to_string(fz) +
+                                  " N: loads are numbers above 0 (N)");
+    }
+  }
+  // A load above the limit is evaluated at the limit (the core clamps): its legend says so.
+  const auto label = [&](double fz) {
+    std::string t = "Fz = " + std::to_string(static_cast<long>(std::lround(fz))) + " N";
+    if (fz > p.fz_max_n) {
+      t += " (at the load limit " + std::to_string(static_cast<long>(std::lround(p.fz_max_n))) +
+           " N)";
+    }
+    return t;
+  };
   std::ostringstream s;
   s.precision(10);
   const std::string ext = output.extension().string();
@@ -77,7 +93,7 @@ std::string pac_plot_script(const pac::PacParams<double>& p, const PacPlotOption
     s << "plot ";
     for (std::size_t l = 0; l < o.loads_n.size(); ++l) {
       s << (l ? ", " : "") << "$L" << l << " using " << cols << " with lines title "
-        << quoted("Fz = " + std::to_string(static_cast<int>(o.loads_n[l])) + " N");
+        << quoted(label(o.loads_n[l]));
     }
     s << "\n";
     (void)what;
@@ -88,9 +104,7 @@ std::string pac_plot_script(const pac::PacParams<double>& p, const PacPlotOption
   curves("3:4", "fy");
   s << "set title 'Mz(α)'\nset xlabel 'α [deg]'\nset ylabel 'Mz [N m]'\n";
   curves("3:5", "mz");
-  s << "set title "
-    << quoted("combined slip, Fz = " + std::to_string(static_cast<int>(o.loads_n[0])) +
-              " N, κ −0.5…0.5")
+  s << "set title " << quoted("combined slip, " + label(o.loads_n[0]) + ", κ −0.5…0.5")
     << "\nset xlabel 'Fx [N]'\nset ylabel 'Fy [N]'\nplot ";
   for (std::size_t j = 0; j < 4; ++j) {
     s << (j ? ", " : "") << "$C" << j

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -53,6 +54,24 @@ TEST(PacPlot, ScriptHasOneBlockPerLoadWithAllSamples) {
   EXPECT_EQ(rows, 11 * (2 + 4));
   EXPECT_NE(script.find("pngcairo"), std::string::npos);
   EXPECT_THROW((void)tread::tir::pac_plot_script(hmmwv(), o, "x.jpg"), std::invalid_argument);
+}
+
+// A load above the tyre's limit is drawn at the limit (the core clamps): its legend says so, where
+// it said "Fz = 10000 N" over the 6000 N curve. A load that is not a positive number is refused
+// (NaN became "Fz = -2147483648 N").
+TEST(PacPlot, LegendSaysWhereALoadIsDrawnAtTheLimit) {
+  tread::pac::PacParams<double> p = hmmwv();
+  p.fz_max_n = 6000.0;
+  tread::tir::PacPlotOptions o;
+  o.loads_n = {3000.0, 10000.0};
+  o.points = 3;
+  const std::string script = tread::tir::pac_plot_script(p, o, "x.svg");
+  EXPECT_NE(script.find("'Fz = 3000 N'"), std::string::npos);
+  EXPECT_NE(script.find("'Fz = 10000 N (at the load limit 6000 N)'"), std::string::npos);
+  for (const double bad : {0.0, -4000.0, std::nan("")}) {
+    o.loads_n = {bad};
+    EXPECT_THROW((void)tread::tir::pac_plot_script(p, o, "x.svg"), std::invalid_argument) << bad;
+  }
 }
 
 TEST(PacPlot, GnuplotWritesPngAndSvg) {
