@@ -372,6 +372,7 @@ TirFile parse_tir(std::string_view text, const std::string& origin) {
     std::string section;  // lower-cased
     std::string key;      // lower-cased
     int line;
+    std::string section_name;  // as written
   };
   std::vector<Seen> seen;
   auto lowered = [](std::string_view s) {
@@ -451,7 +452,18 @@ TirFile parse_tir(std::string_view text, const std::string& origin) {
                    std::to_string(s.line) + ")");
         }
       }
-      seen.push_back({sec, key, line_no});
+      for (const auto& s : seen) {
+        // The same key in another section: a lookup by key alone (FNOMIN, UNLOADED_RADIUS, ...)
+        // takes the first; said, as the two may differ.
+        // [UNITS] names a unit per quantity (MASS = 'kg' beside [INERTIA] MASS): not a value.
+        if (s.key == key && s.section != sec && s.section != "units" && sec != "units") {
+          file.add_warning(origin + ":" + std::to_string(line_no) + ": '" + l.entry.key +
+                           "' is also in [" + s.section_name + "] (line " + std::to_string(s.line) +
+                           "): the first, line " + std::to_string(s.line) + ", is the one used");
+          break;
+        }
+      }
+      seen.push_back({sec, key, line_no, current->name});
     } else {
       l.kind = Line::Kind::kTableRow;
       if (current == nullptr) {

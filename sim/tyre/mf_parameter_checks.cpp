@@ -104,6 +104,42 @@ void check_mf_parameters(const mf::MfParameters<double>& p, const tir::TirFile& 
     warn(warning, file, "VXLOW",
          "VXLOW = " + value_text(p.vxlow_mps) + ": no low-speed smoothing of the slips");
   }
+  // A slip range that excludes 0: every figure at zero slip (stiffnesses, the trail, the peaks'
+  // search from 0) would be taken at the range's end instead, and said as if at 0.
+  const auto contains_zero = [&](const char* min_key, double min, const char* max_key, double max) {
+    if (min > 0.0 || max < 0.0) {
+      const bool min_off = min > 0.0;
+      fail(file, min_off ? min_key : max_key,
+           std::string(min_key) + "…" + max_key + " = " + value_text(min) + "…" + value_text(max) +
+               " does not contain 0 (zero slip would be evaluated at " +
+               value_text(min_off ? min : max) + ")");
+    }
+  };
+  contains_zero("KPUMIN", p.kpumin, "KPUMAX", p.kpumax);
+  contains_zero("ALPMIN", p.alpmin_rad, "ALPMAX", p.alpmax_rad);
+  if (p.cammin_rad > 0.0 || p.cammax_rad < 0.0) {
+    warn(warning, file, p.cammin_rad > 0.0 ? "CAMMIN" : "CAMMAX",
+         "CAMMIN…CAMMAX = " + value_text(p.cammin_rad) + "…" + value_text(p.cammax_rad) +
+             " rad does not contain 0: γ = 0 is evaluated at the range's end");
+  }
+  // Values no tyre has, in SI after the [UNITS] conversion: a unit the section names wrongly
+  // (LENGTH = 'mm' on a file in metres gave R0 = 0.39 mm without a word).
+  const auto plausible = [&](const char* key, double v, double lo, double hi, const char* unit,
+                             const char* what) {
+    if (file.find_any(key) != nullptr && (v < lo || v > hi)) {
+      warn(warning, file, key,
+           std::string(key) + " = " + value_text(v) + " " + unit + " in SI: " + what +
+               " lies within " + value_text(lo) + "…" + value_text(hi) + " " + unit +
+               "; is the [UNITS] section right?");
+    }
+  };
+  plausible("UNLOADED_RADIUS", p.unloaded_radius_m, 0.1, 2.5, "m", "a tyre's free radius");
+  plausible("FNOMIN", p.fnomin_n, 50.0, 1e6, "N", "a tyre's nominal load");
+  plausible("LONGVL", p.longvl_mps, 0.5, 150.0, "m/s", "a measuring speed");
+  if (p.fit_type == mf::FitType::mf61 || p.fit_type == mf::FitType::mf62) {
+    plausible("NOMPRES", p.nompres_pa, 2e4, 3e6, "Pa", "a tyre's nominal pressure");
+    plausible("WIDTH", p.width_m, 0.02, 2.0, "m", "a tyre's width");
+  }
   if (p.fnomin_n < p.fzmin_n || p.fnomin_n > p.fzmax_n) {
     warn(warning, file, "FNOMIN",
          "FNOMIN = " + value_text(p.fnomin_n) + " lies outside FZMIN…FZMAX (" +

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <sstream>
 
 #include "golden_path.hpp"
 #include "mf/mf_evaluate.hpp"
@@ -29,6 +31,39 @@ TEST(MfParametersFromTir, ReadsValuesAndListsMissingKeys) {
   EXPECT_TRUE(r.missing.empty()) << r.warning;
   EXPECT_TRUE(r.warning.empty()) << r.warning;
   EXPECT_EQ(r.model, "MF 6.1");
+}
+
+// From an audit with edited files, each read before without a word: a slip-angle range that
+// excludes 0 (tir info's "pure slip" figures were taken at 28.6 degrees), a [UNITS] section that
+// names the wrong unit (R0 = 0.39 mm), a key in two sections (the first silently won).
+TEST(MfParametersFromTir, RangesWithoutZeroUnitsOffByFactorsAndKeysTwiceAreSaid) {
+  std::ifstream in(testing::tyre_file("MagicFormula61_Parameters.tir"));
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string original = buffer.str();
+  const auto edited = [&](const std::string& from, const std::string& to) {
+    std::string text = original;
+    const std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+    return tir::parse_tir(text, "e.tir");
+  };
+  try {
+    (void)tyre::mf_parameters_from_tir(edited("ALPMIN", "ALPMIN = 0.5\nALPMIN_WAS"));
+    ADD_FAILURE() << "ALPMIN = 0.5 accepted";
+  } catch (const tir::TirError& e) {
+    EXPECT_NE(std::string(e.what()).find("ALPMIN…ALPMAX = 0.5…"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("does not contain 0"), std::string::npos) << e.what();
+  }
+  const tyre::MfTirParameters mm = tyre::mf_parameters_from_tir(
+      edited("LENGTH                   = 'meter'", "LENGTH                   = 'mm'"));
+  EXPECT_NE(mm.warning.find("UNLOADED_RADIUS = 0.0003"), std::string::npos) << mm.warning;
+  EXPECT_NE(mm.warning.find("is the [UNITS] section right?"), std::string::npos) << mm.warning;
+  const tyre::MfTirParameters twice =
+      tyre::mf_parameters_from_tir(edited("[DIMENSION]", "[DIMENSION]\nFNOMIN = 3000"));
+  EXPECT_DOUBLE_EQ(twice.params.fnomin_n, 3000.0);
+  EXPECT_NE(twice.warning.find("'FNOMIN' is also in [DIMENSION]"), std::string::npos)
+      << twice.warning;
 }
 
 TEST(MfParametersFromTir, CompleteMf62FileReportsNoMissingKeys) {
