@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "io/option_checks.hpp"
 #include "io/progress_bar.hpp"
 #include "io/table_streams.hpp"
 #include "mf/mf_options.hpp"
@@ -176,10 +177,24 @@ void run_mf_plot(const MfPlotArgs& args) {
                 << " N lies above the tyre's load range: its curves are drawn at " << bound
                 << " (--mode 2xx evaluates beyond it)\n";
     }
+    if (fz < loaded.params.fzmin_n) {
+      // Not clamped (MFeval limits only FZMAX), but outside what the tyre was fitted on: a load
+      // typed in kN lands here.
+      std::cerr << "tread mf plot: warning: " << args.tir << ": Fz = " << fz
+                << " N lies below the tyre's load range (FZMIN " << loaded.params.fzmin_n
+                << " N): its curves are an extrapolation\n";
+    }
+  }
+  if (args.vx_mps < loaded.params.vxlow_mps) {
+    std::cerr << "tread mf plot: warning: " << args.tir << ": --vx " << args.vx_mps
+              << " m/s is below VXLOW (" << loaded.params.vxlow_mps
+              << " m/s), where the slips are smoothed toward 0\n";
   }
   plot.vx_mps = args.vx_mps;
+  std::ostringstream speed;
+  speed << args.vx_mps;
   plot.title = std::filesystem::path(args.tir).filename().string() + " (useMode " +
-               std::to_string(args.mode) + ", ISO-W)";
+               std::to_string(args.mode) + ", Vx " + speed.str() + " m/s, ISO-W)";
   for (const auto& out : {png, svg}) {
     host::run_gnuplot(tyre::mf_plot_script(loaded.params, options, plot, out), out.string());
     std::cerr << "tread mf plot: wrote " << out.string() << '\n';
@@ -255,7 +270,9 @@ void add_mf_command(CLI::App& app) {
   plot->add_option("--loads", plot_args.loads,
                    "Wheel loads in N, e.g. 2000,4000,6000 (default: 0.5, 1, 1.5, 2 × FNOMIN)")
       ->delimiter(',');
-  plot->add_option("--vx", plot_args.vx_mps, "Forward speed in m/s")->capture_default_str();
+  plot->add_option("--vx", plot_args.vx_mps, "Forward speed in m/s")
+      ->check(host::finite_within(0.01, 200.0, "the forward speed in m/s"))
+      ->capture_default_str();
   plot->add_option("--output", plot_args.output, "PNG to write; an SVG is written beside it")
       ->required();
   plot->callback([] { run_mf_plot(plot_args); });
