@@ -84,6 +84,35 @@ std::string significant(double v) {
   return text;
 }
 
+// The loads' median against the tyre's nominal load (the start file's FNOMIN), or against the
+// loads of any tyre without one: loads in kN under an N column fitted a μ of 76 686 and wrote it
+// with exit 0.
+void check_load_scale(const fit::MeasurementSet& data, const mf::MfParameters<double>* start) {
+  if (data.points.empty()) return;
+  std::vector<double> fz;
+  fz.reserve(data.points.size());
+  for (const auto& p : data.points) fz.push_back(p.fz_n);
+  std::nth_element(fz.begin(), fz.begin() + static_cast<std::ptrdiff_t>(fz.size() / 2), fz.end());
+  const double median = fz[fz.size() / 2];
+  const std::string hint =
+      ": loads in kN or lbf under a column read as N? (name the column Fz_kN, or give a units "
+      "row under the header)";
+  if (start != nullptr) {
+    constexpr double kFactor = 20.0;
+    if (median < start->fnomin_n / kFactor || median > start->fnomin_n * kFactor) {
+      throw std::runtime_error(data.source + ": the loads' median is " + significant(median) +
+                               " N, " + significant(median / start->fnomin_n) +
+                               " × the start file's FNOMIN (" + significant(start->fnomin_n) +
+                               " N)" + hint);
+    }
+    return;
+  }
+  if (median < 50.0 || median > 1e6) {
+    std::cerr << "tread fit: warning: " << data.source << ": the loads' median is "
+              << significant(median) << " N, outside any tyre's (50 N…1 MN)" << hint << "\n";
+  }
+}
+
 // Fits worse than the mean of their points (R² < 0) are failures, not results.
 void check_r2(const std::vector<std::string>& failed) {
   if (failed.empty()) return;
@@ -142,6 +171,7 @@ void run_staged(const FitCliState& s) {
             << s.model << " fit\n";
   report_ignored(data, start);
   drop_unloaded(data);
+  check_load_scale(data, &start);
   fit::check_rolling(data);
   const fit::StagedFit result = fit::fit_mf_staged(data, start, model, progress_line);
   if (result.stages.empty()) {
@@ -226,6 +256,7 @@ void run_fit(const FitCliState& s) {
   std::cerr << "tread fit: " << data.points.size() << " points from " << data.source << "\n";
   report_ignored(data, std::nullopt);
   drop_unloaded(data);
+  check_load_scale(data, nullptr);
   fit::SimpleFitSettings settings;
   settings.asymmetric_e = s.asymmetric_e;
   const fit::SimpleFit result = fit::fit_simple(data, settings, progress_line);

@@ -483,6 +483,31 @@ TEST(FitCommand, StagedFitInputsAreCheckedAndSaid) {
   EXPECT_NE(slurp(err).find("stopped.csv:7: Vx = 0"), std::string::npos) << slurp(err);
   EXPECT_FALSE(std::filesystem::exists(dir / "x.tir"));
 
+  // Loads in kN under an N column (2, 4, 6 "N"): 1/1000 of FNOMIN, refused (it fitted a μ of
+  // 76 686 and wrote it). Nothing is written.
+  const auto kn = dir / "kn.csv";
+  {
+    std::ifstream from(
+        write_csv("n.csv", "Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps,Fy_kN,P_kPa", 16.6));
+    std::ofstream to(kn);
+    std::string line;
+    std::getline(from, line);
+    to << line << '\n';
+    while (std::getline(from, line)) {
+      const auto comma = line.find(',');
+      to << std::stod(line.substr(0, comma)) / 1000.0 << line.substr(comma) << '\n';
+    }
+  }
+  EXPECT_NE(run("fit --model mf61 --start " + tir.string() + " --input " + kn.string() +
+                    " --output " + (dir / "kn.tir").string(),
+                err),
+            0);
+  EXPECT_NE(slurp(err).find("kn.csv: the loads' median is 4 N, 0.0005924 × the start file's "
+                            "FNOMIN (6752 N): loads in kN or lbf"),
+            std::string::npos)
+      << slurp(err);
+  EXPECT_FALSE(std::filesystem::exists(dir / "kn.tir"));
+
   const auto good =
       write_csv("good.csv", "Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps,Fy_kN,P_kPa", 16.6);
   ASSERT_EQ(run("fit --model mf61 --start " + tir.string() + " --input " + good.string() +
