@@ -125,6 +125,52 @@ void limit_load_to_unchanged_peaks(PacCoefficients& out) {
   out.params.fz_max_n = lowest_n;
 }
 
+// The curvature factors E at γ = 0 over the load range (PAC94's on both sides of the curve): the
+// core takes E above 1 as 1 (beyond it the Magic Formula's curve folds), so such a file's curves
+// are not its coefficients' own; warned about with the worst load.
+void warn_curvature_above_one(PacCoefficients& out) {
+  const pac::PacParams<double>& p = out.params;
+  struct Worst {
+    double e = -1e300;
+    double fz_n = 0.0;
+    double from_n = 0.0;  // the lowest load where E > 1 (the loads rise)
+  };
+  Worst fx, fy, mz;
+  const auto keep = [](Worst& w, double e, double fz_n) {
+    if (e > 1.0 && !(w.from_n > 0.0)) w.from_n = fz_n;
+    if (e > w.e) {
+      w.e = e;
+      w.fz_n = fz_n;
+    }
+  };
+  constexpr int kSteps = 200;
+  for (int i = 1; i <= kSteps; ++i) {
+    const double fz_n = p.fz_max_n * i / kSteps;
+    const double f = fz_n / 1000.0;
+    const double ex = p.b[6] * f * f + p.b[7] * f + p.b[8];
+    const double ey = p.a[6] * f + p.a[7];
+    const double ez = p.c[7] * f * f + p.c[8] * f + p.c[9];
+    for (const double side : {-1.0, 1.0}) {
+      keep(fx, out.pac94 ? ex * (1.0 - p.b[13] * side) : ex, fz_n);
+      keep(fy, out.pac94 ? ey * (1.0 - p.a[17] * side) : ey, fz_n);
+      keep(mz, out.pac94 ? ez * (1.0 - p.c[20] * side) : ez, fz_n);
+    }
+  }
+  const auto say = [&](const char* output, const char* keys, const Worst& w) {
+    if (!(w.e > 1.0)) return;
+    std::ostringstream m;
+    m.precision(4);
+    m << "the curvature E of " << output << " (" << keys << ") is above 1 from Fz = " << w.from_n
+      << " N (" << w.e << " at " << w.fz_n
+      << " N): E above 1 is taken as 1 (the curve would fold), so the " << output
+      << " curves there are not the coefficients' own";
+    out.warnings.push_back(m.str());
+  };
+  say("Fx", out.pac94 ? "B6…B8, B13" : "B6…B8", fx);
+  say("Fy", out.pac94 ? "A6, A7, A17" : "A6, A7", fy);
+  say("Mz", out.pac94 ? "C7…C9, C20" : "C7…C9", mz);
+}
+
 }  // namespace
 
 PacCoefficients pac_from_tir(const TirFile& file) {
@@ -157,6 +203,7 @@ PacCoefficients pac_from_tir(const TirFile& file) {
   out.params.lateral_stiffness_npm = optional_any(file, "LATERAL_STIFFNESS", out.missing);
   read_limits(file, out);
   limit_load_to_unchanged_peaks(out);
+  warn_curvature_above_one(out);
   if (const auto side = file.text_any("TYRESIDE")) {
     for (const char c : *side)
       out.tyreside += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -230,6 +277,7 @@ PacCoefficients pac_from_chrono_json(const std::filesystem::path& path) {
   out.params.rolling_resistance = design("Rolling Resistance");
   out.params.lateral_stiffness_npm = design("Lateral Stiffness");
   limit_load_to_unchanged_peaks(out);
+  warn_curvature_above_one(out);
   return out;
 }
 
