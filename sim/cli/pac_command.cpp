@@ -61,10 +61,25 @@ tir::PacCoefficients load_pac(const std::string& json, const std::string& tir_pa
                              ": no PAC89/PAC94 coefficients (A0…A13, B0…B10, C0…C17); a Magic "
                              "Formula file goes to tread mf");
   }
-  if (!coeff.missing.empty()) {
-    std::cerr << command << ": warning: " << source << ": " << coeff.missing.size()
-              << " coefficients missing, taken as 0 (" << missing89
-              << " of them PAC89's; first: " << coeff.missing.front() << ")\n";
+  // PAC94's own coefficients missing from a PAC89 file are not a loss (every PAC89 file lacks
+  // them): only what the file's model reads is said, the design values (R0, the lateral stiffness
+  // behind Mx, ...) among it.
+  std::vector<std::string> matter;
+  for (const std::string& m : coeff.missing) {
+    const std::string key = m.substr(m.find('.') + 1);
+    const bool coefficient = key.size() >= 2 &&
+                             std::string("ABCabc").find(key[0]) != std::string::npos &&
+                             key.find_first_not_of("0123456789", 1) == std::string::npos;
+    if (coeff.pac94 || !coefficient || pac89_key(m)) matter.push_back(m);
+  }
+  if (!matter.empty()) {
+    std::string list;
+    for (std::size_t i = 0; i < matter.size() && i < 6; ++i) {
+      list += (i == 0 ? "" : ", ") + matter[i];
+    }
+    if (matter.size() > 6) list += ", …";
+    std::cerr << command << ": warning: " << source << ": " << matter.size()
+              << " values missing, taken as 0: " << list << "\n";
   }
   if (!coeff.note.empty())
     std::cerr << command << ": note: " << source << ": " << coeff.note << '\n';
@@ -216,11 +231,25 @@ void add_pac_eval(CLI::App* pac) {
     o.table.separator = opt.sep == "auto" ? '\0' : opt.sep == "tab" ? '\t' : opt.sep.front();
     host::TableInput in(opt.input);     // "-": standard input
     host::TableOutput out(opt.output);  // "-": standard output
-    const auto rows = tyre::evaluate_pac_csv(coeff.params, o, in.stream(), in.name(), out.stream());
+    tyre::PacCsvTally tally;
+    const auto rows =
+        tyre::evaluate_pac_csv(coeff.params, o, in.stream(), in.name(), out.stream(), &tally);
     out.commit();
     (out.is_stdout() ? std::cerr : std::cout)
         << "evaluated " << rows << " rows -> " << opt.output
         << (o.iso_w ? " (ISO-W axes)" : " (model axes)") << '\n';
+    // As mf eval: rows the status column marks are also counted here, not left to be found.
+    if (tally.out_of_range > 0) {
+      std::cerr << "tread pac eval: warning: " << tally.out_of_range
+                << " rows out of range: an input beyond the tyre's limits (load, slip, camber) "
+                   "was clamped to them; the first at "
+                << in.name() << ":" << tally.first_out_of_range_line << "\n";
+    }
+    if (tally.other > 0) {
+      std::cerr << "tread pac eval: warning: " << tally.other
+                << " rows with a non-finite result, written as 0; the first at " << in.name() << ":"
+                << tally.first_other_line << "\n";
+    }
   });
 }
 

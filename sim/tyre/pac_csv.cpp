@@ -45,7 +45,8 @@ pac::PacOutput<double> eval_as(const pac::PacParams<T>& p, const PacCsvOptions& 
 }  // namespace
 
 std::size_t evaluate_pac_csv(const pac::PacParams<double>& params, const PacCsvOptions& options,
-                             std::istream& in, const std::string& in_name, std::ostream& out) {
+                             std::istream& in, const std::string& in_name, std::ostream& out,
+                             PacCsvTally* tally) {
   using Q = InputQuantity;
   InputTable table(in, in_name, options.table);
   const auto pf = convert<float>(params);
@@ -71,6 +72,12 @@ std::size_t evaluate_pac_csv(const pac::PacParams<double>& params, const PacCsvO
     out << v[0] << ',' << v[1] << ',' << v[2] << ',' << v[3] << ',' << r.fx_n << ',' << r.fy_n
         << ',' << r.mz_nm << ',' << r.mx_nm << ',' << r.my_nm << ',' << to_string(r.status) << '\n';
     ++rows;
+    if (tally != nullptr && r.status != Status::ok) {
+      const bool range = r.status == Status::out_of_range;
+      std::size_t& count = range ? tally->out_of_range : tally->other;
+      int& first = range ? tally->first_out_of_range_line : tally->first_other_line;
+      if (count++ == 0) first = row->line;
+    }
   }
   return rows;
 }

@@ -35,8 +35,17 @@ struct PacCsvOptions {
       {InputQuantity::fz, InputQuantity::kappa, InputQuantity::alpha, InputQuantity::gamma}};
 };
 
-/// Returns the number of rows evaluated.
+/// Rows whose status is not ok: how many, and the first's line in the input.
+struct PacCsvTally {
+  std::size_t out_of_range = 0;  ///< an input clamped to the tyre's limits
+  int first_out_of_range_line = 0;
+  std::size_t other = 0;  ///< another status (a non-finite result written as 0)
+  int first_other_line = 0;
+};
+
+/// Returns the number of rows evaluated; `tally`, if given, counts the rows by status.
 std::size_t evaluate_pac_csv(const pac::PacParams<double>& params, const PacCsvOptions& options,
-                             std::istream& in, const std::string& in_name, std::ostream& out);
+                             std::istream& in, const std::string& in_name, std::ostream& out,
+                             PacCsvTally* tally = nullptr);
 
 }  // namespace tread::tyre

@@ -55,6 +55,21 @@ std::vector<std::vector<double>> read_rows(const std::string& csv) {
   return rows;
 }
 
+// Rows the status column marks are counted with the first one's line (pac eval says them on
+// stderr, as mf eval does; they were only in the status column).
+TEST(PacCsv, RowsOutOfRangeAreCountedWithTheirFirstLine) {
+  const std::string input =
+      "Fz_N,kappa,alpha_rad,gamma_rad\n4000,0.1,0,0\n4000,0.1,5,0\n"
+      "200000,0,0,0\n";
+  std::istringstream in(input);
+  std::ostringstream out;
+  tread::tyre::PacCsvTally tally;
+  EXPECT_EQ(tread::tyre::evaluate_pac_csv(params(), {}, in, "in.csv", out, &tally), 3U);
+  EXPECT_EQ(tally.out_of_range, 2U);
+  EXPECT_EQ(tally.first_out_of_range_line, 3);
+  EXPECT_EQ(tally.other, 0U);
+}
+
 TEST(PacCsv, RowsEqualDirectEvaluation) {
   const std::string input =
       "# comment\nVx_mps,gamma_rad,alpha_rad,kappa,Fz_N\n16.7,0.01,0.05,0.1,4000\n\n"
