@@ -51,9 +51,10 @@ void progress_line(const std::string& line) {
 }
 
 void run_synthesize(const FitCliState& s) {
-  if (!(s.noise >= 0.0) || !std::isfinite(s.noise)) {
+  if (!(s.noise >= 0.0 && s.noise <= 1.0)) {
+    // A share of each channel's peak: 1e308 wrote rows of inf.
     throw std::runtime_error("--noise " + tir::format_number(s.noise) +
-                             ": the noise level must be a finite number ≥ 0");
+                             ": the noise level is a share of each channel's peak, from 0 to 1");
   }
   const tyre::MfTirParameters truth = tyre::load_mf_parameters(s.synthesize);
   fit::SyntheticGrid grid;
@@ -236,6 +237,32 @@ void run_staged(const FitCliState& s) {
             << s.output << "\n";
 }
 
+// Options of another mode than the one run do nothing: refused rather than ignored (--noise
+// without --synthesize, --start with --model simple, --input with --synthesize, ...).
+void check_mode_options(const CLI::App& cmd, const FitCliState& s) {
+  const auto given = [&](const char* option) { return cmd.count(option) > 0; };
+  const auto refuse = [](const char* option, const char* why) {
+    throw CLI::ValidationError(option, why);
+  };
+  if (!s.synthesize.empty()) {
+    for (const char* o : {"--input", "--model", "--start", "--neutral-start", "--report", "--plots",
+                          "--asymmetric-e", "--convention"}) {
+      if (given(o)) refuse(o, "applies to a fit, not to --synthesize (which writes measurements)");
+    }
+    return;
+  }
+  for (const char* o : {"--noise", "--seed"}) {
+    if (given(o)) refuse(o, "applies to --synthesize only");
+  }
+  if (s.model == "simple") {
+    for (const char* o : {"--start", "--neutral-start"}) {
+      if (given(o)) refuse(o, "applies to --model mf61 or pac2002 (simple fits no .tir)");
+    }
+  } else if (given("--asymmetric-e")) {
+    refuse("--asymmetric-e", "applies to --model simple (mf61/pac2002 have PEX4/PEY3)");
+  }
+}
+
 void run_fit(const FitCliState& s) {
   if (!s.synthesize.empty()) {
     run_synthesize(s);
@@ -350,7 +377,10 @@ void add_fit_command(CLI::App& app) {
   fit->add_flag("--asymmetric-e", state.asymmetric_e,
                 "simple: also fit EA, a curvature that differs on either side of the origin "
                 "(E*(1 - EA*sgn(x)), as MF's PEX4/PEY3)");
-  fit->callback([] { run_fit(state); });
+  fit->callback([fit] {
+    check_mode_options(*fit, state);
+    run_fit(state);
+  });
 }
 
 }  // namespace

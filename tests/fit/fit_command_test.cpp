@@ -650,15 +650,33 @@ TEST(FitCommand, DataTheFitCannotTakeAsWrittenAreSaid) {
   EXPECT_NE(slurp(err).find("the fit failed: R² < 0"), std::string::npos) << slurp(err);
   EXPECT_FALSE(std::filesystem::exists(dir / "mixed.tir"));
 
-  for (const char* noise : {"nan", "inf", "-0.1"}) {
+  for (const char* noise : {"nan", "inf", "-0.1", "1e308"}) {  // 1e308 wrote rows of inf
     EXPECT_NE(run("fit --synthesize " + tir.string() + " --noise " + noise + " --output " +
                       (dir / "noise.csv").string(),
                   err),
               0)
         << noise;
-    EXPECT_NE(slurp(err).find("the noise level must be a finite number ≥ 0"), std::string::npos)
+    EXPECT_NE(slurp(err).find("the noise level is a share of each channel's peak, from 0 to 1"),
+              std::string::npos)
         << slurp(err);
   }
+  // Options of the other mode are refused, not ignored.
+  const std::string synth =
+      "fit --synthesize " + tir.string() + " --output " + (dir / "s.csv").string();
+  EXPECT_NE(run(synth + " --input " + mixed.string(), err), 0);
+  EXPECT_NE(slurp(err).find("--input: applies to a fit, not to --synthesize"), std::string::npos)
+      << slurp(err);
+  EXPECT_NE(
+      run("fit --input " + mixed.string() + " --noise 0.1 --output " + (dir / "n.csv").string(),
+          err),
+      0);
+  EXPECT_NE(slurp(err).find("--noise: applies to --synthesize only"), std::string::npos)
+      << slurp(err);
+  EXPECT_NE(
+      run("fit --input " + mixed.string() + start + " --output " + (dir / "n.csv").string(), err),
+      0);
+  EXPECT_NE(slurp(err).find("--start: applies to --model mf61 or pac2002"), std::string::npos)
+      << slurp(err);
 }
 
 }  // namespace
