@@ -5,6 +5,7 @@
 //   info     what tread makes of a file (mf/tir_info.hpp): the detected model, units, loads,
 //            pressures, limits, the keys that took a default, the figures at FNOMIN (peak μx and
 //            μy, slip and cornering stiffness, pneumatic trail, radii), with warnings.
+#include <cctype>
 #include <filesystem>
 #include <iostream>
 #include <stdexcept>
@@ -26,6 +27,15 @@ namespace {
 // A PAC89 property file holding the coefficients of a Chrono Pac89Tire JSON file.
 tir::TirFile pac89_tir_from_chrono_json(const std::string& path) {
   const tir::PacCoefficients coeff = tir::pac_from_chrono_json(path);
+  if (!coeff.not_carried.empty()) {
+    std::cerr << "tread tir convert: warning: " << path
+              << ": not in the PAC89 .tir (its coefficients and R0, rolling resistance and "
+                 "lateral stiffness are):";
+    for (std::size_t i = 0; i < coeff.not_carried.size(); ++i) {
+      std::cerr << (i == 0 ? " " : ", ") << coeff.not_carried[i];
+    }
+    std::cerr << '\n';
+  }
   tir::TirFile file(path);
   file.set_text("MDI_HEADER", "FILE_TYPE", "tir");
   file.set("MDI_HEADER", "FILE_VERSION", 3.0);
@@ -43,9 +53,17 @@ struct ConvertArgs {
 };
 
 void run_convert(const ConvertArgs& args) {
+  std::string ext = std::filesystem::path(args.output).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext != ".tir") {
+    throw std::runtime_error(args.output + ": tread tir convert writes a .tir property file");
+  }
   tir::TirFile file = std::filesystem::path(args.input).extension() == ".json"
                           ? pac89_tir_from_chrono_json(args.input)
                           : tir::read_tir(args.input);
+  if (file.sections().empty()) {
+    throw std::runtime_error(args.input + ": no [SECTION] in it: not a property file");
+  }
   if (args.units == "si") {
     const std::vector<std::string> left = tir::convert_to_si(file);
     if (!left.empty()) {

@@ -276,6 +276,24 @@ PacCoefficients pac_from_chrono_json(const std::filesystem::path& path) {
   out.params.unloaded_radius_m = design("Unloaded Radius");
   out.params.rolling_resistance = design("Rolling Resistance");
   out.params.lateral_stiffness_npm = design("Lateral Stiffness");
+  if (j.is_object()) {
+    for (const auto& [key, value] : j.items()) {
+      if (key == "Name" || key == "Type" || key == "Template" || key == "Lateral Coefficients" ||
+          key == "Longitudinal Coefficients" || key == "Aligning Coefficients") {
+        continue;
+      }
+      if (key == "Design Parameters" && value.is_object()) {
+        for (const auto& [k, v] : value.items()) {
+          static_cast<void>(v);
+          if (k != "Unloaded Radius" && k != "Rolling Resistance" && k != "Lateral Stiffness") {
+            out.not_carried.push_back("Design Parameters." + k);
+          }
+        }
+        continue;
+      }
+      out.not_carried.push_back(key);
+    }
+  }
   limit_load_to_unchanged_peaks(out);
   warn_curvature_above_one(out);
   return out;

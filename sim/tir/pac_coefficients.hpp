@@ -31,6 +31,9 @@ struct PacCoefficients {
   /// What the coefficients do that the user should know: the load limit brought down to where a
   /// peak factor changes sign.
   std::vector<std::string> warnings;
+  /// From a Chrono JSON: the values PAC89's coefficients and design values leave out (mass,
+  /// inertia, width, the vertical model, ...), by name; a .tir written from it does not hold them.
+  std::vector<std::string> not_carried;
   /// TYRESIDE from the .tir in upper case ('LEFT', 'RIGHT', 'SYMMETRIC'), empty if absent; apply
   /// pac::mirror_pac89/mirror_pac94 (pac/pac_mirror.hpp) for a tyre on the other side.
   std::string tyreside;

@@ -123,6 +123,13 @@ TEST(TirConvert, ChronoPac89JsonBecomesAPac89File) {
   EXPECT_EQ(from_tir.params.b, from_json.params.b);
   EXPECT_EQ(from_tir.params.c, from_json.params.c);
   EXPECT_EQ(from_tir.params.unloaded_radius_m, from_json.params.unloaded_radius_m);
+  // What the .tir has no place for is named (it was dropped without a word).
+  EXPECT_NE(slurp(dir / "stderr.txt")
+                .find("not in the PAC89 .tir (its coefficients and R0, rolling resistance and "
+                      "lateral stiffness are): Coefficient of Friction"),
+            std::string::npos)
+      << slurp(dir / "stderr.txt");
+  EXPECT_NE(slurp(dir / "stderr.txt").find("Design Parameters.Width"), std::string::npos);
 }
 
 TEST(TirConvert, BadInputFailsWithFileAndLineAndWritesNothing) {
@@ -145,6 +152,19 @@ TEST(TirConvert, BadInputFailsWithFileAndLineAndWritesNothing) {
                 dir / "stderr.txt"),
             0);
   EXPECT_NE(slurp(dir / "stderr.txt").find("cannot write"), std::string::npos);
+  // An empty input is not a property file; an output that is not a .tir is refused (a .json
+  // name got .tir text).
+  std::ofstream(dir / "empty.tir").close();
+  EXPECT_NE(run("tir convert " + (dir / "empty.tir").string() + " " + (dir / "e.tir").string(),
+                dir / "stderr.txt"),
+            0);
+  EXPECT_NE(slurp(dir / "stderr.txt").find("no [SECTION] in it"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir / "e.tir"));
+  EXPECT_NE(run("tir convert " + testing::tyre_file("MagicFormula61_Parameters.tir").string() +
+                    " " + (dir / "x.json").string(),
+                dir / "stderr.txt"),
+            0);
+  EXPECT_NE(slurp(dir / "stderr.txt").find("writes a .tir property file"), std::string::npos);
 }
 
 struct Output {
