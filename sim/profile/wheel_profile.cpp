@@ -259,20 +259,27 @@ double polynomial(const std::array<double, N>& c, double s) {
 
 namespace {
 
+// A value as the user would write it (std::to_string printed 1e308 as 309 digits).
+std::string value_text(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", v);
+  return text;
+}
+
 void check_parameters(const WheelParameters& parameters) {
   const double h = parameters.flange_height_mm;
   const double e = parameters.flange_thickness_mm;
   if (!(near(h, 28.0) || near(h, 30.0) || near(h, 32.0))) {
     throw std::invalid_argument("flange height must be 28, 30 or 32 mm (EN 13715), got " +
-                                std::to_string(h));
+                                value_text(h));
   }
   if (!(e >= 28.5 - 1e-9 && e <= 32.5 + 1e-9)) {
     throw std::invalid_argument("flange thickness must be within 28.5 … 32.5 mm, got " +
-                                std::to_string(e));
+                                value_text(e));
   }
   if (!(near(parameters.width_mm, 135.0) || near(parameters.width_mm, 140.0))) {
     throw std::invalid_argument("wheel width must be 135 or 140 mm, got " +
-                                std::to_string(parameters.width_mm));
+                                value_text(parameters.width_mm));
   }
 }
 
