@@ -23,6 +23,7 @@
 #include "fit/mf_staged_fit.hpp"
 #include "fit/simple_fit.hpp"
 #include "fit/slope_signs.hpp"
+#include "fit/solver_log.hpp"
 #include "fit/synthetic_measurements.hpp"
 #include "tir/tir_file.hpp"
 #include "tir/tir_units.hpp"
@@ -264,6 +265,7 @@ void check_mode_options(const CLI::App& cmd, const FitCliState& s) {
 }
 
 void run_fit(const FitCliState& s) {
+  fit::quiet_solver_log();
   if (!s.synthesize.empty()) {
     run_synthesize(s);
     return;
@@ -298,6 +300,19 @@ void run_fit(const FitCliState& s) {
   if (!s.plots.empty()) {
     fit::plot_simple_fit(result, s.plots);
     std::cerr << "tread fit: plots in " << s.plots << "\n";
+  }
+  // A standard deviation the covariance did not give (its points do not determine every constant,
+  // e.g. a braking-only sweep and the curve's other side): written as nan, and said.
+  for (const fit::ChannelFit& f : result.fits) {
+    const std::size_t fitted = s.asymmetric_e ? 7 : 6;
+    const bool undetermined = std::any_of(f.stddev.begin(), f.stddev.begin() + fitted,
+                                          [](double v) { return !std::isfinite(v); });
+    if (undetermined) {
+      std::cerr << "tread fit: warning: " << fit::channel_name(f.channel)
+                << " at Fz = " << tir::format_number(f.fz_n)
+                << " N: standard deviations not determined (the points do not determine every "
+                   "constant: the covariance is rank deficient); written as nan\n";
+    }
   }
   std::vector<std::string> failed;
   for (const fit::ChannelFit& f : result.fits) {
