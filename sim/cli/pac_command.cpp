@@ -7,8 +7,10 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli/commands.hpp"
@@ -34,14 +36,24 @@ constexpr const char* kPacAxesNote =
 
 void add_pac_eval(CLI::App* pac);
 
-// The coefficients PAC89 needs (PAC94 adds A14…A17, B11…B13, C18…C20).
-bool pac89_key(const std::string& missing_entry) {
+// A missing entry ("SECTION.KEY") that is a PAC coefficient: its set (A, B, C) and number.
+std::optional<std::pair<char, int>> coefficient_of(const std::string& missing_entry) {
   const std::string key = missing_entry.substr(missing_entry.find('.') + 1);
-  if (key.size() < 2) return false;
+  if (key.size() < 2) return std::nullopt;
   const char set = static_cast<char>(std::toupper(static_cast<unsigned char>(key[0])));
   const std::string digits = key.substr(1);
-  if (digits.find_first_not_of("0123456789") != std::string::npos) return false;
-  const int n = std::stoi(digits);
+  if ((set != 'A' && set != 'B' && set != 'C') ||
+      digits.find_first_not_of("0123456789") != std::string::npos) {
+    return std::nullopt;
+  }
+  return std::pair<char, int>{set, std::stoi(digits)};
+}
+
+// The coefficients PAC89 needs (PAC94 adds A14…A17, B11…B13, C18…C20).
+bool pac89_key(const std::string& missing_entry) {
+  const auto c = coefficient_of(missing_entry);
+  if (!c) return false;
+  const auto [set, n] = *c;
   return (set == 'A' && n <= 13) || (set == 'B' && n <= 10) || (set == 'C' && n <= 17);
 }
 
@@ -66,11 +78,7 @@ tir::PacCoefficients load_pac(const std::string& json, const std::string& tir_pa
   // behind Mx, ...) among it.
   std::vector<std::string> matter;
   for (const std::string& m : coeff.missing) {
-    const std::string key = m.substr(m.find('.') + 1);
-    const bool coefficient = key.size() >= 2 &&
-                             std::string("ABCabc").find(key[0]) != std::string::npos &&
-                             key.find_first_not_of("0123456789", 1) == std::string::npos;
-    if (coeff.pac94 || !coefficient || pac89_key(m)) matter.push_back(m);
+    if (coeff.pac94 || !coefficient_of(m) || pac89_key(m)) matter.push_back(m);
   }
   if (!matter.empty()) {
     std::string list;

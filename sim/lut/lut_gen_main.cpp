@@ -31,7 +31,7 @@ int main(int argc, char** argv) {
     // the shared parsers name tread's own options: --wheel, --cant, ...).
     const auto once = [](const std::vector<std::string>& specs, const char* option) {
       for (std::size_t i = 0; i < specs.size(); ++i) {
-        if (specs[i].empty()) throw std::runtime_error(std::string(option) + " ''");
+        if (specs[i].empty()) throw std::runtime_error(std::string(option) + " '': an empty spec");
         for (std::size_t j = 0; j < i; ++j) {
           if (specs[i] == specs[j]) {
             throw std::runtime_error(std::string(option) + " '" + specs[i] + "' given twice");

@@ -137,11 +137,12 @@ void DynamicHuntingScenario::advance(const proto::RigData& /*inputs_seen*/,
   }
   // A stale or flagged answer carries no forces: hold the last ones rather than drop them.
   const bool fresh = answers.rail_wheels[0].status == 0U && answers.rail_wheels[1].status == 0U;
-  if (!fresh) ++current_.held_answers;
   if (fresh) {
     answer_[0] = answers.rail_wheels[0];
     answer_[1] = answers.rail_wheels[1];
     force_ = generalised_force(answer_[0], answer_[1], settings_.params.half_contact_base_m);
+  } else {
+    ++current_.held_answers;
   }
   rail::wheelset_step(state_, force_, jacobian_, settings_.params, dt_s);
   run_t_ += dt_s;

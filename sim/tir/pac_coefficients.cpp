@@ -79,6 +79,7 @@ void read_limits(const TirFile& file, PacCoefficients& out) {
       throw TirError(file.origin(), file.find_any("FZMAX")->line, "FZMAX must be > 0");
     }
     out.params.fz_max_n = std::min(out.params.fz_max_n, *fzmax);
+    out.fzmax_given = true;
   }
   symmetric("KPUMIN", "KPUMAX", out.params.kappa_max);
   symmetric("ALPMIN", "ALPMAX", out.params.alpha_max_rad);
@@ -119,7 +120,7 @@ void limit_load_to_unchanged_peaks(PacCoefficients& out) {
   m << "the peak of " << first->output << " changes sign at Fz = " << lowest_n << " N ("
     << first->keys << ": D = Fz·(" << first->k1 << "·Fz + " << first->k2
     << "), Fz in kN), below the load limit " << out.params.fz_max_n << " N"
-    << (out.params.fz_max_n >= 100000.0 ? " (the file gives no FZMAX)" : "")
+    << (out.fzmax_given ? "" : " (the file gives no FZMAX)")
     << ": loads above it are clamped to it and said out of range";
   out.warnings.push_back(m.str());
   out.params.fz_max_n = lowest_n;

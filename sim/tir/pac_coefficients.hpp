@@ -31,6 +31,7 @@ struct PacCoefficients {
   /// What the coefficients do that the user should know: the load limit brought down to where a
   /// peak factor changes sign.
   std::vector<std::string> warnings;
+  bool fzmax_given = false;  ///< the file's FZMAX set the load limit (else the core's default)
   /// From a Chrono JSON: the values PAC89's coefficients and design values leave out (mass,
   /// inertia, width, the vertical model, ...), by name; a .tir written from it does not hold them.
   std::vector<std::string> not_carried;

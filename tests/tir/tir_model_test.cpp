@@ -111,6 +111,14 @@ TEST(TirModel, PacFileLimitsAreApplied) {
             std::string::npos)
       << none.warnings[0];
   EXPECT_NE(none.warnings[0].find("(the file gives no FZMAX)"), std::string::npos);
+  {
+    TirFile high = read_tyre_property_file(variant("pac89_header.tir"));
+    high.set("VERTICAL_FORCE_RANGE", "FZMAX", 150000.0);  // above the core's 100 kN: capped
+    const PacCoefficients h = pac_from_tir(high);
+    EXPECT_NEAR(h.params.fz_max_n, 64788.5, 0.1);
+    ASSERT_FALSE(h.warnings.empty());
+    EXPECT_EQ(h.warnings[0].find("gives no FZMAX"), std::string::npos) << h.warnings[0];
+  }
   TirFile f = read_tyre_property_file(variant("pac89_header.tir"));
   f.set("VERTICAL_FORCE_RANGE", "FZMAX", 25000.0);
   f.set("LONG_SLIP_RANGE", "KPUMIN", -0.5);
