@@ -133,7 +133,7 @@ void check_mf_parameters(const mf::MfParameters<double>& p, const tir::TirFile& 
                "; is the [UNITS] section right?");
     }
   };
-  plausible("UNLOADED_RADIUS", p.unloaded_radius_m, 0.1, 2.5, "m", "a tyre's free radius");
+  plausible("UNLOADED_RADIUS", p.unloaded_radius_m, 0.05, 2.5, "m", "a tyre's free radius");
   plausible("FNOMIN", p.fnomin_n, 50.0, 1e6, "N", "a tyre's nominal load");
   plausible("LONGVL", p.longvl_mps, 0.5, 150.0, "m/s", "a measuring speed");
   if (p.fit_type == mf::FitType::mf61 || p.fit_type == mf::FitType::mf62) {
