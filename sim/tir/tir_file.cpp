@@ -36,6 +36,19 @@ bool is_key_char(char c) noexcept {
   throw TirError(origin, line, what);
 }
 
+// A file's text as an error quotes it: control bytes as '?', and at most 80 characters (a 50 MB
+// line, or a binary file read as text, was echoed whole onto stderr).
+std::string excerpt(std::string_view text) {
+  constexpr std::size_t kMax = 80;
+  std::string out;
+  for (std::size_t i = 0; i < text.size() && i < kMax; ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    out += c < 0x20 || c == 0x7f ? '?' : static_cast<char>(c);
+  }
+  if (text.size() > kMax) out += "… (" + std::to_string(text.size()) + " characters)";
+  return out;
+}
+
 // Parses the part after '=' of an entry line into entry.value/quote/comment.
 void parse_value(std::string_view rest, Entry& entry, const std::string& origin, int line) {
   rest = host::text::trim_blanks(rest);
@@ -55,7 +68,7 @@ void parse_value(std::string_view rest, Entry& entry, const std::string& origin,
     if (!after.empty() && !is_comment_start(after.front())) {
       fail(origin, line,
            "unexpected text after closing quote in value of '" + entry.key + "': '" +
-               std::string(after) + "'");
+               excerpt(after) + "'");
     }
     entry.comment = std::string(after);
     return;
@@ -251,7 +264,7 @@ std::optional<double> entry_number(const Entry* e, const std::string& origin) {
   }
   fail(origin, e->line,
        "value of '" + e->key + "' is not a number: " +
-           (e->is_quoted() ? std::string(1, e->quote) + e->value + e->quote : e->value));
+           excerpt(e->is_quoted() ? std::string(1, e->quote) + e->value + e->quote : e->value));
 }
 std::optional<std::string> entry_value(const Entry* e) {
   if (e == nullptr) return std::nullopt;
@@ -409,7 +422,7 @@ TirFile parse_tir(std::string_view text, const std::string& origin) {
         fail(origin, line_no, "invalid section name '" + std::string(name) + "'");
       }
       if (!after.empty() && !is_comment_start(after.front())) {
-        fail(origin, line_no, "unexpected text after section header: '" + std::string(after) + "'");
+        fail(origin, line_no, "unexpected text after section header: '" + excerpt(after) + "'");
       }
       Section s;
       s.name = std::string(name);
@@ -467,7 +480,7 @@ TirFile parse_tir(std::string_view text, const std::string& origin) {
     } else {
       l.kind = Line::Kind::kTableRow;
       if (current == nullptr) {
-        fail(origin, line_no, "text outside any section: '" + std::string(t) + "'");
+        fail(origin, line_no, "text outside any section: '" + excerpt(t) + "'");
       }
     }
 
@@ -481,7 +494,7 @@ TirFile parse_tir(std::string_view text, const std::string& origin) {
       if (l.kind == Line::Kind::kTableRow && in_block) {
         fail(origin, line_no,
              "line in sub-block is neither '{...}' nor quoted text in section [" + current->name +
-                 "]: '" + std::string(t) + "'");
+                 "]: '" + excerpt(t) + "'");
       }
       for (const auto& prev : current->lines) {
         if (prev.kind == other && l.kind == Line::Kind::kEntry &&
@@ -492,7 +505,7 @@ TirFile parse_tir(std::string_view text, const std::string& origin) {
           fail(origin, prev.line,
                "line is neither 'KEY = value' nor a comment in section [" + current->name +
                    "] (a missing '='? entries follow at line " + std::to_string(line_no) + "): '" +
-                   std::string(host::text::trim_blanks(prev.text)) + "'");
+                   excerpt(host::text::trim_blanks(prev.text)) + "'");
         }
         if (prev.kind == other) {
           fail(origin, line_no,
@@ -500,7 +513,7 @@ TirFile parse_tir(std::string_view text, const std::string& origin) {
                    ? "'KEY = value' line in table section [" + current->name + "]"
                    : "line is neither 'KEY = value' nor a comment in section [" + current->name +
                          "] (first entry at line " + std::to_string(prev.line) + "): '" +
-                         std::string(t) + "'");
+                         excerpt(t) + "'");
         }
       }
     }

@@ -130,6 +130,13 @@ TEST(TirFile, ErrorsNameFileAndLine) {
   // well-formed entry after it.
   expect_error("[A]\nFNOMIN 6752\nX = 1\n", 2,
                "(a missing '='? entries follow at line 3): 'FNOMIN 6752'");
+  // The text an error quotes: control bytes as '?', at most 80 characters and the length (a
+  // 50 MB line was echoed whole).
+  expect_error("[A]\nX = 1\n" + std::string(100000, 'y') + " 2\n", 3,
+               "'" + std::string(80, 'y') + "… (100002 characters)'");
+  expect_error("[A]\nX = 'a' b\x01\x02\n", 2,
+               "after closing quote in value of 'X': 'b?"
+               "?'");
 }
 
 std::filesystem::path variant(const std::string& name) {
