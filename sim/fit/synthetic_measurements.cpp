@@ -43,6 +43,12 @@ std::vector<MeasurementPoint> synthetic_inputs(const mf::MfParameters<double>& t
                                                const SyntheticGrid& grid) {
   std::vector<MeasurementPoint> points;
   auto add = [&](double fz, double kappa, double alpha, double gamma) {
+    // Slips beyond the tyre's range are left out: the model clamps them, and the clamped outputs
+    // would be written as if measured there (KPUMAX = 0: a flat Fx of noise for every κ > 0).
+    if (kappa < truth.kpumin || kappa > truth.kpumax || alpha < truth.alpmin_rad ||
+        alpha > truth.alpmax_rad) {
+      return;
+    }
     MeasurementPoint m;
     m.fz_n = fz;
     m.kappa = kappa;

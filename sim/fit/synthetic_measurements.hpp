@@ -31,7 +31,8 @@ struct SyntheticGrid {
   double noise_rel = 0.01;
 };
 
-/// The grid's points (inputs only, outputs NaN).
+/// The grid's points (inputs only, outputs NaN); slips outside the tyre's KPUMIN…KPUMAX and
+/// ALPMIN…ALPMAX are left out.
 std::vector<MeasurementPoint> synthetic_inputs(const mf::MfParameters<double>& truth,
                                                const SyntheticGrid& grid);
 

@@ -74,6 +74,25 @@ double rms_diff(const std::vector<double>& a, const std::vector<double>& b) {
   return std::sqrt(ss / static_cast<double>(a.size()));
 }
 
+// The synthetic grid keeps to the tyre's slip range: the FEDA tyre (KPUMAX = 0, ALPMAX 0.198 rad)
+// got κ up to 0.3 and α up to 0.3 rad, the model's clamped outputs written as if measured there.
+TEST(SyntheticGrid, KeepsToTheTyresSlipRange) {
+  const auto truth =
+      tyre::load_mf_parameters(testing::tyre_file("chrono_feda_335_65R22_5_G275MSA_60psi.tir"))
+          .params;
+  const std::vector<MeasurementPoint> points = synthetic_inputs(truth, SyntheticGrid{});
+  ASSERT_FALSE(points.empty());
+  double kappa_min = 0.0, kappa_max = 0.0, alpha_max = 0.0;
+  for (const MeasurementPoint& m : points) {
+    kappa_min = std::min(kappa_min, m.kappa);
+    kappa_max = std::max(kappa_max, m.kappa);
+    alpha_max = std::max(alpha_max, m.alpha_rad);
+  }
+  EXPECT_LE(kappa_max, truth.kpumax);
+  EXPECT_LE(alpha_max, truth.alpmax_rad);
+  EXPECT_LT(kappa_min, -0.25);  // the braking side is kept
+}
+
 class MfStagedFit : public ::testing::TestWithParam<Case> {};
 
 TEST_P(MfStagedFit, RecoversStiffnessFrictionAndCurvesFromNeutralStart) {
