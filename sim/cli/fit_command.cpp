@@ -25,6 +25,7 @@
 #include "fit/slope_signs.hpp"
 #include "fit/solver_log.hpp"
 #include "fit/synthetic_measurements.hpp"
+#include "io/text_line.hpp"
 #include "tir/tir_file.hpp"
 #include "tir/tir_units.hpp"
 #include "tyre/input_table.hpp"
@@ -130,9 +131,8 @@ void check_r2(const std::vector<std::string>& failed) {
 void report_ignored(const fit::MeasurementSet& data,
                     const std::optional<mf::MfParameters<double>>& start) {
   if (data.ignored_columns.empty()) return;
-  std::cerr << "tread fit: ignored columns:";
-  for (const std::string& c : data.ignored_columns) std::cerr << " '" << c << "'";
-  std::cerr << "\n";
+  std::cerr << "tread fit: ignored columns:" << host::text::quoted_list(data.ignored_columns)
+            << "\n";
   if (data.has_pressure) {
     std::cerr << "tread fit: warning: the pressure column is not used: every point is fitted as if "
                  "measured at "

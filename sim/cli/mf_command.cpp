@@ -16,6 +16,7 @@
 #include "io/option_checks.hpp"
 #include "io/progress_bar.hpp"
 #include "io/table_streams.hpp"
+#include "io/text_line.hpp"
 #include "mf/mf_options.hpp"
 #include "plot/gnuplot.hpp"
 #include "tyre/input_table.hpp"
@@ -131,9 +132,8 @@ void run_mf_eval(const MfEvalArgs& args) {
   bar.finish();
   for (const std::string& m : report.mapping) std::cerr << "tread mf eval: column " << m << '\n';
   if (!report.ignored.empty()) {
-    std::cerr << "tread mf eval: ignored columns:";
-    for (const std::string& c : report.ignored) std::cerr << " '" << c << "'";
-    std::cerr << '\n';
+    std::cerr << "tread mf eval: ignored columns:" << host::text::quoted_list(report.ignored)
+              << '\n';
   }
   for (const std::string& w : report.warnings) std::cerr << "tread mf eval: warning: " << w << '\n';
   for (const tyre::MfRangeCount& c : report.out_of_range) {

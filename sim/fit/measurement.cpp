@@ -204,7 +204,8 @@ MeasurementSet read_tydex(std::istream& in, const std::string& name) {
         } else if (u == "RAD" || u == "N" || u == "NM" || u == "M/S" || u == "-" || u == "1") {
           c.scale = 1.0;
         } else {
-          host::text::fail_at(name, line, "unknown unit '" + unit + "' of channel " + channel);
+          host::text::fail_at(
+              name, line, "unknown unit '" + host::text::excerpt(unit) + "' of channel " + channel);
         }
         c.field = it->second;
         if (!columns.emplace(it->second, channels.size()).second) {
@@ -225,14 +226,14 @@ MeasurementSet read_tydex(std::istream& in, const std::string& name) {
         if (!c.field) continue;
         const std::optional<double> v = parse_number(tokens[i]);
         if (!v)
-          host::text::fail_at(
-              name, line,
-              "value " + std::to_string(i + 1) + " '" + tokens[i] + "' is not a finite number");
+          host::text::fail_at(name, line,
+                              "value " + std::to_string(i + 1) + " '" +
+                                  host::text::excerpt(tokens[i]) + "' is not a finite number");
         const double si = ((*v - c.meas_offset) * c.factor + c.phys_offset) * c.scale;
         if (!std::isfinite(si)) {
           host::text::fail_at(
               name, line,
-              "value " + std::to_string(i + 1) + " '" + tokens[i] +
+              "value " + std::to_string(i + 1) + " '" + host::text::excerpt(tokens[i]) +
                   "' is out of range once the channel's factor, offsets and unit are applied");
         }
         set_field(p, *c.field, si);

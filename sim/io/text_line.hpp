@@ -23,6 +23,68 @@ namespace tread::host::text {
   throw std::runtime_error(source + ":" + std::to_string(line) + ": " + message);
 }
 
+/// A file's text as an error message quotes it: at most `max_bytes` bytes (cut at a character
+/// boundary) followed by "… (N characters)" when longer, a tab as "\t", other control bytes and
+/// bytes that are not well-formed UTF-8 as '?'. A 50 MB line, or a binary file read as text, was
+/// echoed whole onto the terminal.
+inline std::string excerpt(std::string_view text, std::size_t max_bytes = 80) {
+  std::string out;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    // The length of a well-formed UTF-8 sequence starting at i (RFC 3629: no overlong forms,
+    // no surrogates, nothing above U+10FFFF), 0 if there is none.
+    std::size_t n = 0;
+    if (c < 0x80U) {
+      n = 1;
+    } else if (c >= 0xC2U && c <= 0xF4U) {
+      n = c < 0xE0U ? 2U : c < 0xF0U ? 3U : 4U;
+      if (i + n > text.size()) {
+        n = 0;
+      } else {
+        const auto c1 = static_cast<unsigned char>(text[i + 1]);
+        const unsigned lo = c == 0xE0U ? 0xA0U : c == 0xF0U ? 0x90U : 0x80U;
+        const unsigned hi = c == 0xEDU ? 0x9FU : c == 0xF4U ? 0x8FU : 0xBFU;
+        if (c1 < lo || c1 > hi) n = 0;
+        for (std::size_t k = 2; k < n; ++k) {
+          const auto ck = static_cast<unsigned char>(text[i + k]);
+          if (ck < 0x80U || ck > 0xBFU) n = 0;
+        }
+      }
+    }
+    const std::size_t width = n == 0 ? 1U : n;
+    if (i + width > max_bytes) break;
+    if (c == '\t') {
+      out += "\\t";
+    } else if (n == 0 || (n == 1 && (c < 0x20U || c == 0x7FU))) {
+      out += '?';
+    } else {
+      out.append(text.substr(i, n));
+    }
+    i += width;
+  }
+  if (i < text.size()) {
+    // Characters, not bytes: UTF-8 continuation bytes are not counted.
+    const auto characters = std::count_if(text.begin(), text.end(), [](char b) {
+      return (static_cast<unsigned char>(b) & 0xC0U) != 0x80U;
+    });
+    out += "… (" + std::to_string(characters) + " characters)";
+  }
+  return out;
+}
+
+/// Names from a file as a report lists them: " 'a' 'b'", each an excerpt, at most `max_items`
+/// of them and then " … and N more" (a header of a million cells was listed whole).
+inline std::string quoted_list(const std::vector<std::string>& names, std::size_t max_items = 12) {
+  std::string out;
+  for (std::size_t i = 0; i < names.size() && i < max_items; ++i) {
+    out += " '" + excerpt(names[i]) + "'";
+  }
+  if (names.size() > max_items)
+    out += " … and " + std::to_string(names.size() - max_items) + " more";
+  return out;
+}
+
 /// White space: space, tab, CR, LF, form feed, vertical tab (what std::isspace counts in the C
 /// locale).
 constexpr bool is_blank(char c) noexcept {

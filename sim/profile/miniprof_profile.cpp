@@ -76,7 +76,7 @@ MiniProfFile read_miniprof(std::istream& in, const std::string& source_name) {
           }
           if (!host::text::parse_number_text(number, offset_mm) || !std::isfinite(offset_mm)) {
             host::text::fail_at(source_name, line_no,
-                                key + " '" + value + "' is not a number (mm)");
+                                key + " '" + host::text::excerpt(value) + "' is not a number (mm)");
           }
           (k == "xoffset" ? out.x_offset_mm : out.y_offset_mm) = offset_mm;
           (k == "xoffset" ? out.x_offset_line : out.y_offset_line) = line_no;
@@ -94,8 +94,9 @@ MiniProfFile read_miniprof(std::istream& in, const std::string& source_name) {
             }
           }
           if (found != 3U) {
-            host::text::fail_at(source_name, line_no,
-                                "ColumnDef '" + value + "' does not name the columns X and Y");
+            host::text::fail_at(
+                source_name, line_no,
+                "ColumnDef '" + host::text::excerpt(value) + "' does not name the columns X and Y");
           }
         } else if (k == "points" || k == "xypoints") {
           double n = 0.0;
@@ -116,7 +117,7 @@ MiniProfFile read_miniprof(std::istream& in, const std::string& source_name) {
     const auto fields = host::text::split_fields(data);
     if (text.find('=') != std::string_view::npos) {
       host::text::fail_at(source_name, line_no,
-                          "header line '" + std::string(text) +
+                          "header line '" + host::text::excerpt(text) +
                               "' after the points (the header ends at the "
                               "first blank line)");
     }
@@ -132,7 +133,7 @@ MiniProfFile read_miniprof(std::istream& in, const std::string& source_name) {
         !host::text::parse_number_text(fields[y_col], y) || !std::isfinite(x) ||
         !std::isfinite(y)) {
       host::text::fail_at(source_name, line_no,
-                          "expected a point 'X Y', got '" + std::string(text) + "'");
+                          "expected a point 'X Y', got '" + host::text::excerpt(text) + "'");
     }
     out.points.y_mm.push_back(x + out.x_offset_mm);
     out.points.z_mm.push_back(y + out.y_offset_mm);

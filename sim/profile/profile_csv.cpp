@@ -42,7 +42,7 @@ double parse_number(std::string_view text, const std::string& source, std::size_
   if (!host::text::parse_number_text(text, value)) {
     host::text::fail_at(
         source, line,
-        std::string("column ") + column + ": '" + std::string(text) + "' is not a number");
+        std::string("column ") + column + ": '" + host::text::excerpt(text) + "' is not a number");
   }
   if (!std::isfinite(value)) {
     host::text::fail_at(source, line, std::string("column ") + column + ": value is not finite");
@@ -97,7 +97,8 @@ AxisColumn axis_column(std::string_view cell, const std::string& source, std::si
                             std::end(kOtherLengths);
   if (!bracketed && !other_length) return {};
   host::text::fail_at(source, line,
-                      "column '" + std::string(cell) + "': unit '" + std::string(unit) +
+                      "column '" + host::text::excerpt(cell) + "': unit '" +
+                          host::text::excerpt(unit) +
                           "' not known for a profile (mm, m, cm, in, um)");
 }
 
@@ -141,9 +142,9 @@ ProfilePoints read_profile_csv_points(std::istream& in, const std::string& sourc
         continue;
       }
       if (!tolerant) {
-        host::text::fail_at(
-            source_name, line_no,
-            "expected a header naming the columns y_mm and z_mm, got '" + std::string(text) + "'");
+        host::text::fail_at(source_name, line_no,
+                            "expected a header naming the columns y_mm and z_mm, got '" +
+                                host::text::excerpt(text) + "'");
       }
       if (fields.size() < 2 || !is_number_text(fields[0]) || !is_number_text(fields[1])) {
         // One header row before the data. Where it names the y and z columns ("y,z", "z_m,y_m",
@@ -184,7 +185,7 @@ ProfilePoints read_profile_csv_points(std::istream& in, const std::string& sourc
           host::text::fail_at(source_name, line_no,
                               std::string("the header gives the unit of ") + (y_unit ? "y" : "z") +
                                   " but names no " + (y_unit ? "z" : "y") + " column: '" +
-                                  std::string(text) + "'");
+                                  host::text::excerpt(text) + "'");
         }
         if (y_at < none && z_at < none) {
           y_col = y_at;
@@ -194,7 +195,8 @@ ProfilePoints read_profile_csv_points(std::istream& in, const std::string& sourc
           const auto used = [&](std::size_t at, bool converted, double mm_per) {
             char factor[32];
             std::snprintf(factor, sizeof factor, "%g", mm_per);
-            return "column " + std::to_string(at + 1) + " '" + cells[at] + "'" +
+            return "column " + std::to_string(at + 1) + " '" + host::text::excerpt(cells[at]) +
+                   "'" +
                    (converted ? std::string(", × ") + factor + " to mm" : std::string(", mm"));
           };
           points.header = {{"y", used(y_at, y_unit, y_mm_per)},
@@ -213,8 +215,9 @@ ProfilePoints read_profile_csv_points(std::istream& in, const std::string& sourc
                                 std::to_string(fields.size()));
       }
     } else if (fields.size() < 2) {
-      host::text::fail_at(source_name, line_no,
-                          "expected two numbers 'y_mm,z_mm', got '" + std::string(text) + "'");
+      host::text::fail_at(
+          source_name, line_no,
+          "expected two numbers 'y_mm,z_mm', got '" + host::text::excerpt(text) + "'");
     }
     const double y = parse_number(fields[y_col], source_name, line_no, "y_mm") * y_scale;
     const double z = parse_number(fields[z_col], source_name, line_no, "z_mm") * z_scale;

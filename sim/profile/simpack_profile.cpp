@@ -102,15 +102,17 @@ SimpackBlocks read_blocks(std::istream& in, const std::string& source_name) {
       double y = 0.0;
       double z = 0.0;
       if (!parse_double(a, y) || !parse_double(b, z)) {
-        host::text::fail_at(source_name, line_no,
-                            "expected a point 'y z [weight]', got '" + std::string(text) + "'");
+        host::text::fail_at(
+            source_name, line_no,
+            "expected a point 'y z [weight]', got '" + host::text::excerpt(text) + "'");
       }
       blocks.points.push_back({y, z, line_no});
       continue;
     }
     const std::size_t eq = text.find('=');
     if (eq == std::string_view::npos || block.empty()) {
-      host::text::fail_at(source_name, line_no, "unexpected line '" + std::string(text) + "'");
+      host::text::fail_at(source_name, line_no,
+                          "unexpected line '" + host::text::excerpt(text) + "'");
     }
     std::string value(host::text::trim_blanks(text.substr(eq + 1)));
     if (value.size() >= 2 && value.front() == '\'' && value.back() == '\'') {
@@ -159,7 +161,8 @@ SimpackSettings read_settings(const SimpackBlocks& blocks, const std::string& so
     double v = 0.0;
     if (!parse_double(it->second.value, v)) {
       host::text::fail_at(source_name, it->second.line,
-                          key + ": '" + it->second.value + "' is not a number");
+                          host::text::excerpt(key) + ": '" + host::text::excerpt(it->second.value) +
+                              "' is not a number");
     }
     return v;
   };

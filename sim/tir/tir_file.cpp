@@ -36,19 +36,6 @@ bool is_key_char(char c) noexcept {
   throw TirError(origin, line, what);
 }
 
-// A file's text as an error quotes it: control bytes as '?', and at most 80 characters (a 50 MB
-// line, or a binary file read as text, was echoed whole onto stderr).
-std::string excerpt(std::string_view text) {
-  constexpr std::size_t kMax = 80;
-  std::string out;
-  for (std::size_t i = 0; i < text.size() && i < kMax; ++i) {
-    const auto c = static_cast<unsigned char>(text[i]);
-    out += c < 0x20 || c == 0x7f ? '?' : static_cast<char>(c);
-  }
-  if (text.size() > kMax) out += "… (" + std::to_string(text.size()) + " characters)";
-  return out;
-}
-
 // Parses the part after '=' of an entry line into entry.value/quote/comment.
 void parse_value(std::string_view rest, Entry& entry, const std::string& origin, int line) {
   rest = host::text::trim_blanks(rest);
@@ -68,7 +55,7 @@ void parse_value(std::string_view rest, Entry& entry, const std::string& origin,
     if (!after.empty() && !is_comment_start(after.front())) {
       fail(origin, line,
            "unexpected text after closing quote in value of '" + entry.key + "': '" +
-               excerpt(after) + "'");
+               host::text::excerpt(after) + "'");
     }
     entry.comment = std::string(after);
     return;
@@ -81,6 +68,10 @@ void parse_value(std::string_view rest, Entry& entry, const std::string& origin,
     fail(origin, line, "stray quote in value of '" + entry.key + "'");
   }
 }
+
+// The longest key or section name read (the Magic Formula's and Adams's are under 30 characters):
+// every message that names one stays short.
+constexpr std::size_t kMaxNameLength = 64;
 
 // Matches `KEY = ...`; returns the key length or 0.
 std::size_t match_key(std::string_view s) noexcept {
@@ -264,7 +255,8 @@ std::optional<double> entry_number(const Entry* e, const std::string& origin) {
   }
   fail(origin, e->line,
        "value of '" + e->key + "' is not a number: " +
-           excerpt(e->is_quoted() ? std::string(1, e->quote) + e->value + e->quote : e->value));
+           host::text::excerpt(e->is_quoted() ? std::string(1, e->quote) + e->value + e->quote
+                                              : e->value));
 }
 std::optional<std::string> entry_value(const Entry* e) {
   if (e == nullptr) return std::nullopt;
@@ -404,6 +396,12 @@ TirFile parse_tir(std::string_view text, const std::string& origin) {
     const std::string_view t = host::text::trim_blanks(raw);
 
     const std::size_t klen = match_key(t);
+    if (klen > kMaxNameLength) {
+      fail(origin, line_no,
+           "a key of " + std::to_string(klen) + " characters (a .tir key has at most " +
+               std::to_string(kMaxNameLength) + "): '" + host::text::excerpt(t.substr(0, klen)) +
+               "'");
+    }
     Line l;
     l.line = line_no;
     l.text = std::string(raw);
@@ -417,12 +415,19 @@ TirFile parse_tir(std::string_view text, const std::string& origin) {
       const std::string_view name = host::text::trim_blanks(t.substr(1, close - 1));
       const std::string_view after = host::text::trim_blanks(t.substr(close + 1));
       if (name.empty()) fail(origin, line_no, "empty section name");
+      if (name.size() > kMaxNameLength) {
+        fail(origin, line_no,
+             "a section name of " + std::to_string(name.size()) +
+                 " characters (a .tir section name has at most " + std::to_string(kMaxNameLength) +
+                 "): '" + host::text::excerpt(name) + "'");
+      }
       if (!std::all_of(name.begin(), name.end(),
                        [](char c) { return is_key_char(c) || c == '-'; })) {
-        fail(origin, line_no, "invalid section name '" + std::string(name) + "'");
+        fail(origin, line_no, "invalid section name '" + host::text::excerpt(name) + "'");
       }
       if (!after.empty() && !is_comment_start(after.front())) {
-        fail(origin, line_no, "unexpected text after section header: '" + excerpt(after) + "'");
+        fail(origin, line_no,
+             "unexpected text after section header: '" + host::text::excerpt(after) + "'");
       }
       Section s;
       s.name = std::string(name);
@@ -480,7 +485,7 @@ TirFile parse_tir(std::string_view text, const std::string& origin) {
     } else {
       l.kind = Line::Kind::kTableRow;
       if (current == nullptr) {
-        fail(origin, line_no, "text outside any section: '" + excerpt(t) + "'");
+        fail(origin, line_no, "text outside any section: '" + host::text::excerpt(t) + "'");
       }
     }
 
@@ -494,7 +499,7 @@ TirFile parse_tir(std::string_view text, const std::string& origin) {
       if (l.kind == Line::Kind::kTableRow && in_block) {
         fail(origin, line_no,
              "line in sub-block is neither '{...}' nor quoted text in section [" + current->name +
-                 "]: '" + excerpt(t) + "'");
+                 "]: '" + host::text::excerpt(t) + "'");
       }
       for (const auto& prev : current->lines) {
         if (prev.kind == other && l.kind == Line::Kind::kEntry &&
@@ -505,7 +510,7 @@ TirFile parse_tir(std::string_view text, const std::string& origin) {
           fail(origin, prev.line,
                "line is neither 'KEY = value' nor a comment in section [" + current->name +
                    "] (a missing '='? entries follow at line " + std::to_string(line_no) + "): '" +
-                   excerpt(host::text::trim_blanks(prev.text)) + "'");
+                   host::text::excerpt(host::text::trim_blanks(prev.text)) + "'");
         }
         if (prev.kind == other) {
           fail(origin, line_no,
@@ -513,7 +518,7 @@ TirFile parse_tir(std::string_view text, const std::string& origin) {
                    ? "'KEY = value' line in table section [" + current->name + "]"
                    : "line is neither 'KEY = value' nor a comment in section [" + current->name +
                          "] (first entry at line " + std::to_string(prev.line) + "): '" +
-                         excerpt(t) + "'");
+                         host::text::excerpt(t) + "'");
         }
       }
     }
@@ -555,9 +560,16 @@ std::string ResolvedValues::warning(const std::string& origin) const {
   if (missing.empty()) return {};
   std::string out = origin + ": " + std::to_string(missing.size()) + " key" +
                     (missing.size() == 1 ? "" : "s") + " missing, defaults used: ";
-  for (std::size_t i = 0; i < missing.size(); ++i) {
+  // A file with next to nothing in it would list some 200 keys on one line: the first few, and
+  // where to see the rest.
+  constexpr std::size_t kListed = 12;
+  for (std::size_t i = 0; i < missing.size() && i < kListed; ++i) {
     if (i != 0) out += ", ";
     out += missing[i];
+  }
+  if (missing.size() > kListed) {
+    out += " … and " + std::to_string(missing.size() - kListed) +
+           " more ('tread tir info' lists them all)";
   }
   return out;
 }

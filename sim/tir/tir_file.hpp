@@ -186,7 +186,8 @@ struct KeyDefault {
 struct ResolvedValues {
   std::vector<double> values;  ///< one per KeyDefault, in order: the file's value or the default
   std::vector<std::string> missing;  ///< "SECTION.KEY" (or "KEY") of each key that took its default
-  /// Empty if nothing was missing, else "file: N keys missing, defaults used: A.B, C.D, ...".
+  /// Empty if nothing was missing, else "file: N keys missing, defaults used: A.B, C.D, ..."
+  /// (the first 12 keys, then how many more).
   std::string warning(const std::string& origin) const;
 };
 

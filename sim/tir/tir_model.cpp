@@ -7,6 +7,8 @@
 #include <sstream>
 #include <string_view>
 
+#include "io/text_line.hpp"
+
 namespace tread::tir {
 
 namespace {
@@ -167,7 +169,8 @@ DetectedModel detect_model(const TirFile& file) {
     for (const auto& f : kFunctions) {
       if (fn.find(f.contains) != std::string::npos) {
         not_mf(file, function_entry,
-               "FUNCTION_NAME '" + function_entry->value + "' is " + std::string(f.what));
+               "FUNCTION_NAME '" + host::text::excerpt(function_entry->value) + "' is " +
+                   std::string(f.what));
       }
     }
   }
@@ -179,7 +182,8 @@ DetectedModel detect_model(const TirFile& file) {
     kind = f.format;
     if (kind == Format::kOther) {
       not_mf(file, format_entry,
-             "PROPERTY_FILE_FORMAT '" + format_entry->value + "' is " + std::string(f.what));
+             "PROPERTY_FILE_FORMAT '" + host::text::excerpt(format_entry->value) + "' is " +
+                 std::string(f.what));
     }
   }
   // PAC94's own coefficients decide a file that does not say which it is: where they are all 0
@@ -213,16 +217,16 @@ DetectedModel detect_model(const TirFile& file) {
       d.model = TirModel::kMf50;
       d.name = "MF-Tyre 5.0";
       d.keys = model::kPac2002;
-      d.note = mf50_note(
-          file, "PROPERTY_FILE_FORMAT '" + format_entry->value + "' without FITTYP (MF-Tyre 5.0)");
+      d.note = mf50_note(file, "PROPERTY_FILE_FORMAT '" + host::text::excerpt(format_entry->value) +
+                                   "' without FITTYP (MF-Tyre 5.0)");
       return d;
     }
     d.model = TirModel::kPac2002;
     d.name = "PAC2002";
     d.keys = model::kPac2002;
-    d.note = known_format
-                 ? "no FITTYP"
-                 : "unknown PROPERTY_FILE_FORMAT '" + format_entry->value + "' and no FITTYP";
+    d.note = known_format ? "no FITTYP"
+                          : "unknown PROPERTY_FILE_FORMAT '" +
+                                host::text::excerpt(format_entry->value) + "' and no FITTYP";
     d.note += ": evaluated as Adams PAC2002 (MF 5.2 equations with LGAX/LGAY/LGAZ)";
     return d;
   }
@@ -244,13 +248,13 @@ DetectedModel detect_model(const TirFile& file) {
     const std::string_view named = version_named_by(format);
     if (!named.empty() && named != version_group(row.model)) {
       d.note += std::string(d.note.empty() ? "" : "; ") + "PROPERTY_FILE_FORMAT '" +
-                format_entry->value + "' names " + std::string(named) + " but FITTYP " +
-                std::to_string(code) + " is " + d.name + ": evaluated as " + d.name +
-                " (FITTYP decides)";
+                host::text::excerpt(format_entry->value) + "' names " + std::string(named) +
+                " but FITTYP " + std::to_string(code) + " is " + d.name + ": evaluated as " +
+                d.name + " (FITTYP decides)";
     }
     if (!known_format) {
       d.note += std::string(d.note.empty() ? "" : "; ") + "unknown PROPERTY_FILE_FORMAT '" +
-                format_entry->value + "': read as " + d.name + " from FITTYP";
+                host::text::excerpt(format_entry->value) + "': read as " + d.name + " from FITTYP";
     }
     return d;
   }

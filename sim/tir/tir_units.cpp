@@ -6,6 +6,8 @@
 #include <numbers>
 #include <sstream>
 
+#include "io/text_line.hpp"
+
 namespace tread::tir {
 
 namespace {
@@ -179,7 +181,8 @@ UnitSystem read_units(const TirFile& file) {
     const auto f = unit_factor(uk.quantity, name);
     if (!f) {
       throw TirError(file.origin(), e->line,
-                     "unknown unit '" + name + "' for " + std::string(uk.key) + " in [UNITS]");
+                     "unknown unit '" + host::text::excerpt(name) + "' for " + std::string(uk.key) +
+                         " in [UNITS]");
     }
     switch (uk.quantity) {
       case UnitQuantity::kLength:
@@ -233,7 +236,8 @@ std::vector<std::string> convert_to_si(TirFile& file) {
         const std::string before = l.text;
         if (!convert_row(l.text, pen, fz) && trimmed(before).rfind('{', 0) != 0) {
           throw TirError(file.origin(), l.line,
-                         "[" + s.name + "] row is not two numbers (pen fz): '" + before + "'");
+                         "[" + s.name + "] row is not two numbers (pen fz): '" +
+                             host::text::excerpt(trimmed(before)) + "'");
         }
       }
       continue;

@@ -14,6 +14,11 @@ namespace tread::tyre {
 
 namespace {
 
+// A file's text as a message quotes it (io/text_line.hpp: short, control bytes as '?').
+std::string ex(std::string_view text) {
+  return host::text::excerpt(text);
+}
+
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 constexpr double kPoundForce = 4.4482216152605;  // 1 lbf in N (exact: 0.45359237 kg · g_n)
 
@@ -290,8 +295,8 @@ InputTable::InputTable(std::istream& in, std::string name, InputTableOptions opt
         if (measured_column_[mq] >= 0) {
           throw tir::TirError(
               name_, line_,
-              "columns '" + header_[static_cast<std::size_t>(measured_column_[mq])] + "' and '" +
-                  header_[i] + "' both give " + std::string(kMeasuredSiNames[mq]));
+              "columns '" + ex(header_[static_cast<std::size_t>(measured_column_[mq])]) +
+                  "' and '" + ex(header_[i]) + "' both give " + std::string(kMeasuredSiNames[mq]));
         }
         measured_column_[mq] = static_cast<int>(i);
         measured_spec_[mq] = *m;
@@ -301,8 +306,9 @@ InputTable::InputTable(std::istream& in, std::string name, InputTableOptions opt
       const std::size_t q = index(c->quantity);
       if (column_[q] >= 0) {
         throw tir::TirError(name_, line_,
-                            "columns '" + header_[static_cast<std::size_t>(column_[q])] +
-                                "' and '" + header_[i] + "' both give " + std::string(kSiNames[q]));
+                            "columns '" + ex(header_[static_cast<std::size_t>(column_[q])]) +
+                                "' and '" + ex(header_[i]) + "' both give " +
+                                std::string(kSiNames[q]));
       }
       column_[q] = static_cast<int>(i);
       spec_[q] = *c;
@@ -377,8 +383,8 @@ bool InputTable::apply_units_row(const std::vector<std::string>& cells, int line
     }
     if (found == nullptr) {
       throw tir::TirError(name_, line_no,
-                          "unit '" + cell + "' of column '" +
-                              header_[static_cast<std::size_t>(measured_column_[q])] +
+                          "unit '" + ex(cell) + "' of column '" +
+                              ex(header_[static_cast<std::size_t>(measured_column_[q])]) +
                               "' is not a unit of " + std::string(kMeasuredSiNames[q]) +
                               " (expected " + expected + ")");
     }
@@ -397,8 +403,8 @@ bool InputTable::apply_units_row(const std::vector<std::string>& cells, int line
     }
     if (found == nullptr) {
       throw tir::TirError(name_, line_no,
-                          "unit '" + cells[static_cast<std::size_t>(column_[q])] + "' of column '" +
-                              header_[static_cast<std::size_t>(column_[q])] +
+                          "unit '" + ex(cells[static_cast<std::size_t>(column_[q])]) +
+                              "' of column '" + ex(header_[static_cast<std::size_t>(column_[q])]) +
                               "' is not a unit of " + std::string(kSiNames[q]) + " (expected " +
                               expected + ")");
     }
@@ -492,14 +498,12 @@ bool InputTable::parse_row(std::string_view line, int line_no, InputRow& row,
   }
   if (cell != cells_) wrong_cell_count(cell, line_no);
   if (bad_cell != cells_) {
-    throw tir::TirError(name_, line_no,
-                        header_[bad_cell] + ": '" + std::string(bad_text) + bad_why);
+    throw tir::TirError(name_, line_no, ex(header_[bad_cell]) + ": '" + ex(bad_text) + bad_why);
   }
   if (!comma_text.empty() && !point_text.empty()) {
     // "4.000" beside "0,05": a thousands separator (4000) or a decimal point (4)? Not guessed.
     throw tir::TirError(name_, line_no,
-                        "'" + std::string(comma_text) + "' has a decimal comma and '" +
-                            std::string(point_text) +
+                        "'" + ex(comma_text) + "' has a decimal comma and '" + ex(point_text) +
                             "' a point: with both in one row the point may be a thousands "
                             "separator; write every number with one decimal separator");
   }
@@ -538,8 +542,9 @@ std::vector<std::string> InputTable::mapping() const {
   for (std::size_t q = 0; q < kInputQuantityCount; ++q) {
     if (column_[q] < 0) continue;
     const InputQuantity quantity = static_cast<InputQuantity>(q);
-    std::string line = "'" + header_[static_cast<std::size_t>(column_[q])] + "' → " +
-                       std::string(kSiNames[q]) + " (";
+    std::string line(1, '\'');
+    line += ex(header_[static_cast<std::size_t>(column_[q])]) + "' → " + std::string(kSiNames[q]) +
+            " (";
     const bool si = std::string_view(spec_[q].unit) == recognise_input_column(kSiNames[q])->unit;
     line += si ? "in " + std::string(spec_[q].unit)
                : std::string(spec_[q].unit) + " → " +
@@ -552,8 +557,9 @@ std::vector<std::string> InputTable::mapping() const {
   for (std::size_t q = 0; q < kMeasuredQuantityCount; ++q) {
     if (measured_column_[q] < 0) continue;
     const std::string_view si_unit = q < 3 ? "N" : "N m";
-    std::string line = "'" + header_[static_cast<std::size_t>(measured_column_[q])] + "' → " +
-                       std::string(kMeasuredSiNames[q]) + " (";
+    std::string line(1, '\'');
+    line += ex(header_[static_cast<std::size_t>(measured_column_[q])]) + "' → " +
+            std::string(kMeasuredSiNames[q]) + " (";
     line += measured_spec_[q].unit == si_unit
                 ? "in " + std::string(si_unit)
                 : std::string(measured_spec_[q].unit) + " → " + std::string(si_unit);

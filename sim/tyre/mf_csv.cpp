@@ -22,6 +22,7 @@
 #include "io/line_chunks.hpp"
 #include "io/ordered_pipeline.hpp"
 #include "io/shortest_number.hpp"
+#include "io/text_line.hpp"
 #include "mf/mf_evaluate.hpp"
 #include "mf/mf_evaluate_batch.hpp"
 #include "mf/mf_evaluate_rows.hpp"
@@ -76,7 +77,7 @@ std::string describe(const Limit& l) {
 
 // Why a value may lie outside: the likely mistake in the input file.
 std::string hint(const InputTable& table, const Limit& l, double value) {
-  const std::string column = table.column_name(l.quantity);
+  const std::string column = host::text::excerpt(table.column_name(l.quantity));
   const std::string_view unit = table.column_unit(l.quantity);
   if ((l.quantity == InputQuantity::alpha || l.quantity == InputQuantity::gamma) && unit == "rad") {
     const std::string deg = l.quantity == InputQuantity::alpha ? "alpha_deg" : "gamma_deg";

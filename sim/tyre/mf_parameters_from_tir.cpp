@@ -5,6 +5,7 @@
 #include <cmath>
 #include <span>
 
+#include "io/text_line.hpp"
 #include "tir/tir_keys.hpp"
 #include "tir/tir_model.hpp"
 #include "tir/tir_units.hpp"
@@ -148,7 +149,7 @@ MfTirParameters mf_parameters_from_tir(const tir::TirFile& file) {
       side && upper(*side) == "RIGHT" ? mf::TyreSide::right : mf::TyreSide::left;
   if (side && upper(*side) != "RIGHT" && upper(*side) != "LEFT" && upper(*side) != "SYMMETRIC") {
     add_line(result.warning, file.origin() + ":" + std::to_string(file.find_any("TYRESIDE")->line) +
-                                 ": TYRESIDE = '" + *side +
+                                 ": TYRESIDE = '" + host::text::excerpt(*side) +
                                  "' is none of LEFT, RIGHT, SYMMETRIC: evaluated as LEFT "
                                  "(the file's own axes)");
   }

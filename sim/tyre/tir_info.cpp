@@ -4,6 +4,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "io/text_line.hpp"
 #include "tir/pac_coefficients.hpp"
 #include "tir/tir_model.hpp"
 #include "tir/tir_units.hpp"
@@ -31,7 +32,7 @@ std::string units_line(const tir::TirFile& file) {
   for (const char* k : {"LENGTH", "FORCE", "ANGLE", "MASS", "TIME", "PRESSURE"}) {
     if (const auto t = file.text("UNITS", k)) {
       if (!out.empty()) out += ", ";
-      out += std::string(k) + " '" + *t + "'";
+      out += std::string(k) + " '" + host::text::excerpt(*t) + "'";
     }
   }
   if (out.empty()) return "none given (SI assumed)";
@@ -59,7 +60,8 @@ std::string tir_info_report(const std::filesystem::path& path) {
   const auto format = file.text_any("PROPERTY_FILE_FORMAT");
   const auto fittyp = file.text_any("FITTYP");
   out << "model: " << model.name << " (PROPERTY_FILE_FORMAT "
-      << (format ? "'" + *format + "'" : "-") << ", FITTYP " << (fittyp ? *fittyp : "-") << ")\n";
+      << (format ? "'" + host::text::excerpt(*format) + "'" : "-") << ", FITTYP "
+      << (fittyp ? host::text::excerpt(*fittyp) : "-") << ")\n";
   out << "units: " << units_line(file) << '\n';
   if (!model.is_magic_formula()) {
     const tir::PacCoefficients pac = tir::pac_from_tir(file);

@@ -75,6 +75,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   fuzz_check(is_finite(file.y_shift_mm), "a wheel origin shift that is not finite");
   for (const std::string& w : file.warnings) {
     fuzz_check(w.find(name) != std::string::npos, "a warning that does not name the file: " + w);
+    fuzz::check_message(name, w);
   }
   return 0;
 }

@@ -32,6 +32,31 @@ inline void fuzz_check(bool ok, const std::string& what) {
   if (!ok) fuzz_fail(what);
 }
 
+/// The longest line an error or warning may have: a file's text is quoted through
+/// host::text::excerpt (80 characters), so a message stays short whatever the file holds.
+constexpr std::size_t kMaxMessageLine = 600;
+
+/// An error or warning as it reaches a terminal: lines of at most kMaxMessageLine bytes beyond the
+/// source's name, no control byte but the line break (a binary file's bytes, a 50 MB line quoted
+/// whole broke this).
+inline void check_message(std::string_view source, std::string_view message) {
+  std::size_t line_start = 0;
+  for (std::size_t i = 0; i <= message.size(); ++i) {
+    if (i == message.size() || message[i] == '\n') {
+      if (i - line_start > kMaxMessageLine + source.size()) {
+        fuzz_fail("a message line of " + std::to_string(i - line_start) +
+                  " bytes: " + std::string(message.substr(line_start, 200)) + "…");
+      }
+      line_start = i + 1;
+      continue;
+    }
+    const auto c = static_cast<unsigned char>(message[i]);
+    if (c < 0x20U || c == 0x7FU) {
+      fuzz_fail("a control byte " + std::to_string(c) + " in a message: " + std::string(message));
+    }
+  }
+}
+
 /// Runs `f`; an exception is the clear error bad input must get: derived from std::exception and
 /// its message naming the source (`source:line: ...` or `source: ...`). Anything else — a library
 /// exception with its own words ("stod", "vector::_M_range_check"), a message without the file —
@@ -51,6 +76,7 @@ bool returns_or_names_source(std::string_view source, F&& f, std::string* messag
       fuzz_fail("an error that does not name its source '" + std::string(source) +
                 "': " + std::string(what));
     }
+    check_message(source, what);
     if (message != nullptr) *message = what;
     return false;
   }

@@ -95,6 +95,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (!fuzz::returns_or_names_source(kSource, [&] { file = tir::parse_tir(text, kSource); })) {
     return 0;
   }
+  for (const std::string& w : file.warnings()) fuzz::check_message(kSource, w);
   const std::string written = tir::write_tir(file);
   tir::TirFile again;
   if (!fuzz::returns_or_names_source(kSource, [&] { again = tir::parse_tir(written, kSource); })) {
@@ -110,6 +111,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   tyre::MfTirParameters params;
   if (fuzz::returns_or_names_source(kSource,
                                     [&] { params = tyre::mf_parameters_from_tir(file); })) {
+    fuzz::check_message(kSource, params.warning);
     evaluate_everywhere(params.params);
   }
   return 0;

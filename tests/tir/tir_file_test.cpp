@@ -137,6 +137,14 @@ TEST(TirFile, ErrorsNameFileAndLine) {
   expect_error("[A]\nX = 'a' b\x01\x02\n", 2,
                "after closing quote in value of 'X': 'b?"
                "?'");
+  // Keys and section names no .tir has: refused with their length, not quoted whole.
+  expect_error("[A]\n" + std::string(100000, 'K') + " = 1\n", 2,
+               "a key of 100000 characters (a .tir key has at most 64): '" + std::string(80, 'K') +
+                   "… (100000 characters)'");
+  expect_error("[" + std::string(65, 'S') + "]\n", 1,
+               "a section name of 65 characters (a .tir section name has at most 64)");
+  EXPECT_NO_THROW(
+      parse_tir("[" + std::string(64, 'S') + "]\n" + std::string(64, 'K') + " = 1\n", "x.tir"));
 }
 
 std::filesystem::path variant(const std::string& name) {
@@ -405,6 +413,15 @@ TEST(TirFile, ResolveNumbersListsMissingKeys) {
             "x.tir: 2 keys missing, defaults used: LATERAL_COEFFICIENTS.PDY1, QSX1");
   const TirFile bad = parse_tir("[VERTICAL]\nFNOMIN = 'x'\n", "bad.tir");
   EXPECT_THROW((void)tread::tir::resolve_numbers(bad, keys), TirError);
+  // An almost empty file: the first 12 of its missing keys, then how many more (200 names on one
+  // line were printed before).
+  std::vector<KeyDefault> many;
+  std::vector<std::string> names;
+  for (int i = 0; i < 20; ++i) names.push_back("K" + std::to_string(i));
+  for (const std::string& n : names) many.push_back({"", n, 0.0});
+  EXPECT_EQ(tread::tir::resolve_numbers(f, many).warning("x.tir"),
+            "x.tir: 20 keys missing, defaults used: K0, K1, K2, K3, K4, K5, K6, K7, K8, K9, K10, "
+            "K11 … and 8 more ('tread tir info' lists them all)");
 }
 
 }  // namespace
