@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -11,6 +12,7 @@
 #include <sstream>
 #include <string>
 
+#include "io/text_line.hpp"
 #include "tir/tir_model.hpp"
 #include "tir/tir_units.hpp"
 
@@ -221,6 +223,21 @@ void pac_to_tir(const pac::PacParams<double>& p, TirFile& file) {
   set_si(file, "PAC_EXTRA", "LATERAL_STIFFNESS", p.lateral_stiffness_npm);
 }
 
+namespace {
+
+// The index of a Chrono JSON coefficient key ("a0", "a17" for letter 'a'): the letter, then
+// digits without a leading zero; nothing for any other key.
+std::optional<std::size_t> coefficient_index(const std::string& key, char letter) {
+  if (key.size() < 2 || key.size() > 4 || key.front() != letter) return std::nullopt;
+  if (key[1] == '0' && key.size() > 2) return std::nullopt;
+  std::size_t index = 0;
+  const auto [end, ec] = std::from_chars(key.data() + 1, key.data() + key.size(), index);
+  if (ec != std::errc{} || end != key.data() + key.size()) return std::nullopt;
+  return index;
+}
+
+}  // namespace
+
 PacCoefficients pac_from_chrono_json(const std::filesystem::path& path) {
   const std::string origin = path.string();
   std::ifstream in(path, std::ios::binary);
@@ -236,10 +253,10 @@ PacCoefficients pac_from_chrono_json(const std::filesystem::path& path) {
     const std::size_t upto = std::min<std::size_t>(e.byte, text.size());
     const auto line =
         1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(upto), '\n');
-    throw TirError(origin, static_cast<int>(line), std::string("JSON: ") + e.what());
+    throw TirError(origin, static_cast<int>(line), "JSON: " + host::text::excerpt(e.what(), 240));
   } catch (const nlohmann::json::exception& e) {
     // e.g. a number beyond double's range (1e999): no position given
-    throw TirError(origin, 0, std::string("JSON: ") + e.what());
+    throw TirError(origin, 0, "JSON: " + host::text::excerpt(e.what(), 240));
   }
   PacCoefficients out;
   auto read_obj = [&](const char* object, char letter, auto& arr) {
@@ -258,6 +275,24 @@ PacCoefficients pac_from_chrono_json(const std::filesystem::path& path) {
         arr[i] = 0.0;
         out.missing.push_back(std::string(object) + "." + key);
       }
+    }
+    // A key the object holds that is none of these: misspelt ('A0', 'a 0'), or beyond the
+    // model's count ('a18'). It showed only as a missing value among others, its number unused.
+    for (const auto& item : o.items()) {
+      const std::string& k = item.key();
+      const std::optional<std::size_t> index = coefficient_index(k, letter);
+      const bool read = index && *index < arr.size();
+      if (read) continue;
+      std::string lowered = k;
+      for (char& c : lowered) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      const std::optional<std::size_t> lowered_index = coefficient_index(lowered, letter);
+      const bool case_only = lowered != k && lowered_index && *lowered_index < arr.size();
+      out.warnings.push_back("\"" + std::string(object) + "\" has a key tread does not read: '" +
+                             host::text::excerpt(k) + "'" +
+                             (case_only ? " (keys are case-sensitive: '" + lowered + "'?)"
+                                        : " (it reads " + std::string(1, letter) + "0 … " +
+                                              std::string(1, letter) +
+                                              std::to_string(arr.size() - 1) + ")"));
     }
   };
   read_obj("Lateral Coefficients", 'a', out.params.a);
@@ -287,12 +322,12 @@ PacCoefficients pac_from_chrono_json(const std::filesystem::path& path) {
         for (const auto& [k, v] : value.items()) {
           static_cast<void>(v);
           if (k != "Unloaded Radius" && k != "Rolling Resistance" && k != "Lateral Stiffness") {
-            out.not_carried.push_back("Design Parameters." + k);
+            out.not_carried.push_back("Design Parameters." + host::text::excerpt(k));
           }
         }
         continue;
       }
-      out.not_carried.push_back(key);
+      out.not_carried.push_back(host::text::excerpt(key));
     }
   }
   limit_load_to_unchanged_peaks(out);

@@ -8,10 +8,13 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include "golden_path.hpp"
 #include "pac/pac89.hpp"
 #include "pac/pac94.hpp"
+#include "test_dir.hpp"
 #include "tir/pac_coefficients.hpp"
 #include "tir/tir_file.hpp"
 
@@ -136,6 +139,38 @@ TEST(PacLoaders, ChronoJsonValues) {
   EXPECT_EQ(c.missing.size(), 4U + 3U + 3U);
   EXPECT_NE(std::find(c.missing.begin(), c.missing.end(), "Lateral Coefficients.a17"),
             c.missing.end());
+  for (const std::string& w : c.warnings) {
+    EXPECT_EQ(w.find("does not read"), std::string::npos) << w;
+  }
+}
+
+// A coefficient key tread does not read is said, with the likely intended key where only its case
+// differs ('A0' showed only as a0 among the missing values, its number unused).
+TEST(PacLoaders, JsonKeysNotReadAreSaid) {
+  const auto dir = tread::testing::test_dir("pac_json_keys");
+  const auto path = dir / "keys.json";
+  {
+    std::ofstream(path) << R"({"Lateral Coefficients": {"A0": 1.5, "a1": -22, "a 2": 1, "a99": 0},
+                               "Longitudinal Coefficients": {"b00": 1},
+                               "Aligning Coefficients": {"c1": 2}})";
+  }
+  const auto c = tread::tir::pac_from_chrono_json(path);
+  EXPECT_EQ(c.params.a[0], 0.0);
+  EXPECT_EQ(c.params.a[1], -22.0);
+  const std::vector<std::string> expected = {
+      "\"Lateral Coefficients\" has a key tread does not read: 'A0' (keys are case-sensitive: "
+      "'a0'?)",
+      "\"Lateral Coefficients\" has a key tread does not read: 'a 2' (it reads a0 … a" +
+          std::to_string(c.params.a.size() - 1) + ")",
+      "\"Lateral Coefficients\" has a key tread does not read: 'a99' (it reads a0 … a" +
+          std::to_string(c.params.a.size() - 1) + ")",
+      "\"Longitudinal Coefficients\" has a key tread does not read: 'b00' (it reads b0 … b" +
+          std::to_string(c.params.b.size() - 1) + ")"};
+  std::vector<std::string> said;
+  for (const std::string& w : c.warnings) {
+    if (w.find("does not read") != std::string::npos) said.push_back(w);
+  }
+  EXPECT_EQ(said, expected);
 }
 
 TEST(PacLoaders, TirRoundTripIsExact) {
