@@ -21,6 +21,7 @@
 
 #include "cli/commands.hpp"
 #include "io/option_checks.hpp"
+#include "io/text_line.hpp"
 #include "profile/measured_profile_plot.hpp"
 #include "profile/nominal_wheel.hpp"
 #include "profile/profile_csv.hpp"
@@ -181,9 +182,15 @@ void inspect_profile(std::ostream& out, const ProfileOptions& o, const profile::
   if (f.header.empty()) {
     out << "header    (no fields used)\n";
   } else {
+    // As the file has them, but quoted short and at most 30 (a header is text no one here wrote).
+    constexpr std::size_t kListed = 30;
     out << "header    fields used:\n";
-    for (const auto& [key, value] : f.header) {
-      out << "  " << key << " = " << value << "\n";
+    for (std::size_t i = 0; i < f.header.size() && i < kListed; ++i) {
+      out << "  " << host::text::excerpt(f.header[i].first) << " = "
+          << host::text::excerpt(f.header[i].second) << "\n";
+    }
+    if (f.header.size() > kListed) {
+      out << "  … and " << f.header.size() - kListed << " more\n";
     }
   }
   out << "points    " << p.y_mm.size() << "\n";

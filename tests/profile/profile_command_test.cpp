@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <sstream>
 #include <string>
@@ -205,6 +206,28 @@ TEST(ProfileCommand, InputInspectShowsTheFileAndItsMeasures) {
   const CommandResult wrong = run("--input " + prr.string() + " --role wheel");
   EXPECT_NE(wrong.status, 0);
   EXPECT_NE(wrong.out.find("MBench_UIC60_v3.prr"), std::string::npos) << wrong.out;
+}
+
+// The header's fields as the summary lists them: each quoted short, at most 30 of them (a header
+// line of 100 000 characters with control bytes in it was printed whole).
+TEST(ProfileCommand, InputInspectQuotesAHeaderShortly) {
+  const auto whl = ::tread::testing::test_data("profiles/s1002_measured.whl");
+  std::ifstream in(whl, std::ios::binary);
+  const std::string original((std::istreambuf_iterator<char>(in)),
+                             std::istreambuf_iterator<char>());
+  std::string header = "Comment=" + std::string(100000, 'c') + "\x1b[2J\n";
+  for (int i = 0; i < 40; ++i) header += "Note" + std::to_string(i) + "=n\n";
+  const auto path = tmp_dir() / "long_header.whl";
+  std::ofstream(path, std::ios::binary) << header << original;
+  const CommandResult r = run("--input " + path.string());
+  ASSERT_EQ(r.status, 0) << r.out.substr(0, 2000);
+  EXPECT_NE(r.out.find("  Comment = " + std::string(80, 'c') + "… (100004 characters)\n"),
+            std::string::npos)
+      << r.out.substr(0, 2000);
+  // 41 lines written, 6 in the file and 2 tread adds (the flange tip and back it found).
+  EXPECT_NE(r.out.find("  … and 19 more\n"), std::string::npos) << r.out.substr(0, 2000);
+  EXPECT_EQ(r.out.find('\x1b'), std::string::npos);
+  EXPECT_LT(r.out.size(), 20000U);
 }
 
 /// quantity -> value from `--measure --format csv`.
