@@ -69,9 +69,13 @@ T my(const MfParameters<P>& p, const Prepared<T>& in, const T& fx) {
         (load * pressure);
   }
   m = if_else(vcx < T(0), -m, m);
-  // Low-speed model ("empirically discovered").
+  // Low-speed model ("empirically discovered"): My fades to 0 as the wheel's rotation stops
+  // (κ = −1) and reverses beyond it, over the band where the circumferential speed is within
+  // VXLOW, κ = −1 ± VXLOW/|Vx|. MFeval writes the lower end as −1 − VXLOW − high_limit, which is
+  // this band only where VXLOW is 1 (in m/s; the same bits there); with VXLOW = 0.1 m/s it put
+  // the reversal at κ ≈ −0.1 and gave a driving My under ordinary braking at 17 m/s.
   const T high_limit = p.vxlow_mps / abs(vcx) - T(1);
-  const T low_limit = T(-1) - p.vxlow_mps - high_limit;
+  const T low_limit = T(-2) - high_limit;
   const auto reduced = !(kappa < low_limit) && !(kappa > high_limit);
   if (any_lane(reduced)) {
     // interpolate((−1, 0), (high_limit, π/2)) at κ

@@ -63,6 +63,41 @@ TEST(MfEvaluate, ZeroOrNegativeLoadGivesNoForces) {
   }
 }
 
+// The rolling resistance moment resists the wheel's rotation: My < 0 while the wheel turns
+// forward (κ > −1 at Vx > 0), > 0 once it spins backward (κ < −1), faded to 0 across the band
+// κ = −1 ± VXLOW/|Vx| and continuous there, whatever VXLOW. MFeval's lower band end,
+// −1 − VXLOW − (VXLOW/|Vx| − 1), is that only at VXLOW = 1 m/s: at 0.1 m/s My drove the wheel
+// under braking beyond κ ≈ −0.1 (+17.8 N m at κ = −0.3, 16.7 m/s).
+TEST(MfEvaluate, RollingResistanceMomentResistsTheRotationAtAnyVxlow) {
+  for (const double vxlow : {0.1, 0.5, 1.0, 3.0}) {
+    MfParameters<double> p;
+    p.vxlow_mps = vxlow;
+    p.kpumin = -1.9;
+    const MfOptions o = options_from_use_mode(111).value;
+    for (const double vx : {5.0, 16.7, 30.0}) {
+      const double band = vxlow / vx;
+      for (const double kappa : {-0.9, -0.5, -0.3, -0.1, 0.0, 0.1}) {
+        if (kappa <= -1.0 + band) continue;
+        EXPECT_LT(evaluate(p, make_input(4000.0, kappa, 0.0, 0.0, vx), o).my_nm, 0.0)
+            << "VXLOW " << vxlow << ", Vx " << vx << ", κ " << kappa;
+        MfInput<float> in;
+        in.fz_n = 4000.0f;
+        in.kappa = static_cast<float>(kappa);
+        in.vx_mps = static_cast<float>(vx);
+        EXPECT_LT(evaluate(convert_parameters<float>(p), in, o).my_nm, 0.0f);
+      }
+      const double behind = -1.0 - band - 0.05;
+      EXPECT_GT(evaluate(p, make_input(4000.0, behind, 0.0, 0.0, vx), o).my_nm, 0.0)
+          << "VXLOW " << vxlow << ", Vx " << vx;
+      // Continuous where the band ends below: the faded value meets the reversed one.
+      const double end = -1.0 - band;
+      const double below = evaluate(p, make_input(4000.0, end - 1e-9, 0.0, 0.0, vx), o).my_nm;
+      const double inside = evaluate(p, make_input(4000.0, end + 1e-9, 0.0, 0.0, vx), o).my_nm;
+      EXPECT_NEAR(below, inside, 1e-6 * std::fabs(below)) << "VXLOW " << vxlow << ", Vx " << vx;
+    }
+  }
+}
+
 TEST(MfEvaluate, PureSlipShape) {
   // Book tyre, no shifts: Fx(κ) odd, Fx'(0) = Kxk, Fy'(0) = Kya (mode 211: no low-speed effects).
   const MfParameters<double> p;
