@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 namespace tread::tyre {
 
@@ -136,9 +137,41 @@ void check_mf_parameters(const mf::MfParameters<double>& p, const tir::TirFile& 
   plausible("UNLOADED_RADIUS", p.unloaded_radius_m, 0.05, 2.5, "m", "a tyre's free radius");
   plausible("FNOMIN", p.fnomin_n, 50.0, 1e6, "N", "a tyre's nominal load");
   plausible("LONGVL", p.longvl_mps, 0.5, 150.0, "m/s", "a measuring speed");
+  plausible("VXLOW", p.vxlow_mps, 0.1, 10.0, "m/s", "a low-speed limit");
+  plausible("VERTICAL_STIFFNESS", p.vertical_stiffness_npm, 1e4, 1e8, "N/m",
+            "a tyre's vertical stiffness");
   if (p.fit_type == mf::FitType::mf61 || p.fit_type == mf::FitType::mf62) {
     plausible("NOMPRES", p.nompres_pa, 2e4, 3e6, "Pa", "a tyre's nominal pressure");
+    plausible("INFLPRES", p.inflpres_pa, 2e4, 3e6, "Pa", "a tyre's pressure");
+    plausible("PRESMIN", p.presmin_pa, 1e4, 3e6, "Pa", "a tyre's pressure");
+    plausible("PRESMAX", p.presmax_pa, 2e4, 1e7, "Pa", "a tyre's pressure");
     plausible("WIDTH", p.width_m, 0.02, 2.0, "m", "a tyre's width");
+    // The pressure used where the input gives none is INFLPRES clamped to the range, as any
+    // pressure is: said, since the file names another (500 kPa above a 400 kPa PRESMAX was
+    // evaluated at 400 kPa under status ok).
+    if (p.inflpres_pa < p.presmin_pa || p.inflpres_pa > p.presmax_pa) {
+      const double used = p.inflpres_pa < p.presmin_pa ? p.presmin_pa : p.presmax_pa;
+      warn(warning, file, "INFLPRES",
+           "INFLPRES = " + value_text(p.inflpres_pa) + " Pa lies outside PRESMIN…PRESMAX (" +
+               value_text(p.presmin_pa) + "…" + value_text(p.presmax_pa) +
+               " Pa): without a pressure input the tyre is evaluated at " + value_text(used) +
+               " Pa");
+    }
+    // The structural stiffnesses give Cx, Cy and the relaxation lengths σ = K/C (MF 6.x): at or
+    // below 0 those are meaningless (σ printed positive from a negative C, 0 from C = 0, where
+    // the node's --relaxation takes 0 for "no lag").
+    for (const auto& [key, v] : {std::pair{"LONGITUDINAL_STIFFNESS", p.longitudinal_stiffness_npm},
+                                 std::pair{"LATERAL_STIFFNESS", p.lateral_stiffness_npm}}) {
+      if (file.find_any(key) == nullptr) continue;
+      if (!(v > 0.0)) {
+        warn(warning, file, key,
+             std::string(key) + " = " + value_text(v) +
+                 ": the relaxation lengths and the structural stiffnesses Cx, Cy computed from it "
+                 "are meaningless");
+      } else {
+        plausible(key, v, 1e4, 1e8, "N/m", "a tyre's structural stiffness");
+      }
+    }
   }
   if (p.fnomin_n < p.fzmin_n || p.fnomin_n > p.fzmax_n) {
     warn(warning, file, "FNOMIN",

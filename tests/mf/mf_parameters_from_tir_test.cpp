@@ -7,6 +7,9 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "golden_path.hpp"
 #include "mf/mf_evaluate.hpp"
@@ -64,6 +67,48 @@ TEST(MfParametersFromTir, RangesWithoutZeroUnitsOffByFactorsAndKeysTwiceAreSaid)
   EXPECT_DOUBLE_EQ(twice.params.fnomin_n, 3000.0);
   EXPECT_NE(twice.warning.find("'FNOMIN' is also in [DIMENSION]"), std::string::npos)
       << twice.warning;
+}
+
+// From a second audit: values in the wrong unit or out of their range that changed outputs under
+// status ok without a word: INFLPRES above PRESMAX (evaluated at PRESMAX), PRESMIN/PRESMAX in kPa
+// in an SI file (every row at 400 Pa), a vertical or structural stiffness left in N/mm or N/m
+// beside an mm file, a structural stiffness of 0 or below (σ = 0 or |K/C|), VXLOW in mm/s left at
+// 1 (0.001 m/s).
+TEST(MfParametersFromTir, PressuresStiffnessesAndVxlowNoTyreHasAreSaid) {
+  std::ifstream in(testing::tyre_file("MagicFormula61_Parameters.tir"));
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string original = buffer.str();
+  const auto warning_with = [&](const std::vector<std::pair<std::string, std::string>>& values) {
+    std::string text = original;
+    for (const auto& [key, value] : values) {
+      const std::size_t at = text.find("\n" + key + " ");
+      EXPECT_NE(at, std::string::npos) << key;
+      const std::size_t eol = text.find('\n', at + 1);
+      text.replace(at + 1, eol - at - 1, key + " = " + value);
+    }
+    return tyre::mf_parameters_from_tir(tir::parse_tir(text, "e.tir")).warning;
+  };
+  const auto expect_said = [](const std::string& warning, const std::string& what) {
+    EXPECT_NE(warning.find(what), std::string::npos) << what << "\n" << warning;
+  };
+  expect_said(warning_with({{"INFLPRES", "500000"}}),
+              "e.tir:32: INFLPRES = 5e+05 Pa lies outside PRESMIN…PRESMAX (2e+05…4e+05 Pa): "
+              "without a pressure input the tyre is evaluated at 4e+05 Pa");
+  const std::string kpa = warning_with({{"PRESMIN", "200"}, {"PRESMAX", "400"}});
+  expect_said(kpa, "PRESMIN = 200 Pa in SI");
+  expect_said(kpa, "PRESMAX = 400 Pa in SI");
+  expect_said(warning_with({{"VERTICAL_STIFFNESS", "314931296.9"}}),
+              "N/m in SI: a tyre's vertical stiffness lies within");
+  expect_said(warning_with({{"LONGITUDINAL_STIFFNESS", "391.2"}}),
+              "LONGITUDINAL_STIFFNESS = 391.2 N/m in SI");
+  expect_said(warning_with({{"LATERAL_STIFFNESS", "0"}}),
+              "LATERAL_STIFFNESS = 0: the relaxation lengths and the structural stiffnesses");
+  expect_said(warning_with({{"LONGITUDINAL_STIFFNESS", "-391219"}}),
+              "LONGITUDINAL_STIFFNESS = -391219:");
+  expect_said(warning_with({{"VXLOW", "0.001"}}), "VXLOW = 0.001 m/s in SI");
+  // The file as shipped: none of these.
+  EXPECT_EQ(warning_with({{"VXLOW", "1"}}), "");
 }
 
 TEST(MfParametersFromTir, CompleteMf62FileReportsNoMissingKeys) {
