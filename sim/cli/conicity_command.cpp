@@ -13,6 +13,7 @@
 #include <iomanip>
 #include <iostream>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -85,7 +86,8 @@ void add_conicity_command(CLI::App& app) {
                   << y_max << " mm\n";
       }
     }
-    if (const auto end_y = contact::first_profile_end_abs_y(t); end_y && *end_y <= a_max + 1.0) {
+    const std::optional<double> end_y = contact::first_profile_end_abs_y(t);
+    if (end_y && *end_y <= a_max + 1.0) {
       std::cerr << "tread conicity: warning: from |y| = " << *end_y
                 << " mm the contact lies at the end of a profile (the profiles do not cover it)\n";
     }
@@ -101,10 +103,14 @@ void add_conicity_command(CLI::App& app) {
     };
     // Where the flange takes the contact (90 % of its angle): an amplitude reaching it measures
     // flange contact or climbing, not the tread's conicity.
+    // A flange is where the contact angle reaches 0.5 rad (29°; a tread's is a few degrees): the
+    // largest angle of a scan that never reaches a flange (a wheelset with too much play, a
+    // profile without a flange) is not one, and every row was noted as flange contact.
+    constexpr double kFlangeContact_rad = 0.5;
     const contact::FlangeAngles flange = contact::profile_flange_angles(c, y_max);
     const double flange_rad = 0.9 * std::min(flange.left_rad, flange.right_rad);
     double flange_y = std::numeric_limits<double>::infinity();
-    for (std::size_t k = 0; k < t.y_mm.size(); ++k) {
+    for (std::size_t k = 0; k < t.y_mm.size() && flange_rad >= 0.9 * kFlangeContact_rad; ++k) {
       if (std::max(t.gamma_left_rad[k], t.gamma_right_rad[k]) >= flange_rad) {
         flange_y = std::min(flange_y, std::abs(t.y_mm[k]));
       }
@@ -116,6 +122,13 @@ void add_conicity_command(CLI::App& app) {
         std::snprintf(at, sizeof at, "%.2f", flange_y);
         note = std::string("flange contact within the motion (from |y| = ") + at +
                " mm): a flange's slope rather than the tread's conicity";
+      }
+      if (end_y && a >= *end_y) {
+        char at[32];
+        std::snprintf(at, sizeof at, "%.2f", *end_y);
+        note += std::string(note.empty() ? "" : "; ") +
+                "contact at the end of a profile within the motion (from |y| = " + at +
+                " mm): the profiles do not cover it";
       }
       std::cout << std::fixed << std::setprecision(3) << a << ',';
       try {
@@ -135,6 +148,11 @@ void add_conicity_command(CLI::App& app) {
         const contact::RegressionResult r = contact::linearised_conicity(t, a);
         std::cout << std::setprecision(5) << r.tan_gamma_e << ',' << std::setprecision(4)
                   << r.centre_y_mm << ',';
+        if (r.tan_gamma_e < 0.0) {
+          note += std::string(note.empty() ? "" : "; ") +
+                  "annex C negative: delta r falls as the wheelset moves over (a hollow tread, an "
+                  "unstable centre)";
+        }
       } catch (const std::domain_error& e) {
         std::cout << "nan,nan,";
         note += std::string(note.empty() ? "" : "; ") + "annex C: " + e.what();

@@ -359,7 +359,56 @@ RigidContact build_contact(const ContactSetup& setup, std::vector<std::string>& 
   // A wheelset without lateral play (wheel files: the built-in wheels' e is checked before): both
   // flanges on their rails with the wheelset centred.
   constexpr double kFlangeContact_rad = 0.5;
-  const ContactState centred = contact.at(0.0);
+  const auto gauge_text = [&] {
+    char text[160];
+    if (setup.rail_frame == "track") {
+      std::snprintf(text, sizeof text,
+                    "--b2b %g mm on the rails of a track-frame file (gauge %.1f mm)",
+                    setup.back_to_back_mm, track_frame_gauge_mm(rail));
+    } else {
+      std::snprintf(text, sizeof text, "--b2b %g mm, --gauge %g mm", setup.back_to_back_mm,
+                    setup.gauge_mm);
+    }
+    return std::string(text);
+  };
+  ContactState centred;
+  try {
+    centred = contact.at(0.0);
+  } catch (const std::domain_error& e) {
+    // The wheels stand beside the rails: a back-to-back that does not go with the gauge.
+    throw std::invalid_argument((files.empty() ? "" : files + ": ") + gauge_text() +
+                                ": the centred wheelset's wheels do not stand on the rails (" +
+                                e.what() +
+                                "); a wheelset's back-to-back is its gauge less about 75 mm "
+                                "(1360 on 1435)");
+  }
+  // Far too much play: 25 mm toward either rail without a flange touching it (a wheelset has
+  // 3 to 10 mm each side): the tread's outer slope on the rail's gauge corner was taken for
+  // the wheelset's conicity.
+  constexpr double kPlayMax_mm = 25.0;
+  for (const double side : {-1.0, 1.0}) {
+    double largest_rad = 0.0;
+    bool flange = false;
+    for (double y = 0.0; y <= kPlayMax_mm && !flange; y += 0.5) {
+      try {
+        const ContactState moved = contact.at(side * y);
+        largest_rad = std::max({largest_rad, moved.left.gamma_rad, moved.right.gamma_rad});
+        flange = largest_rad >= kFlangeContact_rad;
+      } catch (const std::domain_error&) {
+        flange = true;  // the wheels leave the rails: the profiles end before a flange is found
+      }
+    }
+    if (!flange) {
+      char text[200];
+      std::snprintf(text, sizeof text,
+                    ": moved %g mm toward a rail the wheelset has no flange on it (largest "
+                    "contact angle %.3f rad): far more play than a wheelset has; is --b2b right "
+                    "for the gauge?",
+                    kPlayMax_mm, largest_rad);
+      warnings.push_back((files.empty() ? "" : files + ": ") + gauge_text() + text);
+      break;
+    }
+  }
   if (centred.left.gamma_rad > kFlangeContact_rad && centred.right.gamma_rad > kFlangeContact_rad) {
     char text[512];
     if (setup.rail_frame == "track") {

@@ -688,11 +688,38 @@ ProfileFile read_profile_file(const std::filesystem::path& path, ProfileRole rol
                              " mm apart (median): too coarse for contact angles and conicity, "
                              "which take the straight lines between them (measured profiles are "
                              "sampled every 0.1 to 0.5 mm)");
+    } else {
+      // One gap among fine points: where the contact falls into it, the straight line across it
+      // is taken for the profile (a 20 mm gap in the tread gave a conicity 20 times too small).
+      const auto& y = out.profile.y_mm;
+      std::size_t widest = 1;
+      for (std::size_t k = 2; k < y.size(); ++k) {
+        if (y[k] - y[k - 1] > y[widest] - y[widest - 1]) widest = k;
+      }
+      const double gap = y[widest] - y[widest - 1];
+      if (gap > 2.0 && gap > 10.0 * median_gap) {
+        out.warnings.push_back(file + ": no points between y = " + num(y[widest - 1]) + " and " +
+                               num(y[widest]) + " mm (a gap of " + num(gap) +
+                               " mm where the points are " + num(median_gap) +
+                               " mm apart): a contact there lies on the straight line across it");
+      }
     }
   }
   warn_spikes(out.profile, file, out);
   if (role == ProfileRole::kWheel) {
     check_wheel(out.profile, file, options, out);
+    // A wheel's z is referred to its taping line (y = 0, where --r0 is the radius): a file that
+    // stops short of it (a flange only, a cut file) gave z(0) as the end point's and contacts
+    // at the end of the profile under ok.
+    // (Kept as it is with locate_wheel_origin off: check_wheel has said where its back lies.)
+    if (options.locate_wheel_origin &&
+        (out.profile.y_mm.front() > 0.0 || out.profile.y_mm.back() < 0.0)) {
+      throw std::runtime_error(
+          file + ": the wheel's points run from y = " + num(out.profile.y_mm.front()) + " to " +
+          num(out.profile.y_mm.back()) +
+          " mm and do not reach the taping line (y = 0, 70 mm from the flange back), where the "
+          "wheel's radius is referred");
+    }
     if (!miniprof_wheel) {
       // z is the radius increase over the taping line (r0 is the radius there): a file whose z
       // at y = 0 is far from 0 (an absolute radius, another reference) is referred to it.

@@ -127,6 +127,11 @@ SimpackBlocks read_blocks(std::istream& in, const std::string& source_name) {
   if (!saw_points || blocks.points.size() < 2) {
     host::text::fail_at(source_name, line_no, "no point block with at least 2 points");
   }
+  if (block == "point") {
+    // A file cut short (a copy or download that stopped): its points end wherever it did.
+    host::text::fail_at(source_name, line_no,
+                        "the file ends inside a point block (no point.end): it is cut short");
+  }
   return blocks;
 }
 

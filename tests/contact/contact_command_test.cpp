@@ -226,6 +226,66 @@ TEST(ContactCommand, AmplitudeWithoutOscillationIsMarked) {
       << text_of(log);
 }
 
+// From an audit of profiles no one here wrote: a wheelset with far more play than any (gauge 1520
+// at the standard back-to-back) had every row noted as flange contact, its largest contact angle
+// (the 1:15 tread on the gauge corner) taken for the flange's; a gauge the back-to-back does not
+// fit was refused without naming either; a hollow tread's negative annex C conicity read ok; a
+// motion reaching a profile's end read ok.
+TEST(ContactCommand, PlayGapsHollowsAndProfileEndsAreSaid) {
+  const fs::path out = tmp_dir() / "c.csv";
+  const fs::path log = tmp_dir() / "c.log";
+  ASSERT_EQ(run("conicity --wheel S1002 --rail 60E1 --gauge 1520 --amplitudes 1,3", out, log), 0);
+  EXPECT_NE(text_of(log).find("--b2b 1360 mm, --gauge 1520 mm: moved 25 mm toward a rail the "
+                              "wheelset has no flange on it (largest contact angle 0.067 rad)"),
+            std::string::npos)
+      << text_of(log);
+  EXPECT_EQ(text_of(out).find("flange contact"), std::string::npos) << text_of(out);
+  // The standard wheelset: no such warning.
+  ASSERT_EQ(run("conicity --wheel S1002 --rail 60E1 --amplitudes 1,3", out, log), 0);
+  EXPECT_EQ(text_of(log).find("no flange"), std::string::npos) << text_of(log);
+
+  EXPECT_NE(run("conicity --wheel S1002 --rail 60E1 --gauge 1668 --amplitudes 1", out, log), 0);
+  EXPECT_NE(text_of(log).find("--b2b 1360 mm, --gauge 1668 mm: the centred wheelset's wheels do "
+                              "not stand on the rails"),
+            std::string::npos)
+      << text_of(log);
+
+  // The clean S1002 with a 1 mm hollow about the taping line, and with its tread cut off beyond
+  // y = 10 mm (the rails then meet the profile's last point).
+  const fs::path clean = tread::testing::test_data("profiles/s1002_clean.csv");
+  std::ifstream in(clean);
+  std::string line;
+  std::getline(in, line);
+  std::ofstream hollow(tmp_dir() / "hollow.csv");
+  std::ofstream cut(tmp_dir() / "cut.csv");
+  hollow << line << '\n';
+  cut << line << '\n';
+  while (std::getline(in, line)) {
+    const double y = std::stod(line.substr(0, line.find(',')));
+    double z = std::stod(line.substr(line.find(',') + 1));
+    if (y <= 10.0) cut << line << '\n';
+    if (std::fabs(y) < 25.0) z -= std::pow(std::cos(3.141592653589793 * y / 50.0), 2);
+    hollow << y << ',' << z << '\n';
+  }
+  hollow.close();
+  cut.close();
+  ASSERT_EQ(run("conicity --wheel-file " + (tmp_dir() / "hollow.csv").string() +
+                    " --rail 60E1 --amplitudes 0.5",
+                out, log),
+            0);
+  EXPECT_NE(text_of(out).find("annex C negative: delta r falls"), std::string::npos)
+      << text_of(out);
+  ASSERT_EQ(run("conicity --wheel-file " + (tmp_dir() / "cut.csv").string() +
+                    " --rail 60E1 --amplitudes 1,6",
+                out, log),
+            0);
+  const std::string cut_rows = text_of(out);
+  EXPECT_NE(cut_rows.find("6.000,"), std::string::npos) << cut_rows;
+  EXPECT_NE(cut_rows.substr(cut_rows.find("6.000,")).find("contact at the end of a profile"),
+            std::string::npos)
+      << cut_rows;
+}
+
 TEST(ContactCommand, BadInputFailsWithAMessage) {
   const fs::path err = tmp_dir() / "bad.log";
   const fs::path dir = tread::testing::test_data("rail/en15302");

@@ -119,6 +119,44 @@ TEST(ProfileFile, OffOriginWheelIsLocatedByItsFlangeBack) {
   EXPECT_TRUE(has_warning(kept, "74.000 mm from -70"));
 }
 
+// A wheel cut short of its taping line (a flange only), a tread with one gap among fine points,
+// a SIMPACK file that ends inside its point block: each was read without a word, the first with
+// z(0) taken from its last point and contacts at its end under ok.
+TEST(ProfileFile, CutWheelsGapsAndCutFilesAreSaid) {
+  const SampledProfile clean = read_profile_csv(corpus("s1002_clean.csv"));
+  const fs::path dir = testing::test_dir("profile_file_test_cut");
+  const auto write_csv = [&](const std::string& name, const auto& keep) {
+    std::ofstream out(dir / name);
+    out << "y_mm,z_mm\n";
+    for (std::size_t k = 0; k < clean.y_mm.size(); ++k) {
+      if (keep(clean.y_mm[k])) out << clean.y_mm[k] << ',' << clean.z_mm[k] << '\n';
+    }
+    return dir / name;
+  };
+  const fs::path flange = write_csv("flange.csv", [](double y) { return y <= -14.0; });
+  EXPECT_NE(error_of(flange, ProfileRole::kWheel)
+                .find("flange.csv: the wheel's points run from y = -70.000 to -14.000 mm and do "
+                      "not reach the taping line"),
+            std::string::npos)
+      << error_of(flange, ProfileRole::kWheel);
+  const fs::path gap = write_csv("gap.csv", [](double y) { return y <= 0.0 || y >= 20.0; });
+  const ProfileFile with_gap = read_profile_file(gap, ProfileRole::kWheel);
+  EXPECT_TRUE(
+      has_warning(with_gap, "no points between y = 0.000 and 20.000 mm (a gap of 20.000 mm"))
+      << (with_gap.warnings.empty() ? "" : with_gap.warnings[0]);
+  EXPECT_FALSE(has_warning(read_profile_file(corpus("s1002_clean.csv"), ProfileRole::kWheel),
+                           "no points between"));
+  const fs::path prw = dir / "cut.prw";
+  {
+    std::ifstream in(testing::test_data("rail/manchester_benchmark/MBench_S1002_v3.prw"));
+    std::ofstream out(prw);
+    std::string line;
+    for (int k = 0; k < 250 && std::getline(in, line); ++k) out << line << '\n';
+  }
+  EXPECT_NE(error_of(prw, ProfileRole::kWheel).find("ends inside a point block"), std::string::npos)
+      << error_of(prw, ProfileRole::kWheel);
+}
+
 TEST(ProfileFile, PointsSpanningMoreThanAMetreAreRefusedWithTheirLines) {
   // A rail whose one point lies 26 km off (found by fuzzing: resampled at 0.5 mm it took 30 s and
   // 1.7 GB); a file in micrometres reads the same way.
