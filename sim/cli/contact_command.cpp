@@ -6,10 +6,12 @@
 // FASTSIM) from the wheelset motion given, Y/Q and Nadal's margin.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -162,7 +164,29 @@ void add_contact_command(CLI::App& app) {
       ->check(host::finite_within(0.001, 10.0, "the table step in mm"));
   cmd->add_option("--output", output, "CSV file (default: standard output)");
   cmd->add_option("--plot", plot, "PNG: delta r(y) and the contact positions (gnuplot)");
-  cmd->callback([] {
+  cmd->callback([cmd] {
+    if (!(mechanics.load_n > 0.0)) {
+      // The forces' options without --load were silently ignored.
+      for (const char* name : {"--load-right", "--speed", "--yaw", "--lateral-velocity",
+                               "--yaw-rate", "--axle-spin", "--friction", "--mu", "--creep-law",
+                               "--e-wheel", "--nu-wheel", "--e-rail", "--nu-rail"}) {
+        if (cmd->count(name) > 0) {
+          throw std::invalid_argument(std::string(name) +
+                                      " applies to the contact forces: give --load (N) too");
+        }
+      }
+    }
+    // A whole number of steps each side, so that the table is symmetric about y = 0 and ends
+    // at ±ymax (--ymax 1 --step 0.3 gave rows -1.0 … 0.8, without y = 0).
+    const double steps = y_max_mm / step_mm;
+    if (std::fabs(steps - std::round(steps)) > 1e-6) {
+      char text[160];
+      std::snprintf(text, sizeof text,
+                    "--ymax %g mm is not a whole number of --step %g mm: the table would not be "
+                    "symmetric about y = 0",
+                    y_max_mm, step_mm);
+      throw std::invalid_argument(text);
+    }
     std::vector<std::string> warnings;
     const contact::RigidContact c = contact::build_contact(setup, warnings);
     for (const std::string& w : warnings) {

@@ -6,6 +6,7 @@
 // plotted (--plot: profile, local slope and, for a wheel, its nominal EN 13715 profile and the
 // difference) or converted (--format csv|prw|prr).
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -394,7 +395,27 @@ void add_profile_command(CLI::App& app) {
   cmd->add_option("--plot", options->plot,
                   "PNG: profile, slope, and the slopes of the three families (gnuplot); with "
                   "--input: profile, local slope, nominal profile and measured - nominal");
-  cmd->callback([options] { run_profile(*options); });
+  cmd->callback([options, cmd] {
+    // An option of the other mode was silently ignored (a nominal wheel's shape with --input, a
+    // file's reading options without one): refused, naming it.
+    const bool input = !options->input.empty();
+    static constexpr std::array<const char*, 7> kShape{
+        "--family",     "--flange-height", "--flange-thickness", "--outer-slope", "--width",
+        "--no-chamfer", "--step"};
+    static constexpr std::array<const char*, 7> kReading{
+        "--role", "--input-format", "--z-down", "--mirror-y", "--slope-window", "", ""};
+    for (const char* name : input ? kShape : kReading) {
+      if (*name == '\0') continue;
+      if (cmd->count(name) > 0) {
+        throw std::invalid_argument(
+            std::string(name) +
+            (input ? " shapes a built-in wheel: not used with --input (compare the file with "
+                     "one by --nominal)"
+                   : " applies to --input only"));
+      }
+    }
+    run_profile(*options);
+  });
 }
 
 }  // namespace

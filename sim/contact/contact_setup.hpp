@@ -13,6 +13,13 @@
 
 namespace tread::contact {
 
+/// Reading options whose hints name the command line's options with `prefix` ("--wheel-").
+inline profile::ProfileReadOptions read_options(const char* prefix) {
+  profile::ProfileReadOptions o;
+  o.option_prefix = prefix;
+  return o;
+}
+
 struct ContactSetup {
   std::string wheel_spec;        ///< built-in wheel, e.g. "S1002:h=28,e=32.5,slope=1:15"
   std::string wheel_file;        ///< left wheel (and right unless wheel_right_file) file
@@ -21,8 +28,8 @@ struct ContactSetup {
   std::string rail_file;         ///< rail file (CSV, .prr, .ban)
   /// How the wheel files (both) and the rail file are read (format, z down, mirror y; see
   /// profile_file.hpp).
-  profile::ProfileReadOptions wheel_read;
-  profile::ProfileReadOptions rail_read;
+  profile::ProfileReadOptions wheel_read = read_options("--wheel-");
+  profile::ProfileReadOptions rail_read = read_options("--rail-");
   std::string rail_frame =
       "upright";              ///< "upright" (own frame, placed by cant and gauge) | "track"
   std::string cant = "1:40";  ///< rail inclination: "1:N", "none" or "0"

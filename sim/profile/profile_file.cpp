@@ -421,9 +421,8 @@ void check_wheel(SampledProfile& w, const std::string& file, const ProfileReadOp
       throw std::runtime_error(
           file + ": the wheel's flange points toward -z (its tip is the lowest point, at y = " +
           num(down.y_tip) + " mm): this project's wheel z is the radius increase, + toward the " +
-          "flange tip; " +
-          (options.z_down ? "do not pass --wheel-z-down (ProfileReadOptions::z_down)"
-                          : "pass --wheel-z-down (ProfileReadOptions::z_down)"));
+          "flange tip; " + (options.z_down ? "do not pass " : "pass ") + options.option_prefix +
+          "z-down");
     }
     // No flange (a cone, a tread-only profile): nothing to locate by, and no flange contact.
     out.warnings.push_back(file +
@@ -444,9 +443,8 @@ void check_wheel(SampledProfile& w, const std::string& file, const ProfileReadOp
     throw std::runtime_error(
         file + ": the wheel's flange (tip at y = " + num(up.y_tip) +
         " mm) is on the +y side of its tread: this project's wheel y is + toward the field " +
-        "side, the flange at negative y; " +
-        (options.mirror_y ? "do not pass --wheel-mirror-y (ProfileReadOptions::mirror_y)"
-                          : "pass --wheel-mirror-y (ProfileReadOptions::mirror_y)"));
+        "side, the flange at negative y; " + (options.mirror_y ? "do not pass " : "pass ") +
+        options.option_prefix + "mirror-y");
   }
   const double offset = y0 + kTapingLineFromFlangeBack_mm;  // flange back found at -70 + offset
   const bool back_measured = z_at(w, y0 + 1.0) - w.z_mm.front() >= kSteepRise_mm;
@@ -750,9 +748,8 @@ ProfileFile read_profile_file(const std::filesystem::path& path, ProfileRole rol
       throw std::runtime_error(file + ": the rail head's lowest point is inside the profile (y = " +
                                num(out.profile.y_mm[static_cast<std::size_t>(lowest - z.begin())]) +
                                " mm) with its ends above it: z points down; " +
-                               (options.z_down
-                                    ? "do not pass --rail-z-down (ProfileReadOptions::z_down)"
-                                    : "pass --rail-z-down (ProfileReadOptions::z_down)"));
+                               (options.z_down ? "do not pass " : "pass ") + options.option_prefix +
+                               "z-down");
     }
     {
       // A wheel given as the rail: its flange is the highest part, narrow, with the tread beside.

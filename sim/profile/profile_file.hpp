@@ -62,6 +62,9 @@ struct ProfileReadOptions {
   double origin_tolerance_mm = 1.0;
   /// > 0: the cleaned profile is resampled (linear) on a uniform grid of this step.
   double resample_step_mm = 0.0;
+  /// How the command line names z_down and mirror_y, for the hints of errors: "--" + "z-down" in
+  /// `tread profile`, "--wheel-" and "--rail-" in the contact commands.
+  std::string option_prefix = "--";
 };
 
 /// The distance of a wheel's taping line from its flange back (EN 13715).

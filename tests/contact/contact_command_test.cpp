@@ -286,6 +286,29 @@ TEST(ContactCommand, PlayGapsHollowsAndProfileEndsAreSaid) {
       << cut_rows;
 }
 
+// Options that changed nothing were taken without a word: the forces' options without --load, a
+// step that does not divide --ymax (rows -1.0 … 0.8 without y = 0).
+TEST(ContactCommand, OptionsThatWouldChangeNothingAreRefused) {
+  const fs::path out = tmp_dir() / "o.csv";
+  const fs::path err = tmp_dir() / "o.log";
+  EXPECT_NE(run("contact --wheel S1002 --rail 60E1 --mu 0.1", out, err), 0);
+  EXPECT_NE(text_of(err).find("--mu applies to the contact forces: give --load (N) too"),
+            std::string::npos)
+      << text_of(err);
+  EXPECT_NE(run("contact --wheel S1002 --rail 60E1 --speed 50 --creep-law fastsim", out, err), 0);
+  EXPECT_NE(text_of(err).find("give --load"), std::string::npos) << text_of(err);
+  EXPECT_NE(run("contact --wheel S1002 --rail 60E1 --ymax 1 --step 0.3", out, err), 0);
+  EXPECT_NE(text_of(err).find("--ymax 1 mm is not a whole number of --step 0.3 mm"),
+            std::string::npos)
+      << text_of(err);
+  ASSERT_EQ(run("contact --wheel S1002 --rail 60E1 --ymax 1.2 --step 0.3", out, err), 0)
+      << text_of(err);
+  const auto rows = read_csv(out);
+  ASSERT_EQ(rows.size(), 9U);
+  EXPECT_NEAR(rows.front()[0], -1.2, 1e-12);
+  EXPECT_NEAR(rows.back()[0], 1.2, 1e-12);
+}
+
 TEST(ContactCommand, BadInputFailsWithAMessage) {
   const fs::path err = tmp_dir() / "bad.log";
   const fs::path dir = tread::testing::test_data("rail/en15302");

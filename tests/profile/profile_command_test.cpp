@@ -230,6 +230,24 @@ TEST(ProfileCommand, InputInspectQuotesAHeaderShortly) {
   EXPECT_LT(r.out.size(), 20000U);
 }
 
+// Options of the other mode were ignored: a file's reading options without --input printed the
+// built-in S1002, a built-in wheel's shape with --input changed nothing.
+TEST(ProfileCommand, OptionsOfTheOtherModeAreRefused) {
+  const auto worn = ::tread::testing::test_data("profiles/worn_s1002_example.csv");
+  for (const char* flag :
+       {"--mirror-y", "--z-down", "--role rail", "--input-format csv", "--slope-window 3"}) {
+    const CommandResult r = run(std::string(flag));
+    EXPECT_NE(r.status, 0) << flag;
+    EXPECT_NE(r.out.find("applies to --input only"), std::string::npos) << flag << r.out;
+  }
+  for (const char* flag : {"--family EPS", "--flange-height 32", "--step 1", "--no-chamfer"}) {
+    const CommandResult r = run("--input " + worn.string() + " " + flag);
+    EXPECT_NE(r.status, 0) << flag;
+    EXPECT_NE(r.out.find("shapes a built-in wheel: not used with --input"), std::string::npos)
+        << flag << r.out;
+  }
+}
+
 /// quantity -> value from `--measure --format csv`.
 std::map<std::string, double> measures_csv(const std::string& text) {
   std::map<std::string, double> out;

@@ -96,11 +96,11 @@ TEST(ProfileFile, ZDownAndMirroredWheelEqualsTheCleanOne) {
   const std::string path = corpus("s1002_zdown_mirrored.csv").string();
   const std::string no_z = error_of(path, ProfileRole::kWheel);
   EXPECT_EQ(no_z.rfind(path + ": ", 0), 0u) << no_z;
-  EXPECT_NE(no_z.find("pass --wheel-z-down"), std::string::npos) << no_z;
+  EXPECT_NE(no_z.find("pass --z-down"), std::string::npos) << no_z;
   ProfileReadOptions z_only;
   z_only.z_down = true;
   const std::string no_mirror = error_of(path, ProfileRole::kWheel, z_only);
-  EXPECT_NE(no_mirror.find("pass --wheel-mirror-y"), std::string::npos) << no_mirror;
+  EXPECT_NE(no_mirror.find("pass --mirror-y"), std::string::npos) << no_mirror;
 }
 
 TEST(ProfileFile, OffOriginWheelIsLocatedByItsFlangeBack) {
@@ -530,7 +530,7 @@ TEST(ProfileFile, RailZDownCoarsePointsNoFlangeAndZReferenceAreSaid) {
   ProfileReadOptions z_down;
   z_down.z_down = true;
   EXPECT_NE(error_of(copy(rail, "r_zdown.csv", -1.0, 0.0, 1), ProfileRole::kRail)
-                .find("with its ends above it: z points down; pass --rail-z-down"),
+                .find("with its ends above it: z points down; pass --z-down"),
             std::string::npos);
   EXPECT_EQ(error_of(dir / "r_zdown.csv", ProfileRole::kRail, z_down), "");
   EXPECT_EQ(error_of(rail, ProfileRole::kRail), "");
