@@ -221,6 +221,17 @@ DetectedModel detect_model(const TirFile& file) {
                                    "' without FITTYP (MF-Tyre 5.0)");
       return d;
     }
+    if (format == "MF61" || format == "MF62") {
+      // The file names its generation: evaluated as that (it was evaluated as PAC2002, its MF 6.x
+      // pressure, camber and vertical terms unread, with only "no FITTYP" said).
+      const bool mf62 = format == "MF62";
+      d.model = mf62 ? TirModel::kMf62 : TirModel::kMf61;
+      d.name = mf62 ? "MF 6.2" : "MF 6.1";
+      d.keys = mf62 ? model::kMf62 : model::kMf61;
+      d.note = "no FITTYP: evaluated as " + d.name + ", which PROPERTY_FILE_FORMAT '" +
+               host::text::excerpt(format_entry->value) + "' names";
+      return d;
+    }
     d.model = TirModel::kPac2002;
     d.name = "PAC2002";
     d.keys = model::kPac2002;

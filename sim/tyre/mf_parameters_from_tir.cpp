@@ -155,6 +155,7 @@ MfTirParameters mf_parameters_from_tir(const tir::TirFile& file) {
   }
   check_mf_parameters(result.params, file, result.warning);
   warn_unmodelled_keys(file, model.name, result.warning);
+  warn_other_model_keys(file, model, result.warning);
   return result;
 }
 

@@ -11,8 +11,16 @@
 #include <string>
 
 #include "tir/tir_file.hpp"
+#include "tir/tir_model.hpp"
 
 namespace tread::tyre {
+
+/// Appends one line to `warning` (newline-separated) naming the keys of another Magic Formula
+/// generation than `model` whose values differ from what tread assumes without them (an MF 6.2
+/// file given FITTYP 61: Q_FCY2, Q_CAM1-3, Q_FYS1-3 unread; an MF 6.1 file as MF 5.2: PKY4-7,
+/// PPX1 …): nothing, if there are none.
+void warn_other_model_keys(const tir::TirFile& file, const tir::DetectedModel& model,
+                           std::string& warning);
 
 /// Appends one `file:line: …` warning line per such key to `warning` (newline-separated).
 void warn_unmodelled_keys(const tir::TirFile& file, const std::string& model_name,

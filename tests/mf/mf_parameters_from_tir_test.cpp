@@ -111,6 +111,50 @@ TEST(MfParametersFromTir, PressuresStiffnessesAndVxlowNoTyreHasAreSaid) {
   EXPECT_EQ(warning_with({{"VXLOW", "1"}}), "");
 }
 
+// A file evaluated by another generation's equations than its own (its FITTYP changed, or absent):
+// the keys those equations do not read are said where their values are not what tread assumes
+// (an MF 6.2 file under FITTYP 61 lost Q_FCY2, Q_CAM1-3 and Q_FYS1-3, Rl 4.5 % off, in silence);
+// without FITTYP a PROPERTY_FILE_FORMAT naming MF 6.1 or 6.2 decides (it was PAC2002).
+TEST(MfParametersFromTir, KeysTheEvaluatingGenerationDoesNotReadAreSaid) {
+  const auto text_of = [](const char* name) {
+    std::ifstream in(testing::tyre_file(name));
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    return buffer.str();
+  };
+  const auto with_fittyp = [](std::string text, const std::string& fittyp) {
+    const std::size_t at = text.find("\nFITTYP ");
+    EXPECT_NE(at, std::string::npos);
+    const std::size_t eol = text.find('\n', at + 1);
+    text.replace(at + 1, eol - at - 1, fittyp.empty() ? "" : "FITTYP = " + fittyp);
+    return tyre::mf_parameters_from_tir(tir::parse_tir(text, "g.tir"));
+  };
+  const std::string mf62 = text_of("MagicFormula62_Parameters.tir");
+  const tyre::MfTirParameters as61 = with_fittyp(mf62, "61");
+  EXPECT_NE(as61.warning.find("g.tir: 7 keys of MF 6.2 with values of their own, which the MF 6.1 "
+                              "equations the file is evaluated with do not read: Q_FCY2 (line "),
+            std::string::npos)
+      << as61.warning;
+  const tyre::MfTirParameters as52 = with_fittyp(text_of("MagicFormula61_Parameters.tir"), "52");
+  EXPECT_NE(as52.warning.find("keys of MF 6.1/6.2 with values of their own, which the MF 5.2 "
+                              "equations the file is evaluated with do not read: PKY6"),
+            std::string::npos)
+      << as52.warning;
+  // Its own FITTYP: nothing said.
+  EXPECT_EQ(with_fittyp(mf62, "62").warning.find("do not read"), std::string::npos);
+  // No FITTYP, PROPERTY_FILE_FORMAT 'MF62'.
+  std::string named = mf62;
+  const std::size_t format = named.find("PROPERTY_FILE_FORMAT");
+  ASSERT_NE(format, std::string::npos);
+  named.replace(format, named.find('\n', format) - format, "PROPERTY_FILE_FORMAT = 'MF62'");
+  const tyre::MfTirParameters by_format = with_fittyp(named, "");
+  EXPECT_EQ(by_format.params.fit_type, FitType::mf62);
+  EXPECT_NE(by_format.warning.find("no FITTYP: evaluated as MF 6.2, which PROPERTY_FILE_FORMAT "
+                                   "'MF62' names"),
+            std::string::npos)
+      << by_format.warning;
+}
+
 TEST(MfParametersFromTir, CompleteMf62FileReportsNoMissingKeys) {
   const tyre::MfTirParameters r =
       tyre::load_mf_parameters(testing::tyre_file("MagicFormula62_Parameters.tir"));
