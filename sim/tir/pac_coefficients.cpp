@@ -208,7 +208,7 @@ PacCoefficients pac_from_tir(const TirFile& file) {
   limit_load_to_unchanged_peaks(out);
   warn_curvature_above_one(out);
   if (const auto side = file.text_any("TYRESIDE")) {
-    for (const char c : *side)
+    for (const char c : host::text::trim_blanks(*side))
       out.tyreside += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   }
   return out;

@@ -363,6 +363,17 @@ bool TirFile::erase(std::string_view section, std::string_view key) {
 
 TirFile parse_tir(std::string_view text, const std::string& origin) {
   TirFile file(origin);
+  // A UTF-8 byte-order mark (Windows editors write one): not part of the first line, which
+  // otherwise read as "text outside any section: '[MDI_HEADER]'" with the mark invisible.
+  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
+  // Old Mac line ends (CR only): the whole file was one line.
+  std::string cr_lines;
+  if (text.find('\n') == std::string_view::npos && text.find('\r') != std::string_view::npos) {
+    cr_lines.assign(text);
+    std::replace(cr_lines.begin(), cr_lines.end(), '\r', '\n');
+    text = cr_lines;
+    file.add_warning(origin + ": lines end in CR only (old Mac text): read as line ends");
+  }
   int line_no = 0;
   std::size_t pos = 0;
   Section* current = nullptr;

@@ -279,6 +279,13 @@ InputTable::InputTable(std::istream& in, std::string name, InputTableOptions opt
       }
     }
     header_ = split(t);
+    // Header cells in double quotes, as spreadsheets export text ("Fz_N"): the name inside
+    // ("missing column 'Fz_N'" was the answer to a header that had it).
+    for (std::string& cell : header_) {
+      if (cell.size() >= 2 && cell.front() == '"' && cell.back() == '"') {
+        cell = trim(std::string_view(cell).substr(1, cell.size() - 2));
+      }
+    }
     cells_ = header_.size();
     quantity_of_cell_.assign(cells_, -1);
     header_line_ = line_;

@@ -144,7 +144,10 @@ MfTirParameters mf_parameters_from_tir(const tir::TirFile& file) {
                  "); INFLPRES = NOMPRES gives the model itself");
   }
 
-  const std::optional<std::string> side = file.text_any("TYRESIDE");
+  std::optional<std::string> side = file.text_any("TYRESIDE");
+  // Blanks inside the quotes ('Right ', written by some tools' fixed-width fields) are not part
+  // of the side: 'Right ' was evaluated as LEFT.
+  if (side) side = std::string(host::text::trim_blanks(*side));
   result.params.tyre_side =
       side && upper(*side) == "RIGHT" ? mf::TyreSide::right : mf::TyreSide::left;
   if (side && upper(*side) != "RIGHT" && upper(*side) != "LEFT" && upper(*side) != "SYMMETRIC") {

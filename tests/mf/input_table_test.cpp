@@ -49,6 +49,20 @@ TEST(InputTable, SiNamesAreReadAsTheyAre) {
   EXPECT_FALSE(t.next());
 }
 
+// Header cells in double quotes, as spreadsheets export text: "missing column 'Fz_N'" was said of
+// a header that had it.
+TEST(InputTable, QuotedHeaderCellsAreTheirNames) {
+  std::istringstream in("\"Fz_N\",\"kappa\", \"alpha_deg\" \n4000,0.1,2\n");
+  InputTableOptions options;
+  options.required = {InputQuantity::fz, InputQuantity::kappa};
+  InputTable t(in, "quoted.csv", options);
+  EXPECT_TRUE(t.ignored_columns().empty());
+  const auto row = t.next();
+  ASSERT_TRUE(row);
+  EXPECT_EQ((*row)[InputQuantity::fz], 4000.0);
+  EXPECT_NEAR((*row)[InputQuantity::alpha], 2.0 * 3.141592653589793 / 180.0, 1e-15);
+}
+
 TEST(InputTable, TtcNamesSemicolonDecimalCommaAndSaeSigns) {
   // FSAE TTC style: SAE axes (the load negative), degrees, km/h, kPa; ';' with decimal commas.
   std::istringstream in("ET;FZ;SA;SL;IA;V;P\n1,5;-1100;-3,5;0,02;2;40;82,7\n");

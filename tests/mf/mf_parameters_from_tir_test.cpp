@@ -155,6 +155,14 @@ TEST(MfParametersFromTir, KeysTheEvaluatingGenerationDoesNotReadAreSaid) {
       << by_format.warning;
 }
 
+// TYRESIDE = 'Right ' (a fixed-width field) is RIGHT: it was evaluated as LEFT, with a warning.
+TEST(MfParametersFromTir, TyreSideIsReadWithoutItsBlanks) {
+  const tyre::MfTirParameters r = tyre::mf_parameters_from_tir(tir::parse_tir(
+      "[MODEL]\nFITTYP = 61\nTYRESIDE = ' Right '\n[LATERAL_COEFFICIENTS]\nPCY1 = 1.3\n", "s.tir"));
+  EXPECT_EQ(r.params.tyre_side, TyreSide::right);
+  EXPECT_EQ(r.warning.find("TYRESIDE"), std::string::npos) << r.warning;
+}
+
 TEST(MfParametersFromTir, CompleteMf62FileReportsNoMissingKeys) {
   const tyre::MfTirParameters r =
       tyre::load_mf_parameters(testing::tyre_file("MagicFormula62_Parameters.tir"));

@@ -147,6 +147,18 @@ TEST(TirFile, ErrorsNameFileAndLine) {
       parse_tir("[" + std::string(64, 'S') + "]\n" + std::string(64, 'K') + " = 1\n", "x.tir"));
 }
 
+// A UTF-8 byte-order mark before the first section ("text outside any section: '[MDI_HEADER]'",
+// the mark invisible) and CR-only line ends (one line of 24 kB) read as a text editor shows them.
+TEST(TirFile, ByteOrderMarkAndCrOnlyLinesAreRead) {
+  const TirFile bom = parse_tir("\xEF\xBB\xBF[MODEL]\nFITTYP = 61\n", "bom.tir");
+  EXPECT_EQ(bom.number("MODEL", "FITTYP"), 61.0);
+  EXPECT_TRUE(bom.warnings().empty());
+  const TirFile cr = parse_tir("[MODEL]\rFITTYP = 61\r[VERTICAL]\rFNOMIN = 4000\r", "cr.tir");
+  EXPECT_EQ(cr.number("VERTICAL", "FNOMIN"), 4000.0);
+  ASSERT_EQ(cr.warnings().size(), 1U);
+  EXPECT_EQ(cr.warnings()[0], "cr.tir: lines end in CR only (old Mac text): read as line ends");
+}
+
 std::filesystem::path variant(const std::string& name) {
   return std::filesystem::path(TREAD_SOURCE_DIR) / "tests/data/tir-variants" / name;
 }
