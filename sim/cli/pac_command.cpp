@@ -16,6 +16,7 @@
 #include "cli/commands.hpp"
 #include "io/option_checks.hpp"
 #include "io/table_streams.hpp"
+#include "io/text_line.hpp"
 #include "plot/gnuplot.hpp"
 #include "tir/pac_coefficients.hpp"
 #include "tir/pac_plot.hpp"
@@ -247,6 +248,15 @@ void add_pac_eval(CLI::App* pac) {
         << "evaluated " << rows << " rows -> " << opt.output
         << (o.iso_w ? " (ISO-W axes)" : " (model axes)") << '\n';
     // As mf eval: rows the status column marks are also counted here, not left to be found.
+    if (!tally.unused_columns.empty()) {
+      // Read as inputs by `mf eval`, but PAC89/PAC94 have no such terms: the same forces at any
+      // speed (standstill and reversing included) and pressure.
+      std::cerr << "tread pac eval: warning: " << in.name() << ": column"
+                << (tally.unused_columns.size() == 1 ? "" : "s")
+                << host::text::quoted_list(tally.unused_columns)
+                << " not used: PAC89/PAC94 have no speed, turn-slip or pressure terms (the "
+                   "outputs are the same at any value, 0 and reversing included)\n";
+    }
     if (tally.out_of_range > 0) {
       std::cerr << "tread pac eval: warning: " << tally.out_of_range
                 << " rows out of range: an input beyond the tyre's limits (load, slip, camber) "

@@ -49,6 +49,11 @@ std::size_t evaluate_pac_csv(const pac::PacParams<double>& params, const PacCsvO
                              PacCsvTally* tally) {
   using Q = InputQuantity;
   InputTable table(in, in_name, options.table);
+  if (tally != nullptr) {
+    for (const Q q : {Q::vx, Q::phit, Q::pressure}) {
+      if (table.has(q)) tally->unused_columns.push_back(table.column_name(q));
+    }
+  }
   const auto pf = convert<float>(params);
   std::size_t rows = 0;
   out.precision(17);

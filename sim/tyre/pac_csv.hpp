@@ -17,6 +17,7 @@
 #include <cstddef>
 #include <iosfwd>
 #include <string>
+#include <vector>
 
 #include "pac/pac_params.hpp"
 #include "tir/pac_plot.hpp"
@@ -41,6 +42,8 @@ struct PacCsvTally {
   int first_out_of_range_line = 0;
   std::size_t other = 0;  ///< another status (a non-finite result written as 0)
   int first_other_line = 0;
+  /// Input columns the file has that PAC89/PAC94 do not read (speed, turn slip, pressure).
+  std::vector<std::string> unused_columns;
 };
 
 /// Returns the number of rows evaluated; `tally`, if given, counts the rows by status.

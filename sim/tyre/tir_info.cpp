@@ -110,7 +110,8 @@ std::string tir_info_report(const std::filesystem::path& path) {
       << "  peak μy: " << num(f.muy) << " at α = " << deg(f.alpha_muy_rad)
       << (f.alpha_muy_at_limit ? " (ALPMIN/ALPMAX, the range's end)" : "") << '\n'
       << "  slip stiffness Kxκ: " << num(f.kxk_n) << " N\n"
-      << "  cornering stiffness Kyα: " << num(f.kya_nprad) << " N/rad\n"
+      << "  cornering stiffness Kyα: " << num(f.kya_nprad)
+      << " N/rad (−dFy/dα; mf eval's Kya_Nprad is dFy/dα in ISO-W, " << num(-f.kya_nprad) << ")\n"
       << "  pneumatic trail (α = 0.5°): " << num(f.trail_m) << " m\n"
       << "  Re: " << num(f.re_m) << " m, Rl: " << num(f.rl_m) << " m\n";
   std::ostringstream w;

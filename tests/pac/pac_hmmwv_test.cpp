@@ -173,6 +173,27 @@ TEST(PacLoaders, JsonKeysNotReadAreSaid) {
   EXPECT_EQ(said, expected);
 }
 
+// A [UNITS] section that names the wrong length unit: R0 = 0.46 mm gave Mx and My 1000 times too
+// small without a word (the Magic Formula path said so already).
+TEST(PacLoaders, ValuesNoTyreHasAreSaid) {
+  const auto c = tread::tir::pac_from_tir(tread::tir::parse_tir(
+      "[MDI_HEADER]\nPROPERTY_FILE_FORMAT = 'PAC89'\n[UNITS]\nLENGTH = 'mm'\n"
+      "[DIMENSION]\nUNLOADED_RADIUS = 0.464\n[LATERAL_COEFFICIENTS]\nA0 = 1.5\nA1 = -22\n"
+      "A2 = 1000\n[LONGITUDINAL_COEFFICIENTS]\nB0 = 1.6\nB2 = 1000\n"
+      "[ALIGNING_COEFFICIENTS]\nC0 = 2.3\n",
+      "mm.tir"));
+  bool said = false;
+  for (const std::string& w : c.warnings) {
+    said = said || w.find("UNLOADED_RADIUS = 0.000464") != std::string::npos;
+  }
+  EXPECT_TRUE(said);
+  const auto shipped = tread::tir::pac_from_tir(
+      tread::tir::read_tir(tread::testing::tyre_file("chrono_HMMWV_Pac89Tire.tir")));
+  for (const std::string& w : shipped.warnings) {
+    EXPECT_EQ(w.find("in SI"), std::string::npos) << w;
+  }
+}
+
 TEST(PacLoaders, TirRoundTripIsExact) {
   const auto p = hmmwv();
   tread::tir::TirFile f("hmmwv.tir");

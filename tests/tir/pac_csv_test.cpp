@@ -70,6 +70,20 @@ TEST(PacCsv, RowsOutOfRangeAreCountedWithTheirFirstLine) {
   EXPECT_EQ(tally.other, 0U);
 }
 
+// Columns `mf eval` reads that PAC89/PAC94 have no terms for (the same forces at 16, -16 and 0 m/s
+// were written without a word) are listed for a warning; the table's own inputs are not.
+TEST(PacCsv, ColumnsThePacModelsDoNotReadAreListed) {
+  std::istringstream in("Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps,P_kPa\n4000,0.1,0,0,16,220\n");
+  std::ostringstream out;
+  tread::tyre::PacCsvTally tally;
+  EXPECT_EQ(tread::tyre::evaluate_pac_csv(params(), {}, in, "in.csv", out, &tally), 1U);
+  EXPECT_EQ(tally.unused_columns, (std::vector<std::string>{"Vx_mps", "P_kPa"}));
+  std::istringstream plain("Fz_N,kappa,alpha_rad,gamma_rad\n4000,0.1,0,0\n");
+  tread::tyre::PacCsvTally none;
+  (void)tread::tyre::evaluate_pac_csv(params(), {}, plain, "in.csv", out, &none);
+  EXPECT_TRUE(none.unused_columns.empty());
+}
+
 TEST(PacCsv, RowsEqualDirectEvaluation) {
   const std::string input =
       "# comment\nVx_mps,gamma_rad,alpha_rad,kappa,Fz_N\n16.7,0.01,0.05,0.1,4000\n\n"
