@@ -58,6 +58,11 @@ void run_synthesize(const FitCliState& s) {
     throw std::runtime_error("--noise " + tir::format_number(s.noise) +
                              ": the noise level is a share of each channel's peak, from 0 to 1");
   }
+  if (std::filesystem::path(s.output).extension() == ".tir") {
+    // Measurements as CSV under a .tir name: a file every .tir reader would refuse.
+    throw std::runtime_error("--output " + s.output +
+                             ": --synthesize writes measurements as CSV, not a .tir");
+  }
   const tyre::MfTirParameters truth = tyre::load_mf_parameters(s.synthesize);
   fit::SyntheticGrid grid;
   grid.noise_rel = s.noise;

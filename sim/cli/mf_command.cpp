@@ -177,7 +177,12 @@ void run_mf_plot(const MfPlotArgs& args) {
                 << " N lies above the tyre's load range: its curves are drawn at " << bound
                 << " (--mode 2xx evaluates beyond it)\n";
     }
-    if (fz < loaded.params.fzmin_n) {
+    if (fz < 0.01 * loaded.params.fnomin_n) {
+      // A load typed in kN (2,4,6) on a tyre whose FZMIN is 0 was plotted at 2, 4 and 6 N.
+      std::cerr << "tread mf plot: warning: " << args.tir << ": Fz = " << fz
+                << " N is under 1 % of FNOMIN (" << loaded.params.fnomin_n
+                << " N): --loads are in N, not kN\n";
+    } else if (fz < loaded.params.fzmin_n) {
       // Not clamped (MFeval limits only FZMAX), but outside what the tyre was fitted on: a load
       // typed in kN lands here.
       std::cerr << "tread mf plot: warning: " << args.tir << ": Fz = " << fz

@@ -315,6 +315,14 @@ TEST(FitCommand, SynthesizeIsDeterministicPerSeed) {
                 err),
             0)
       << slurp(err);
+  // CSV under a .tir name: refused (it was written).
+  EXPECT_NE(
+      run("fit --synthesize " + tir.string() + " --output " + (dir / "synth.tir").string(), err),
+      0);
+  EXPECT_NE(slurp(err).find("--synthesize writes measurements as CSV, not a .tir"),
+            std::string::npos)
+      << slurp(err);
+  EXPECT_FALSE(std::filesystem::exists(dir / "synth.tir"));
   const std::string a = slurp(dir / "synth_a.csv");
   EXPECT_GT(a.size(), 100000u);
   EXPECT_EQ(a, slurp(dir / "synth_b.csv"));

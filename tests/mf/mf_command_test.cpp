@@ -283,15 +283,25 @@ TEST(MfCommand, PlotSaysWhichLoadsAreDrawnAtFzmax) {
                 dir / "plot211.txt"),
             0);
   EXPECT_EQ(slurp(dir / "plot211.txt").find("above the tyre's load range"), std::string::npos);
-  // Loads typed in kN (4, 6, 8 N) lie below FZMIN 10752 N: said. A speed that is not a number, or
+  // Loads typed in kN (4, 6, 8 N): each said, whatever FZMIN (a tyre with FZMIN 0 said nothing).
+  // A speed that is not a number, or
   // 0, is refused (NaN drew a normal-looking plot, 0 an all-zero one blamed on the tyre).
   ASSERT_EQ(run("mf plot --loads 4,6,8 --tir " + tir.string() + " --output " + png.string(),
                 dir / "plot_kn.txt"),
             0);
-  EXPECT_NE(
-      slurp(dir / "plot_kn.txt").find("Fz = 4 N lies below the tyre's load range (FZMIN 10752 N)"),
-      std::string::npos)
-      << slurp(dir / "plot_kn.txt");
+  for (const char* load : {"Fz = 4 N is under 1 % of FNOMIN", "Fz = 6 N is under 1 % of FNOMIN",
+                           "Fz = 8 N is under 1 % of FNOMIN"}) {
+    EXPECT_NE(slurp(dir / "plot_kn.txt").find(load), std::string::npos)
+        << load << "\n"
+        << slurp(dir / "plot_kn.txt");
+  }
+  EXPECT_NE(slurp(dir / "plot_kn.txt").find("N): --loads are in N, not kN"), std::string::npos);
+  ASSERT_EQ(run("mf plot --loads 2000 --tir " + tir.string() + " --output " + png.string(),
+                dir / "plot_2000.txt"),
+            0);
+  EXPECT_NE(slurp(dir / "plot_2000.txt").find("Fz = 2000 N lies below the tyre's load range"),
+            std::string::npos)
+      << slurp(dir / "plot_2000.txt");
   for (const char* vx : {"nan", "0", "1e308"}) {
     EXPECT_NE(run("mf plot --vx " + std::string(vx) + " --tir " + tir.string() + " --output " +
                       png.string(),
