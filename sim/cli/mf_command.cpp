@@ -139,7 +139,8 @@ void run_mf_eval(const MfEvalArgs& args) {
   for (const tyre::MfRangeCount& c : report.out_of_range) {
     std::cerr << "tread mf eval: warning: " << c.rows
               << " rows outside the model's range: " << c.limit << " (first: " << in_name << ':'
-              << c.first_line << ")" << (o.use_limits ? "; evaluated clamped" : "") << '\n';
+              << c.first_line << ")" << (o.use_limits && c.clamped ? "; evaluated clamped" : "")
+              << c.note << '\n';
   }
   std::cerr << "tread mf eval: " << report.rows << " rows → " << args.output << " (ISO-W, SI)\n";
 }

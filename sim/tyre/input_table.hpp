@@ -158,6 +158,8 @@ class InputTable {
   std::string column_name(InputQuantity q) const;
   /// The unit input `q`'s column is written in ("" without a column).
   std::string_view column_unit(InputQuantity q) const;
+  /// The sign convention the table's values are converted from.
+  SignConvention convention() const noexcept { return options_.convention; }
 
  private:
   std::vector<std::string> split(std::string_view line) const;

@@ -87,7 +87,13 @@ std::string hint(const InputTable& table, const Limit& l, double value) {
     return "; column '" + column + "' is read as a ratio: if it holds percent, name it kappa_pct";
   }
   if (l.quantity == InputQuantity::fz && value < 0.0) {
-    return "; a negative load: is the file in SAE axes (z down)? Use --convention sae";
+    if (iso_w_sign(table.convention(), InputQuantity::fz) > 0.0) {
+      return "; a negative load: is the file in SAE axes (z down)? Use --convention sae";
+    }
+    // Its sign already changed: the file's load was positive in its own convention.
+    return std::string("; a negative load after the sign change from ") +
+           std::string(to_string(table.convention())) +
+           ": is the file's load already positive? Use --convention iso-w";
   }
   if (l.quantity == InputQuantity::pressure && unit == "Pa") {
     return "; column '" + column + "' is read in Pa: name it P_kPa, P_bar or P_psi otherwise";
@@ -101,12 +107,16 @@ constexpr std::size_t kLimitCount = 10;
 struct Tally {
   std::size_t rows = 0;
   int first_line = 0;
+  double first_value = 0.0;  ///< the first row's value, where one is counted
 };
 
 // Adds a later chunk's tally to the one so far (the first line stays the earliest).
 void merge(Tally& so_far, const Tally& chunk) {
   if (chunk.rows == 0) return;
-  if (so_far.rows == 0) so_far.first_line = chunk.first_line;
+  if (so_far.rows == 0) {
+    so_far.first_line = chunk.first_line;
+    so_far.first_value = chunk.first_value;
+  }
   so_far.rows += chunk.rows;
 }
 
@@ -229,7 +239,10 @@ bool check_range(const EvalSetup& setup, const InputRow& row, std::array<Tally, 
                               " outside the model's range (" + describe(l) + ", --strict)" +
                               hint(setup.table, l, v));
     }
-    if (out[i].rows++ == 0) out[i].first_line = row.line;
+    if (out[i].rows++ == 0) {
+      out[i].first_line = row.line;
+      out[i].first_value = v;
+    }
     // A load of 0 or less is a wheel off the ground (no forces), not a clamped input.
     any = any || !(l.quantity == InputQuantity::fz && v <= 0.0);
   }
@@ -514,7 +527,21 @@ MfCsvReport evaluate_csv(const mf::MfParameters<double>& params, const mf::MfOpt
       });
   for (std::size_t i = 0; i < kLimitCount; ++i) {
     if (outside[i].rows > 0) {
-      report.out_of_range.push_back({describe(limits[i]), outside[i].rows, outside[i].first_line});
+      MfRangeCount c;
+      c.limit = describe(limits[i]);
+      c.rows = outside[i].rows;
+      c.first_line = outside[i].first_line;
+      // Below FZMIN the load is not clamped (MFeval limits only FZMAX), and one of 0 or less is
+      // a wheel off the ground: no forces, under ok. Said, with the likely cause of a negative
+      // one; "evaluated clamped" was said of rows in SAE axes read as ISO-W.
+      if (limits[i].quantity == InputQuantity::fz && !limits[i].above) {
+        c.clamped = false;
+        if (outside[i].first_value <= 0.0) {
+          c.note = "; a load of 0 or less gives no forces (status ok)" +
+                   hint(table, limits[i], outside[i].first_value);
+        }
+      }
+      report.out_of_range.push_back(c);
     }
   }
   if (above_free.rows > 0) {

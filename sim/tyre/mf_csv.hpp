@@ -61,6 +61,8 @@ struct MfRangeCount {
   std::string limit;  ///< e.g. "alpha > ALPMAX = 1.5 rad"
   std::size_t rows = 0;
   int first_line = 0;
+  bool clamped = true;  ///< the core clamps such a value (with the limits of useMode 1xx)
+  std::string note;     ///< what else to say ("; ..."), or empty
 };
 
 struct MfCsvReport {

@@ -28,7 +28,9 @@ std::filesystem::path tmp_dir() {
 }
 
 int run(const std::string& args, const std::filesystem::path& stderr_file) {
-  const std::string command = std::string(TREAD_CLI) + " " + args + " 2> " + stderr_file.string();
+  // Appended piece by piece: GCC 12 warns falsely (-Warray-bounds) about the chain of operator+.
+  std::string command = TREAD_CLI;
+  command.append(" ").append(args).append(" 2> ").append(stderr_file.string());
   return std::system(command.c_str());
 }
 
@@ -482,6 +484,33 @@ TEST(MfCommand, RowsClampedAtTheLimitsSayOutOfRange) {
   const std::vector<std::string> unclamped = statuses("--mode 211 --columns Fx_N");
   ASSERT_EQ(unclamped.size(), 6U);
   EXPECT_EQ(unclamped[1], "ok");
+  // stderr: the clamped inputs said clamped.
+  (void)statuses("");
+  const std::string said = slurp(dir / "limits.txt");
+  std::string above = "Fz_N > FZMAX = 18000 N (first: ";
+  above.append(in.string()).append(":3); evaluated clamped");
+  EXPECT_NE(said.find(above), std::string::npos) << said;
+}
+
+// A file in SAE axes whose loads are positive, read with --convention sae: every load negative in
+// ISO-W, no forces. The hint was "Use --convention sae", already given.
+TEST(MfCommand, NegativeLoadsAfterTheSignChangeAreExplained) {
+  const auto tir = tread::testing::tyre_file("MagicFormula61_Parameters.tir");
+  const auto dir = tmp_dir();
+  const auto in = dir / "pos.csv";
+  write(in, "Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps\n4000,0.05,0.02,0,16\n");
+  EXPECT_EQ(run("mf eval --convention sae --tir " + tir.string() + " --input " + in.string() +
+                    " --output " + (dir / "out.csv").string(),
+                dir / "err.txt"),
+            0);
+  const std::string said = slurp(dir / "err.txt");
+  EXPECT_EQ(said.find("evaluated clamped"), std::string::npos) << said;
+  EXPECT_NE(said.find("Fz_N < FZMIN = 0 N (first: "), std::string::npos) << said;
+  EXPECT_NE(said.find("a load of 0 or less gives no forces (status ok); a negative load after the "
+                      "sign change from sae: is the file's load already positive? Use "
+                      "--convention iso-w"),
+            std::string::npos)
+      << said;
 }
 
 TEST(MfCommand, SaeFileWithTtcNamesEqualsIsoWFile) {
