@@ -115,14 +115,16 @@ struct Measure {
   std::string meaning;
 };
 
-std::vector<Measure> wheel_measure_rows(const profile::SampledWheelMeasures& m) {
+/// `file_z0_mm`: z at the taping line as the file has it (the reader refers z to it).
+std::vector<Measure> wheel_measure_rows(const profile::SampledWheelMeasures& m, double file_z0_mm) {
   const profile::FlangeMeasures& f = m.flange;
   std::vector<Measure> rows = {
       {"Sh", f.height_mm, "mm", "flange height: tip above the taping line z(0)"},
       {"Sd", f.thickness_mm, "mm", "flange thickness: flange back y = -70 to the face at 10 mm"},
       {"qR", f.qr_mm, "mm", "face at 10 mm to the face 2 mm below the tip"},
       {"tip_y", f.tip_y_mm, "mm", "y of the flange tip"},
-      {"taping_z", m.taping_z_mm, "mm", "z(0): the reference of Sh and of the 10 mm level"},
+      {"taping_z", m.taping_z_mm + file_z0_mm, "mm",
+       "z(0) in the file: the reference of Sh and of the 10 mm level"},
       {"face_y_10", f.face_y_at_10_mm, "mm", "y of the flange face 10 mm above the taping line"},
       {"face_y_tip_2", f.face_y_below_tip_mm, "mm", "y of the flange face 2 mm below the tip"},
       {"hollow_depth", m.hollow_depth_mm, "mm",
@@ -226,7 +228,7 @@ void inspect_profile(std::ostream& out, const ProfileOptions& o, const profile::
   try {
     const profile::SampledWheelMeasures m = profile::measure_wheel(p);
     out << "measures (EN 15313 style; taping line y = 0, flange back y = -70):\n";
-    write_measures_text(out, wheel_measure_rows(m));
+    write_measures_text(out, wheel_measure_rows(m, f.taping_z_in_file_mm));
     const profile::NominalChoice n = profile::choose_nominal(o.nominal, p, m);
     out << "nominal   " << profile::WheelProfile(n.parameters).name() << " (" << n.how << ")\n";
   } catch (const std::runtime_error& e) {
@@ -258,11 +260,17 @@ void run_input(const ProfileOptions& o) {
                                 ": --nominal compares a wheel with an EN 13715 profile; this file "
                                 "was read as a rail");
   }
+  if (o.measure || !o.format.empty() || !o.plot.empty()) {
+    // Inspecting lists them in its report; measuring, converting and plotting said nothing of
+    // what the reader changed or assumed (points dropped, z re-referred, a spike, a gap).
+    for (const std::string& w : f.warnings) std::cerr << "tread profile: warning: " << w << '\n';
+  }
   std::ostringstream text;
   if (o.measure) {
-    std::vector<Measure> rows = f.role == profile::ProfileRole::kRail
-                                    ? rail_measure_rows(profile::measure_rail(f.profile))
-                                    : wheel_measure_rows(profile::measure_wheel(f.profile));
+    std::vector<Measure> rows =
+        f.role == profile::ProfileRole::kRail
+            ? rail_measure_rows(profile::measure_rail(f.profile))
+            : wheel_measure_rows(profile::measure_wheel(f.profile), f.taping_z_in_file_mm);
     if (o.format == "csv") {
       write_measures_csv(text, rows);
     } else if (o.format.empty() || o.format == "table") {

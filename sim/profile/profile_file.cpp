@@ -8,6 +8,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 #include <tuple>
 
 #include "profile/miniprof_profile.hpp"
@@ -588,9 +589,18 @@ void resample(SampledProfile& p, double step_mm) {
 ProfileFile read_profile_file(const std::filesystem::path& path, ProfileRole role,
                               const ProfileReadOptions& options) {
   const std::string file = path.string();
+  // A directory opens as an empty stream, and an empty file reads as "file:0: fewer than 2
+  // points": each said as what it is.
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    throw std::runtime_error(file + ": is a directory, not a profile file");
+  }
   std::ifstream in(path);
   if (!in) {
     throw std::runtime_error(file + ": cannot open the file");
+  }
+  if (in.peek() == std::ifstream::traits_type::eof()) {
+    throw std::runtime_error(file + ": the file is empty");
   }
   ProfileFile out;
   out.role = role;
@@ -726,6 +736,7 @@ ProfileFile read_profile_file(const std::filesystem::path& path, ProfileRole rol
         for (double& z : out.profile.z_mm) {
           z -= z0;
         }
+        out.taping_z_in_file_mm = z0;
         out.warnings.push_back(file + ": z at the taping line (y = 0) is " + num(z0) +
                                " mm in the file: z referred to it (z = 0 there, where --r0 is "
                                "the radius)");
@@ -737,6 +748,7 @@ ProfileFile read_profile_file(const std::filesystem::path& path, ProfileRole rol
       for (double& z : out.profile.z_mm) {
         z -= z0;
       }
+      out.taping_z_in_file_mm = z0;
     }
   } else {
     // A rail head's top is its highest point, the sides fall away from it; a head whose lowest

@@ -81,6 +81,9 @@ struct ProfileFile {
   std::size_t points_read = 0;    ///< points in the file (after a SIMPACK file's bounds)
   std::size_t points_hidden = 0;  ///< points dropped below the contact envelope
   double y_shift_mm = 0.0;        ///< added to y to put a wheel's taping line at y = 0
+  /// A wheel's z at its taping line as the file has it (0 where it is 0): subtracted from z, so
+  /// that z = 0 there, where the rolling radius r0 is.
+  double taping_z_in_file_mm = 0.0;
   /// Rail: the head's inclination as given in the file (rad, + = top toward -y, the sense of a
   /// cant toward the track centre in the upright frame), when the head could be measured.
   std::optional<double> rail_inclination_rad;

@@ -190,8 +190,8 @@ TEST(ProfileCommand, InputInspectShowsTheFileAndItsMeasures) {
         "warnings  1:",
         "z at the taping line (y = 0) is -1.358 mm in the file: z referred to it (z = 0 there, "
         "where --r0 is the radius)",
-        "taping_z              0.000 mm", "Sh ", "Sd ", "qR ", "hollow_depth", "outer_slope",
-        "nominal   S1002 h28 e31.5 1:15 w140"}) {
+        "taping_z             -1.358 mm  z(0) in the file", "Sh ", "Sd ", "qR ", "hollow_depth",
+        "outer_slope", "nominal   S1002 h28 e31.5 1:15 w140"}) {
     EXPECT_NE(r.out.find(field), std::string::npos) << field << "\n" << r.out;
   }
   // A rail: top, gauge point and head width.
@@ -206,6 +206,25 @@ TEST(ProfileCommand, InputInspectShowsTheFileAndItsMeasures) {
   const CommandResult wrong = run("--input " + prr.string() + " --role wheel");
   EXPECT_NE(wrong.status, 0);
   EXPECT_NE(wrong.out.find("MBench_UIC60_v3.prr"), std::string::npos) << wrong.out;
+}
+
+// Measuring, converting and plotting say what the reader changed (they said nothing: only the
+// inspection listed it); an empty file and a directory are said as such ("file:0: fewer than 2
+// points").
+TEST(ProfileCommand, OtherModesSayTheReadersWarningsAndEmptyInputsAreNamed) {
+  const auto worn = ::tread::testing::test_data("profiles/worn_s1002_example.csv");
+  const CommandResult measured = run("--input " + worn.string() + " --measure --format csv");
+  ASSERT_EQ(measured.status, 0) << measured.out;
+  EXPECT_NE(measured.out.find("tread profile: warning: " + worn.string() +
+                              ": z at the taping line (y = 0) is -1.358 mm in the file"),
+            std::string::npos)
+      << measured.out;
+  EXPECT_NE(measured.out.find("taping_z,-1.35"), std::string::npos) << measured.out;
+  const auto dir = tmp_dir();
+  std::ofstream(dir / "empty.csv").close();
+  const CommandResult empty = run("--input " + (dir / "empty.csv").string());
+  EXPECT_NE(empty.status, 0);
+  EXPECT_NE(empty.out.find("empty.csv: the file is empty"), std::string::npos) << empty.out;
 }
 
 // The header's fields as the summary lists them: each quoted short, at most 30 of them (a header
