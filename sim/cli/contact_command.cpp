@@ -155,7 +155,9 @@ void add_contact_command(CLI::App& app) {
   contact::add_contact_setup_options(*cmd, setup);
   add_mechanics_options(*cmd, mechanics);
   cmd->add_flag("--rail-positions", rail_positions,
-                "add columns yr_left_mm,yr_right_mm: contact positions on the rails (track frame)");
+                "add columns yr_left_mm,yr_right_mm: contact positions on the rails in the "
+                "track frame (lateral from a line 750 mm off the track centre at any gauge, + "
+                "toward the field side)");
   cmd->add_option("--ymax", y_max_mm, "table from -ymax to +ymax (mm)")
       ->capture_default_str()
       ->check(host::finite_within(0.01, 100.0, "the table's half width in mm"));
