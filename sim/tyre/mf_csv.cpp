@@ -101,7 +101,7 @@ std::string hint(const InputTable& table, const Limit& l, double value) {
   return {};
 }
 
-constexpr std::size_t kLimitCount = 10;
+constexpr std::size_t kLimitCount = 14;
 
 // Rows outside one limit, in one chunk or so far.
 struct Tally {
@@ -458,6 +458,12 @@ MfCsvReport evaluate_csv(const mf::MfParameters<double>& params, const mf::MfOpt
       {Q::gamma, true, params.cammax_rad, "CAMMAX", "rad"},
       {Q::pressure, false, params.presmin_pa, "PRESMIN", "Pa"},
       {Q::pressure, true, params.presmax_pa, "PRESMAX", "Pa"},
+      // The core's finite-arithmetic envelope (mf_inputs.hpp) where the tyre has no limit: rows
+      // beyond it were `out of range` without a count or a reason, and --strict let them pass.
+      {Q::vx, false, -1000.0, "tread's envelope", "m/s"},
+      {Q::vx, true, 1000.0, "tread's envelope", "m/s"},
+      {Q::phit, false, -100.0, "tread's envelope", "1/m"},
+      {Q::phit, true, 100.0, "tread's envelope", "1/m"},
   }};
 
   EvalSetup setup{table, in_name, limits, options, csv.strict, csv.columns, 0, {}, {}};
@@ -534,6 +540,10 @@ MfCsvReport evaluate_csv(const mf::MfParameters<double>& params, const mf::MfOpt
       // Below FZMIN the load is not clamped (MFeval limits only FZMAX), and one of 0 or less is
       // a wheel off the ground: no forces, under ok. Said, with the likely cause of a negative
       // one; "evaluated clamped" was said of rows in SAE axes read as ISO-W.
+      if (limits[i].quantity == InputQuantity::vx || limits[i].quantity == InputQuantity::phit) {
+        c.clamped = false;
+        c.note = "; clamped to it at any useMode (no tyre is measured there)";
+      }
       if (limits[i].quantity == InputQuantity::fz && !limits[i].above) {
         c.clamped = false;
         if (outside[i].first_value <= 0.0) {

@@ -492,6 +492,32 @@ TEST(MfCommand, RowsClampedAtTheLimitsSayOutOfRange) {
   EXPECT_NE(said.find(above), std::string::npos) << said;
 }
 
+// Rows beyond the core's finite-arithmetic envelope where the tyre has no limit (|Vx| > 1000 m/s,
+// |phit| > 100 1/m): `out of range` as before, now counted with a reason and refused by --strict.
+TEST(MfCommand, RowsBeyondTheEnvelopeAreCountedAndRefusedByStrict) {
+  const auto tir = tread::testing::tyre_file("MagicFormula61_Parameters.tir");
+  const auto dir = tmp_dir();
+  const auto in = dir / "env.csv";
+  write(in,
+        "Fz_N,kappa,alpha_rad,gamma_rad,Vx_mps,phit_1pm\n4000,0.05,0.02,0,16,0\n"
+        "4000,0.05,0.02,0,1500,0\n4000,0.05,0.02,0,16,-200\n");
+  const std::string out = (dir / "out.csv").string();
+  EXPECT_EQ(run("mf eval --tir " + tir.string() + " --input " + in.string() + " --output " + out,
+                dir / "err.txt"),
+            0);
+  const std::string said = slurp(dir / "err.txt");
+  EXPECT_NE(said.find("Vx_mps > tread's envelope = 1000 m/s (first: "), std::string::npos) << said;
+  EXPECT_NE(said.find("phit_1pm < tread's envelope = -100 1/m (first: "), std::string::npos)
+      << said;
+  EXPECT_NE(
+      run("mf eval --strict --tir " + tir.string() + " --input " + in.string() + " --output " + out,
+          dir / "err.txt"),
+      0);
+  EXPECT_NE(slurp(dir / "err.txt").find("env.csv:3: Vx_mps = 1500 outside the model's range"),
+            std::string::npos)
+      << slurp(dir / "err.txt");
+}
+
 // A file in SAE axes whose loads are positive, read with --convention sae: every load negative in
 // ISO-W, no forces. The hint was "Use --convention sae", already given.
 TEST(MfCommand, NegativeLoadsAfterTheSignChangeAreExplained) {
