@@ -13,11 +13,18 @@ namespace tread::tyre {
 
 namespace {
 
-constexpr auto kModelKeys = std::to_array<std::string_view>({
-#define TREAD_MF_KEY_NAME(member, section, key, value, description) key,
-    TREAD_MF_PARAMETER_LIST(TREAD_MF_KEY_NAME)
-#undef TREAD_MF_KEY_NAME
+// The model's keys with the values tread takes where a file lacks them.
+constexpr auto kModelKeys = std::to_array<tir::KeyDefault>({
+#define TREAD_MF_KEY_DEFAULT(member, section, key, value, description) {"", key, value},
+    TREAD_MF_PARAMETER_LIST(TREAD_MF_KEY_DEFAULT)
+#undef TREAD_MF_KEY_DEFAULT
 });
+
+const tir::KeyDefault* model_key(std::string_view key) {
+  const auto* k = std::find_if(kModelKeys.begin(), kModelKeys.end(),
+                               [key](const tir::KeyDefault& d) { return d.key == key; });
+  return k != kModelKeys.end() ? k : nullptr;
+}
 
 /// Keys of coefficient sections that only a transient or structural model uses, or that tread
 /// derives itself: never a steady-state difference.
@@ -54,16 +61,6 @@ bool is_coefficient_section(const std::string& name) {
   constexpr std::string_view kSuffix = "_COEFFICIENTS";
   return name == "VERTICAL" || (name.size() > kSuffix.size() && name.ends_with(kSuffix));
 }
-
-struct KeyDefault {
-  std::string_view key;
-  double value;
-};
-constexpr auto kModelDefaults = std::to_array<KeyDefault>({
-#define TREAD_MF_KEY_DEFAULT(member, section, key, value, description) {key, value},
-    TREAD_MF_PARAMETER_LIST(TREAD_MF_KEY_DEFAULT)
-#undef TREAD_MF_KEY_DEFAULT
-});
 
 // Keys of one Magic Formula generation that the others' equations in tread do not read (found
 // by changing each key of the shipped MF 5.2, 6.1 and 6.2 files under each other FITTYP and
@@ -129,9 +126,8 @@ void warn_other_model_keys(const tir::TirFile& file, const tir::DetectedModel& m
       }
       const std::optional<double> v = tir::parse_number(e->value);
       if (!v || e->is_quoted()) continue;
-      const auto* d = std::find_if(kModelDefaults.begin(), kModelDefaults.end(),
-                                   [&key](const KeyDefault& k) { return k.key == key; });
-      const double neutral = d != kModelDefaults.end() ? d->value : 0.0;
+      const tir::KeyDefault* d = model_key(key);
+      const double neutral = d != nullptr ? d->value : 0.0;
       if (!(std::fabs(*v - neutral) > 0.0)) continue;  // the value tread assumes anyway
       if (models.find(other->model) == std::string::npos) {
         models += (models.empty() ? "" : ", ") + std::string(other->model);
@@ -155,7 +151,7 @@ void warn_unmodelled_keys(const tir::TirFile& file, const std::string& model_nam
     if (!is_coefficient_section(section_name) || section.is_table()) continue;
     for (const tir::Entry* e : section.entries()) {
       const std::string key = upper(e->key);
-      if (contains(kModelKeys, key) || contains(kNotSteadyState, key)) continue;
+      if (model_key(key) != nullptr || contains(kNotSteadyState, key)) continue;
       const std::optional<double> v = tir::parse_number(e->value);
       if (!v || e->is_quoted()) continue;  // text: nothing to evaluate
       const bool scaling = section_name == "SCALING_COEFFICIENTS" && key != "LMUV";
