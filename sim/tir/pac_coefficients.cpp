@@ -12,6 +12,7 @@
 #include <sstream>
 #include <string>
 #include <tuple>
+#include <utility>
 
 #include "io/text_line.hpp"
 #include "tir/tir_model.hpp"
@@ -206,17 +207,15 @@ PacCoefficients pac_from_tir(const TirFile& file) {
   out.params.rolling_resistance = optional_any(file, "ROLLING_RESISTANCE", out.missing);
   out.params.lateral_stiffness_npm = optional_any(file, "LATERAL_STIFFNESS", out.missing);
   read_limits(file, out);
-  // Values no tyre has once [UNITS] is applied (a LENGTH of 'mm' over values in metres gave
-  // R0 = 0.46 mm and Mx, My 1000 times too small without a word).
+  // Values no tyre has once [UNITS] is applied (R0 = 0.46 mm gave Mx, My 1000 times too small
+  // without a word).
   for (const auto& [key, v, lo, hi, unit, what] :
        {std::tuple{"UNLOADED_RADIUS", out.params.unloaded_radius_m, 0.05, 2.5, "m",
                    "a tyre's free radius"},
         std::tuple{"LATERAL_STIFFNESS", out.params.lateral_stiffness_npm, 1e4, 1e8, "N/m",
                    "a tyre's lateral stiffness"}}) {
-    if (file.find_any(key) != nullptr && (v < lo || v > hi)) {
-      out.warnings.push_back(std::string(key) + " = " + format_number(v) + " " + unit +
-                             " in SI: " + what + " lies within " + format_number(lo) + "…" +
-                             format_number(hi) + " " + unit + "; is the [UNITS] section right?");
+    if (std::string w = implausible_value(file, key, v, lo, hi, unit, what); !w.empty()) {
+      out.warnings.push_back(std::move(w));
     }
   }
   limit_load_to_unchanged_peaks(out);

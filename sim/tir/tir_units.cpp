@@ -265,4 +265,13 @@ std::vector<std::string> convert_to_si(TirFile& file) {
   return unknown;
 }
 
+std::string implausible_value(const TirFile& file, std::string_view key, double value_si, double lo,
+                              double hi, std::string_view unit, std::string_view what) {
+  if (file.find_any(key) == nullptr || (value_si >= lo && value_si <= hi)) return {};
+  const std::string u(unit);
+  return std::string(key) + " = " + format_number(value_si) + " " + u +
+         " in SI: " + std::string(what) + " lies within " + format_number(lo) + "…" +
+         format_number(hi) + " " + u + "; is the [UNITS] section right?";
+}
+
 }  // namespace tread::tir

@@ -52,6 +52,13 @@ UnitSystem read_units(const TirFile& file);
 std::optional<double> number_si(const TirFile& file, const UnitSystem& units,
                                 std::string_view section, std::string_view key);
 
+/// What to say of a value no tyre has once [UNITS] is applied (a unit named wrongly, a value left
+/// in another unit: LENGTH = 'mm' over values in metres gave R0 = 0.46 mm): "KEY = v unit in SI:
+/// `what` lies within lo…hi unit; is the [UNITS] section right?", or "" for a value within them
+/// or a key the file does not have (a default).
+std::string implausible_value(const TirFile& file, std::string_view key, double value_si, double lo,
+                              double hi, std::string_view unit, std::string_view what);
+
 /// TirFile::set() of an SI value, written in the file's own unit for that key.
 void set_si(TirFile& file, std::string_view section, std::string_view key, double value_si);
 

@@ -2,7 +2,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <utility>
+
+#include "tir/tir_units.hpp"
 
 namespace tread::tyre {
 
@@ -127,11 +130,9 @@ void check_mf_parameters(const mf::MfParameters<double>& p, const tir::TirFile& 
   // (LENGTH = 'mm' on a file in metres gave R0 = 0.39 mm without a word).
   const auto plausible = [&](const char* key, double v, double lo, double hi, const char* unit,
                              const char* what) {
-    if (file.find_any(key) != nullptr && (v < lo || v > hi)) {
-      warn(warning, file, key,
-           std::string(key) + " = " + value_text(v) + " " + unit + " in SI: " + what +
-               " lies within " + value_text(lo) + "…" + value_text(hi) + " " + unit +
-               "; is the [UNITS] section right?");
+    if (const std::string w = tir::implausible_value(file, key, v, lo, hi, unit, what);
+        !w.empty()) {
+      warn(warning, file, key, w);
     }
   };
   plausible("UNLOADED_RADIUS", p.unloaded_radius_m, 0.05, 2.5, "m", "a tyre's free radius");
